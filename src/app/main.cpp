@@ -1,0 +1,215 @@
+// rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
+#include <app/pipeline.h>
+#include <app/sensor_table.h>
+#include <core/input_error.h>
+#include <core/output_file.h>
+#include <radiosity/mesher.h>
+#include <radiosity/shooting_solver.h>
+#include <tonemap/display_transform.h>
+#include <tonemap/image_io.h>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+using namespace rayrad;
+
+namespace {
+
+constexpr int kExitInputError = 2;
+
+struct CommonArgs {
+    std::string scene;
+    std::vector<std::string> sets;
+    int threads = 0;
+    bool quiet = false;
+};
+
+void addCommon(CLI::App* cmd, CommonArgs& a) {
+    cmd->add_option("scene", a.scene, "Scene file (JSON, see docs/scene-format.md)")->required();
+    cmd->add_option("--set", a.sets, "Override a scene value, e.g. --set radiosity.max_edge=0.25 (repeatable)");
+    cmd->add_option("--threads", a.threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_flag("-q,--quiet", a.quiet, "No progress line");
+}
+
+std::vector<scene::Override> overridesOf(const CommonArgs& a) {
+    std::vector<scene::Override> out;
+    for (const auto& s : a.sets) out.push_back(scene::parseOverride(s));
+    return out;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    writeAtomically(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) throw InputError(placeMessage(path, "", "cannot write"));
+    });
+}
+
+void printSensorsAndEnergy(const app::PipelineRun& run, const std::string& csvPath) {
+    if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors);
+    if (!csvPath.empty()) {
+        writeText(csvPath, app::sensorCsv(run.sensors));
+        fmt::print(stderr, "wrote {}\n", csvPath);
+    }
+}
+
+void printSolveSummary(const app::PipelineRun& run) {
+    const auto& s = run.solution;
+    auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
+    fmt::print(stderr, "patches: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n", run.mesh.patches.size(), s.shots,
+               s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
+               s.converged ? "converged" : "stopped at max_shots");
+    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm, unshot {:.6g} lm, balance {:+.4f}%\n",
+               balance.emitted, balance.absorbed, balance.unshot, 100 * balance.relativeError());
+}
+
+int runSolve(const CommonArgs& a, const std::string& csv) {
+    if (!csv.empty()) checkWritable(csv);
+    app::PipelineOptions o;
+    o.overrides = overridesOf(a);
+    o.quiet = a.quiet;
+    auto run = app::runPipeline(a.scene, o);
+    printSensorsAndEnergy(run, csv);
+    printSolveSummary(run);
+    std::cerr << app::stagesSummary(run) << run.report.toString();
+    return 0;
+}
+
+int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, const std::string& csv,
+              std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
+              const tonemap::DisplayOptions& displayIn) {
+    for (const auto& path : outputs) {
+        tonemap::checkImageFormat(path);
+        checkWritable(path);
+    }
+    if (!csv.empty()) checkWritable(csv);
+    tonemap::DisplayOptions display = displayIn;
+    if (exposure != "auto") {
+        try {
+            size_t used = 0;
+            display.exposureStops = std::stod(exposure, &used);
+            if (used != exposure.size()) throw std::invalid_argument("trailing");
+        } catch (const std::exception&) {
+            throw InputError(placeMessage("", "--exposure", "expected \"auto\" or a number of stops, got \"" + exposure + "\""));
+        }
+        display.autoExposure = false;
+    }
+    app::PipelineOptions o;
+    o.overrides = overridesOf(a);
+    if (spp) o.overrides.push_back({"render.spp", std::to_string(*spp)});
+    if (seed) o.overrides.push_back({"render.seed", std::to_string(*seed)});
+    o.quiet = a.quiet;
+    o.wantImage = true;
+    {
+        // Fail before the solve if there is nothing to look through.
+        auto desc = scene::loadScene(a.scene, o.overrides);
+        if (!desc.camera) throw InputError(placeMessage(a.scene, "/camera", "rendering needs a camera"));
+    }
+    auto run = app::runPipeline(a.scene, o);
+    run.report.begin("tone map + write");
+    for (const auto& path : outputs) {
+        if (tonemap::isHdrFormat(path)) {
+            tonemap::writeExr(path, *run.image, "rayrad rendering of " + a.scene + "; pixel values are luminance in cd/m^2");
+        } else {
+            auto rgb8 = tonemap::toDisplay(*run.image, display);
+            tonemap::writeDisplayImage(path, run.image->width, run.image->height, rgb8);
+        }
+        fmt::print(stderr, "wrote {}\n", path);
+    }
+    run.report.end();
+    printSensorsAndEnergy(run, csv);
+    printSolveSummary(run);
+    std::cerr << app::stagesSummary(run) << run.report.toString();
+    return 0;
+}
+
+int runInfo(const CommonArgs& a) {
+    auto scene = app::loadSceneFile(a.scene, overridesOf(a));
+    auto mesh = radiosity::premesh(scene, scene.meshing);
+    size_t emissive = 0;
+    for (const auto& g : scene.groups)
+        if (scene.materials[g.material].isEmissive()) emissive += g.polygons.size();
+    fmt::print("scene: {}\n", a.scene);
+    fmt::print("materials: {}\n", scene.materials.size());
+    fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
+    fmt::print("patches (premeshed triangles): {} (target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
+               mesh.patches.size(), radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(), mesh.totalArea());
+    fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
+    fmt::print("sensors: {}\n", scene.sensors.size());
+    if (scene.camera) fmt::print("camera: {}x{}, vfov {} deg\n", scene.camera->width, scene.camera->height, scene.camera->verticalFovDeg);
+    fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax), scene.diagonal());
+    if (scene.warnings.degeneratePolygons > 0)
+        fmt::print("warning: {} zero-area or duplicate triangles dropped\n", scene.warnings.degeneratePolygons);
+    fmt::print("stages needed: premesh, direct light{}{}{}\n",
+               scene.hasReflectance() ? ", secondary pass" : "",
+               scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");
+    std::vector<std::string> skipped;
+    if (!scene.hasReflectance()) skipped.push_back("secondary pass (no surface reflects light)");
+    if (scene.sensors.empty()) skipped.push_back("sensor gather (no sensors)");
+    if (!scene.camera) skipped.push_back("ray trace (no camera)");
+    for (const auto& s : skipped) fmt::print("not needed: {}\n", s);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App cli{"rayrad — physically based lighting simulation: progressive hierarchical radiosity for the\n"
+                 "indirect light, a Whitted-style ray tracer for images, illuminance at sensors.\n"
+                 "Units: metres, cd, lx, cd/m². Exit codes: 0 ok, 2 bad input, 1 internal error."};
+    cli.require_subcommand(1);
+
+    CommonArgs renderArgs, solveArgs, infoArgs;
+    std::vector<std::string> outputs;
+    std::string renderCsv, solveCsv, exposure = "auto";
+    std::optional<int> spp, seed;
+    tonemap::DisplayOptions display;
+
+    auto* render = cli.add_subcommand("render", "Solve the lighting and render the scene's camera view");
+    addCommon(render, renderArgs);
+    render->add_option("-o,--output", outputs, "Output image(s): .exr (linear cd/m²), .png or .jpg (display)")->required();
+    render->add_option("--sensors", renderCsv, "Also write the sensor table as CSV");
+    render->add_option("--spp", spp, "Samples per pixel (default: render.spp, 4)")->check(CLI::Range(1, 65536));
+    render->add_option("--seed", seed, "Random seed; the same seed gives the same image (default 1)")->check(CLI::NonNegativeNumber);
+    render->add_option("--exposure", exposure, "\"auto\" (log-average luminance → 0.18) or stops: 2^stops per cd/m²")->default_str("auto");
+    render->add_option("--ocio-config", display.ocioConfig, "OpenColorIO config file (default: rayrad's embedded sRGB config)");
+    render->add_option("--display", display.display, "OCIO display (default: the config's default)");
+    render->add_option("--view", display.view, "OCIO view (default: the display's default)");
+
+    auto* solve = cli.add_subcommand("solve", "Solve the lighting and report illuminance at the sensors (no image)");
+    addCommon(solve, solveArgs);
+    solve->add_option("--sensors", solveCsv, "Write the sensor table as CSV");
+
+    auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs");
+    addCommon(info, infoArgs);
+
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int code = cli.exit(e);
+        return code == 0 ? 0 : kExitInputError;
+    }
+
+    CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : infoArgs;
+    std::unique_ptr<tbb::global_control> threads;
+    if (common.threads > 0)
+        threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common.threads);
+    try {
+        if (render->parsed()) return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display);
+        if (solve->parsed()) return runSolve(solveArgs, solveCsv);
+        return runInfo(infoArgs);
+    } catch (const InputError& e) {
+        std::cerr << "rayrad: " << e.what() << "\n";
+        return kExitInputError;
+    } catch (const std::exception& e) {
+        std::cerr << "rayrad: internal error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,94 @@
+#include <app/sensor_table.h>
+
+#include <fmt/format.h>
+
+#include <optional>
+
+namespace rayrad::app {
+
+namespace {
+
+bool anyReference(const std::vector<SensorResult>& results) {
+    for (const auto& r : results)
+        if (r.sensor.refDirect || r.sensor.refIndirect || r.sensor.refTotal) return true;
+    return false;
+}
+
+std::optional<double> errorPct(double value, const std::optional<double>& ref) {
+    if (!ref || *ref == 0) return std::nullopt;
+    return 100.0 * (value - *ref) / *ref;
+}
+
+std::string cell(const std::optional<double>& v, const char* format = "{:.9g}") {
+    return v ? fmt::format(fmt::runtime(format), *v) : std::string();
+}
+
+struct Row {
+    double direct, indirect, total;
+    std::optional<double> vertex;
+};
+
+Row rowOf(const SensorResult& r) {
+    Row row;
+    row.direct = luminance(r.value.direct);
+    row.indirect = luminance(r.value.indirect);
+    row.total = row.direct + row.indirect;
+    if (r.value.indirectVertex) row.vertex = luminance(*r.value.indirectVertex);
+    return row;
+}
+
+}  // namespace
+
+std::string sensorCsv(const std::vector<SensorResult>& results) {
+    bool refs = anyReference(results);
+    std::string s = "sensor,x,y,z,nx,ny,nz,direct_lx,indirect_lx,total_lx";
+    if (refs) s += ",ref_direct_lx,ref_indirect_lx,ref_total_lx,err_direct_pct,err_indirect_pct,err_total_pct";
+    s += ",indirect_vertex_lx";
+    if (refs) s += ",err_indirect_vertex_pct";
+    s += "\n";
+    for (const auto& r : results) {
+        Row row = rowOf(r);
+        const auto& p = r.sensor.position;
+        const auto& n = r.sensor.normal;
+        std::string name = r.sensor.name;
+        if (name.find_first_of(",\"") != std::string::npos) {
+            std::string q;
+            for (char c : name) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+            name = "\"" + q + "\"";
+        }
+        s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}", name, p.x, p.y, p.z, n.x,
+                         n.y, n.z, row.direct, row.indirect, row.total);
+        if (refs)
+            s += fmt::format(",{},{},{},{},{},{}", cell(r.sensor.refDirect), cell(r.sensor.refIndirect),
+                             cell(r.sensor.refTotal), cell(errorPct(row.direct, r.sensor.refDirect), "{:.6f}"),
+                             cell(errorPct(row.indirect, r.sensor.refIndirect), "{:.6f}"),
+                             cell(errorPct(row.total, r.sensor.refTotal), "{:.6f}"));
+        s += "," + cell(row.vertex);
+        if (refs) s += "," + cell(row.vertex ? errorPct(*row.vertex, r.sensor.refIndirect) : std::nullopt, "{:.6f}");
+        s += "\n";
+    }
+    return s;
+}
+
+std::string sensorTable(const std::vector<SensorResult>& results) {
+    bool refs = anyReference(results);
+    auto pct = [](const std::optional<double>& e) { return e ? fmt::format("{:+.2f}%", *e) : std::string("-"); };
+    std::string s = fmt::format("{:<14} {:>11} {:>11} {:>11} {:>14}", "sensor", "direct lx", "indirect lx",
+                                "total lx", "vertex ind lx");
+    if (refs) s += fmt::format("  {:>9} {:>9} {:>9} {:>9}", "err dir", "err ind", "err tot", "err vtx");
+    s += "\n";
+    for (const auto& r : results) {
+        Row row = rowOf(r);
+        s += fmt::format("{:<14} {:>11.2f} {:>11.2f} {:>11.2f} {:>14}", r.sensor.name, row.direct, row.indirect,
+                         row.total, row.vertex ? fmt::format("{:.2f}", *row.vertex) : std::string("-"));
+        if (refs)
+            s += fmt::format("  {:>9} {:>9} {:>9} {:>9}", pct(errorPct(row.direct, r.sensor.refDirect)),
+                             pct(errorPct(row.indirect, r.sensor.refIndirect)),
+                             pct(errorPct(row.total, r.sensor.refTotal)),
+                             pct(row.vertex ? errorPct(*row.vertex, r.sensor.refIndirect) : std::nullopt));
+        s += "\n";
+    }
+    return s;
+}
+
+}  // namespace rayrad::app

@@ -1,0 +1,28 @@
+// Sensor results: the illuminance table printed on stdout and written as CSV.
+#pragma once
+
+#include <radiosity/gather.h>
+#include <scene/scene.h>
+
+#include <string>
+#include <vector>
+
+namespace rayrad::app {
+
+struct SensorResult {
+    scene::Sensor sensor;
+    radiosity::SensorValue value;
+};
+
+/// CSV with the columns
+/// sensor,x,y,z,nx,ny,nz,direct_lx,indirect_lx,total_lx
+/// then, when any sensor has a reference, ref_direct_lx,ref_indirect_lx,ref_total_lx,
+/// err_direct_pct,err_indirect_pct,err_total_pct (100·(value − ref)/ref, empty where
+/// no reference), then indirect_vertex_lx (interpolated vertex values; empty off-surface)
+/// and, with references, err_indirect_vertex_pct. Illuminances are luminance-weighted Y.
+std::string sensorCsv(const std::vector<SensorResult>& results);
+
+/// The same as an aligned text table for the terminal.
+std::string sensorTable(const std::vector<SensorResult>& results);
+
+}  // namespace rayrad::app

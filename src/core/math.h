@@ -1,0 +1,30 @@
+// Vector and colour types shared by every stage (double precision; Embree gets floats).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace rayrad {
+
+using Vec3 = glm::dvec3;
+using Vec2 = glm::dvec2;
+
+/// Linear Rec.709 RGB triple. Photometric meaning depends on use: illuminance in lx,
+/// luminance in cd/m², or a dimensionless reflectance.
+using Rgb = glm::dvec3;
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Rec.709 luminance weights: Y of a linear Rec.709 triple (lx for illuminance RGB,
+/// cd/m² for luminance RGB).
+inline double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+inline bool isFinite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string toString(const Vec3& v);
+
+}  // namespace rayrad

@@ -1,0 +1,37 @@
+// Wall time and peak memory of each pipeline stage, printed on stderr at the end of a run.
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace rayrad {
+
+/// Peak resident set size of this process so far, in bytes (VmHWM; 0 if unknown).
+size_t peakMemoryBytes();
+
+/// Records, for each stage the pipeline ran, its wall time and the peak memory after it.
+class StageReport {
+  public:
+    struct Stage {
+        std::string name;
+        double seconds = 0;
+        size_t peakBytes = 0;
+    };
+
+    /// Starts timing a stage; the previous one (if any) ends here.
+    void begin(const std::string& name);
+    /// Ends the current stage.
+    void end();
+
+    const std::vector<Stage>& stages() const { return m_stages; }
+    double totalSeconds() const;
+    std::string toString() const;
+
+  private:
+    std::vector<Stage> m_stages;
+    std::chrono::steady_clock::time_point m_start;
+    bool m_running = false;
+};
+
+}  // namespace rayrad

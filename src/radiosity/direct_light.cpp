@@ -1,0 +1,102 @@
+#include <radiosity/direct_light.h>
+
+#include <radiosity/form_factor.h>
+#include <scene/polygon.h>
+
+#include <cmath>
+
+namespace rayrad::radiosity {
+
+DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights) {
+    for (const auto& g : scene.groups) {
+        const auto& mat = scene.materials[g.material];
+        if (!mat.isEmissive()) continue;
+        for (const auto& poly : g.polygons) {
+            AreaLight light;
+            for (uint32_t i : poly) light.vertices.push_back(g.positions[i]);
+            light.normal = scene::polygonNormal(light.vertices);
+            light.area = scene::polygonArea(light.vertices);
+            light.luminance = mat.emission;
+            for (const auto& t : scene::triangulate(light.vertices)) {
+                std::array<Vec3, 3> tri{light.vertices[t[0]], light.vertices[t[1]], light.vertices[t[2]]};
+                light.triangles.push_back(tri);
+                light.triangleAreas.push_back(0.5 * glm::length(glm::cross(tri[1] - tri[0], tri[2] - tri[0])));
+            }
+            m_areaLights.push_back(std::move(light));
+        }
+    }
+}
+
+double DirectLight::emittedFlux() const {
+    double flux = 0;
+    for (const auto& l : m_pointLights) {
+        if (!l.isSpot) {
+            flux += 4 * kPi * luminance(l.intensity);  // Φ = 4π I
+        } else {
+            // Φ = 2π ∫ I(θ) sinθ dθ over the cone, numerically (midpoint rule).
+            Vec3 side = std::abs(l.direction.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+            Vec3 perp = glm::normalize(glm::cross(l.direction, side));
+            const int n = 4096;
+            double sum = 0;
+            for (int i = 0; i < n; ++i) {
+                double theta = (i + 0.5) * kPi / n;
+                Vec3 w = std::cos(theta) * l.direction + std::sin(theta) * perp;
+                sum += luminance(l.intensityToward(w)) * std::sin(theta);
+            }
+            flux += 2 * kPi * sum * kPi / n;
+        }
+    }
+    for (const auto& a : m_areaLights) flux += kPi * luminance(a.luminance) * a.area;  // Φ = π L A
+    return flux;
+}
+
+Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng) const {
+    Rgb e(0.0);
+    for (const auto& l : m_pointLights) {
+        Vec3 d = l.position - x;
+        double r2 = glm::dot(d, d);
+        if (r2 <= 0) continue;
+        double r = std::sqrt(r2);
+        double cosTheta = glm::dot(n, d) / r;
+        if (cosTheta <= 0) continue;
+        Rgb intensity = l.intensityToward(-d / r);
+        if (intensity == Rgb(0.0)) continue;
+        if (!vis.visible(x, l.position)) continue;
+        e += intensity * (cosTheta / r2);  // E = I cosθ / d²
+    }
+    for (const auto& a : m_areaLights) e += fromAreaLight(a, x, n, vis, samples, rng);
+    return e;
+}
+
+Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
+                               int samples, Random* rng) const {
+    double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
+    if (f <= 0) return Rgb(0.0);
+    // Visible fraction, weighted by the unoccluded integrand cosθ_x cosθ_y / r².
+    double weightSum = 0, visibleSum = 0;
+    for (size_t t = 0; t < light.triangles.size(); ++t) {
+        int nt = std::max(1, static_cast<int>(std::lround(samples * light.triangleAreas[t] / light.area)));
+        int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(nt)))));
+        const auto& tri = light.triangles[t];
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; j < m; ++j) {
+                double u1 = (i + (rng ? rng->nextDouble() : 0.5)) / m;
+                double u2 = (j + (rng ? rng->nextDouble() : 0.5)) / m;
+                // Uniform point on a triangle (square-root warp).
+                double su = std::sqrt(u1);
+                Vec3 y = (1 - su) * tri[0] + su * (1 - u2) * tri[1] + su * u2 * tri[2];
+                Vec3 d = y - x;
+                double r2 = glm::dot(d, d);
+                if (r2 <= 0) continue;
+                double r = std::sqrt(r2);
+                double w = std::max(0.0, glm::dot(n, d) / r) * std::max(0.0, -glm::dot(light.normal, d) / r) / r2;
+                if (w <= 0) continue;
+                weightSum += w;
+                if (vis.visible(x, y)) visibleSum += w;
+            }
+    }
+    double fraction = weightSum > 0 ? visibleSum / weightSum : 1.0;
+    return light.luminance * (kPi * f * fraction);  // E = π L F
+}
+
+}  // namespace rayrad::radiosity

@@ -1,0 +1,48 @@
+// Direct light from the primary sources (point, spot, area) at any surface point.
+#pragma once
+
+#include <core/math.h>
+#include <core/random.h>
+#include <core/visibility.h>
+#include <radiosity/patch_mesh.h>
+#include <scene/scene.h>
+
+#include <vector>
+
+namespace rayrad::radiosity {
+
+/// An emissive input polygon (front side emits uniformly, Lambertian).
+struct AreaLight {
+    std::vector<Vec3> vertices;
+    Vec3 normal{0.0};
+    double area = 0;             ///< m²
+    Rgb luminance{0.0};          ///< cd/m² per channel
+    std::vector<std::array<Vec3, 3>> triangles;  ///< for sampling
+    std::vector<double> triangleAreas;
+};
+
+/// Evaluates E_direct(x, n) in lx from every primary light, with shadow rays.
+class DirectLight {
+  public:
+    explicit DirectLight(const scene::Scene& scene);
+
+    /// Illuminance (lx, RGB) on a surface at x with unit normal n.
+    /// Point/spot: E = I(ω) cosθ / d² · V. Area: E = π L F_analytic · (visible fraction),
+    /// the fraction estimated from `samples` stratified shadow rays per light, weighted by
+    /// cosθ_x cosθ_y / r²; `rng` jitters them (nullptr: cell centres, deterministic).
+    Rgb illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng) const;
+
+    const std::vector<AreaLight>& areaLights() const { return m_areaLights; }
+    const std::vector<scene::PointLight>& pointLights() const { return m_pointLights; }
+    /// Total flux in lm emitted by all primary lights (luminance-weighted).
+    double emittedFlux() const;
+
+  private:
+    Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
+                      Random* rng) const;
+
+    std::vector<scene::PointLight> m_pointLights;
+    std::vector<AreaLight> m_areaLights;
+};
+
+}  // namespace rayrad::radiosity

@@ -1,0 +1,18 @@
+// The direct pass over the patches: primary light at centroids and vertices.
+#pragma once
+
+#include <core/visibility.h>
+#include <radiosity/direct_light.h>
+#include <radiosity/patch_mesh.h>
+#include <radiosity/solution.h>
+
+namespace rayrad::radiosity {
+
+/// Fills solution.directCorner (E at each corner) and solution.directMean: the mean direct illuminance over each patch from its
+/// centroid and its three corners, (3/4) E(c) + (1/12) Σ E(v_k) — exact for quadratic
+/// variation. Evaluation points are pulled a hair toward the centroid so shadow rays
+/// from corners do not start inside a neighbouring wall. Deterministic; parallel.
+void computeDirect(const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis, int areaSamples,
+                   RadiositySolution& solution);
+
+}  // namespace rayrad::radiosity

@@ -1,0 +1,67 @@
+#include <radiosity/form_factor.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rayrad::radiosity {
+
+namespace {
+
+constexpr int kMaxClipped = 16;
+
+/// Sutherland–Hodgman: keeps the part of the polygon with dot(p − x, n) ≥ 0.
+int clipToFront(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* out) {
+    int m = 0;
+    for (int i = 0; i < count; ++i) {
+        const Vec3& a = in[i];
+        const Vec3& b = in[(i + 1) % count];
+        double da = glm::dot(a - x, n), db = glm::dot(b - x, n);
+        if (da >= 0 && m < kMaxClipped) out[m++] = a;
+        if ((da >= 0) != (db >= 0) && m < kMaxClipped) out[m++] = a + (b - a) * (da / (da - db));
+    }
+    return m;
+}
+
+}  // namespace
+
+double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal) {
+    // One-sided source: x must be strictly in front of the polygon's plane.
+    if (glm::dot(x - vertices[0], polyNormal) <= 0) return 0.0;
+    Vec3 clipped[kMaxClipped];
+    const Vec3* v = vertices;
+    bool allFront = true;
+    for (int i = 0; i < count; ++i) allFront &= glm::dot(vertices[i] - x, n) >= 0;
+    if (!allFront) {
+        count = clipToFront(x, n, vertices, count, clipped);
+        if (count < 3) return 0.0;
+        v = clipped;
+    }
+    double sum = 0;
+    Vec3 r0 = glm::normalize(v[0] - x);
+    Vec3 ri = r0;
+    for (int i = 0; i < count; ++i) {
+        Vec3 rj = (i + 1 < count) ? glm::normalize(v[i + 1] - x) : r0;
+        Vec3 c = glm::cross(ri, rj);
+        double s = glm::length(c);
+        if (s > 1e-15) {
+            double gamma = std::atan2(s, glm::dot(ri, rj));  // accurate for small and near-π angles
+            sum += gamma * glm::dot(n, c) / s;
+        }
+        ri = rj;
+    }
+    return std::clamp(std::abs(sum) / (2.0 * kPi), 0.0, 1.0);
+}
+
+double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal,
+                             double area) {
+    Vec3 d = center - x;
+    double r2 = glm::dot(d, d);
+    if (r2 <= 0) return 0.0;
+    double r = std::sqrt(r2);
+    double cosX = glm::dot(n, d) / r;
+    double cosS = -glm::dot(sourceNormal, d) / r;
+    if (cosX <= 0 || cosS <= 0) return 0.0;
+    return area * cosX * cosS / (kPi * r2);
+}
+
+}  // namespace rayrad::radiosity

@@ -1,0 +1,19 @@
+// Point-to-polygon form factors: Lambert's analytic formula near, the point approximation far.
+#pragma once
+
+#include <core/math.h>
+
+namespace rayrad::radiosity {
+
+/// Form factor F(dA_x → polygon), unoccluded, from a differential area at x with unit
+/// normal n to a planar polygon with front normal `polyNormal` (Lambert's formula):
+///   F = 1/(2π) Σ_i γ_i n·(R_i × R_{i+1}) / |R_i × R_{i+1}|,  R_i = v_i − x.
+/// The polygon is clipped to the half space in front of x first; 0 when x is behind the
+/// polygon's front face. The illuminance from a uniform polygon of luminance L is π L F.
+double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal);
+
+/// Point approximation of the same quantity for a small source of area A at `center`:
+///   F ≈ A cosθ_x cosθ_s / (π r²), valid when r ≫ the source size.
+double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal, double area);
+
+}  // namespace rayrad::radiosity

@@ -1,0 +1,153 @@
+#include <radiosity/gather.h>
+
+#include <radiosity/form_factor.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>  // parallel_deterministic_reduce: same sum for any thread count
+
+#include <cmath>
+#include <vector>
+
+namespace rayrad::radiosity {
+
+namespace {
+/// A source patch is "near" x within this many diameters of its centroid.
+constexpr double kNearDiameters = 2.0;
+/// Sub-triangles are split while closer to x than this many of their own sizes.
+constexpr double kSplitRatio = 2.0;
+constexpr int kMaxSplitDepth = 12;
+}  // namespace
+
+std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance) {
+    std::optional<MeshLocation> best;
+    double bestOutside = tolerance;
+    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+        const Patch& p = mesh.patches[i];
+        if (glm::dot(p.normal, n) < 0.9) continue;
+        if (std::abs(glm::dot(x - p.centroid, p.normal)) > tolerance) continue;
+        // Barycentrics of the projection of x on the triangle.
+        const Vec3 &a = mesh.corner(p, 0), &b = mesh.corner(p, 1), &c = mesh.corner(p, 2);
+        Vec3 e1 = b - a, e2 = c - a, w = x - a;
+        double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+        double w1 = glm::dot(w, e1), w2 = glm::dot(w, e2);
+        double det = d11 * d22 - d12 * d12;
+        if (det <= 0) continue;
+        double u = (d22 * w1 - d12 * w2) / det, v = (d11 * w2 - d12 * w1) / det;
+        double outside = std::max({0.0, -u, -v, u + v - 1}) * p.diameter;  // metres outside (0 inside)
+        if (outside <= bestOutside) {
+            bestOutside = outside;
+            u = std::clamp(u, 0.0, 1.0);
+            v = std::clamp(v, 0.0, 1.0);
+            if (u + v > 1) {
+                double s = u + v;
+                u /= s, v /= s;
+            }
+            best = MeshLocation{i, u, v};
+        }
+    }
+    return best;
+}
+
+Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double distance) {
+    Vec3 toward = mesh.patches[patch].centroid - x;
+    double len = glm::length(toward);
+    return len > distance ? x + toward * (distance / len) : x;
+}
+
+Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
+                   const Visibility& vis, int levels)
+    : m_scene(scene), m_mesh(mesh), m_solution(solution), m_vis(vis), m_levels(levels),
+      m_nudge(1e-6 * scene.diagonal()) {}
+
+Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
+    uint32_t v = m_mesh.patches[patch].v[corner];
+    if (level < 0) return m_solution.vertexIndirect.empty() ? m_solution.indirect[patch] : m_solution.vertexIndirect[v];
+    auto key = std::make_pair(v, level);
+    auto it = m_vertexMemo.find(key);
+    if (it != m_vertexMemo.end()) return it->second;
+    const Patch& p = m_mesh.patches[patch];
+    Rgb e = gather(nudgeInside(m_mesh, patch, m_mesh.vertices[v], m_nudge), p.normal, level);
+    m_vertexMemo.emplace(key, e);
+    return e;
+}
+
+Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
+                              int depth) const {
+    Vec3 c = (p[0] + p[1] + p[2]) / 3.0;
+    double size = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
+    double dist = std::min({glm::length(c - x), glm::length(p[0] - x), glm::length(p[1] - x), glm::length(p[2] - x)});
+    if (depth < kMaxSplitDepth && dist < kSplitRatio * size) {
+        Vec3 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
+        Rgb l01 = 0.5 * (L[0] + L[1]), l12 = 0.5 * (L[1] + L[2]), l20 = 0.5 * (L[2] + L[0]);
+        const Vec3 t[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};
+        const Rgb l[4][3] = {{L[0], l01, l20}, {l01, L[1], l12}, {l20, l12, L[2]}, {l01, l12, l20}};
+        Rgb sum(0.0);
+        for (int k = 0; k < 4; ++k) sum += integrateLinear(x, n, t[k], l[k], normal, depth + 1);
+        return sum;
+    }
+    double f = formFactorToPolygon(x, n, p, 3, normal);
+    if (f <= 0 || !m_vis.visible(x, c)) return Rgb(0.0);
+    return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
+}
+
+Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level) {
+    // Near patches get linear luminance from refined corner values (computed serially
+    // first: the memo is not thread-safe), the rest a patch-constant luminance.
+    std::vector<std::pair<size_t, std::array<Rgb, 3>>> near;
+    if (level > 0) {
+        for (size_t j = 0; j < m_mesh.patches.size(); ++j) {
+            const Patch& p = m_mesh.patches[j];
+            double r = kNearDiameters * p.diameter;
+            Vec3 d = p.centroid - x;
+            if (glm::dot(d, d) > r * r) continue;
+            const Rgb& rho = m_scene.materials[p.material].reflectance;
+            if (rho == Rgb(0.0)) continue;
+            Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+            if (formFactorToPolygon(x, n, v, 3, p.normal) <= 0) continue;
+            std::array<Rgb, 3> L;
+            for (int k = 0; k < 3; ++k)
+                L[k] = rho * (m_solution.directCorner[3 * j + k] + cornerIndirect(j, k, level - 1)) / kPi;
+            near.emplace_back(j, L);
+        }
+    }
+    std::vector<int> nearIndex(near.empty() ? 0 : m_mesh.patches.size(), -1);
+    for (size_t k = 0; k < near.size(); ++k) nearIndex[near[k].first] = static_cast<int>(k);
+
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<size_t>(0, m_mesh.patches.size(), 512), Rgb(0.0),
+        [&](const tbb::blocked_range<size_t>& r, Rgb sum) {
+            for (size_t j = r.begin(); j != r.end(); ++j) {
+                const Patch& p = m_mesh.patches[j];
+                Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+                if (!nearIndex.empty() && nearIndex[j] >= 0) {
+                    sum += integrateLinear(x, n, v, near[nearIndex[j]].second.data(), p.normal, 0);
+                    continue;
+                }
+                Rgb L = m_solution.reflectedLuminance(m_scene, m_mesh, j);
+                if (L == Rgb(0.0)) continue;
+                double f = formFactorToPolygon(x, n, v, 3, p.normal);
+                if (f <= 0 || !m_vis.visible(x, p.centroid)) continue;
+                sum += L * (kPi * f);  // E = π L F
+            }
+            return sum;
+        },
+        [](const Rgb& a, const Rgb& b) { return a + b; });
+}
+
+SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
+                           const DirectLight& lights, const Visibility& vis, Gatherer& gatherer,
+                           const scene::Sensor& sensor) {
+    SensorValue out;
+    Vec3 x = sensor.position;
+    out.direct = lights.illuminance(x, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
+    auto where = locateOnMesh(mesh, x, sensor.normal, 1e-6 * scene.diagonal());
+    if (where) {
+        if (!solution.vertexIndirect.empty())
+            out.indirectVertex = interpolateIndirect(mesh, solution, where->patch, where->u, where->v);
+        x = nudgeInside(mesh, where->patch, x, 1e-6 * scene.diagonal());
+    }
+    if (!solution.indirect.empty()) out.indirect = gatherer.indirectAt(x, sensor.normal);
+    return out;
+}
+
+}  // namespace rayrad::radiosity

@@ -1,0 +1,74 @@
+// Sensors: direct light exactly, indirect by a final gather over the converged solution.
+#pragma once
+
+#include <core/visibility.h>
+#include <radiosity/direct_light.h>
+#include <radiosity/patch_mesh.h>
+#include <radiosity/solution.h>
+#include <scene/scene.h>
+
+#include <map>
+#include <optional>
+
+namespace rayrad::radiosity {
+
+/// Where a point lies on the mesh: patch index and barycentrics (1-u-v, u, v).
+struct MeshLocation {
+    size_t patch = 0;
+    double u = 0, v = 0;
+};
+
+/// The patch whose triangle contains x (within a small tolerance) and whose normal
+/// agrees with n; nullopt when x is not on any surface.
+std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance);
+
+/// Illuminance in lx (RGB) at a sensor.
+struct SensorValue {
+    Rgb direct{0.0};
+    Rgb indirect{0.0};                  ///< final gather
+    std::optional<Rgb> indirectVertex;  ///< interpolated vertex values, when on a surface
+};
+
+/// Final gather of the indirect illuminance into a differential area at x:
+///   E_ind(x) = Σ_j ∫_{A_j} L_j(y) cosθ_x cosθ_y / r² V(x, y) dA_y,  L_j = ρ_j E_j / π.
+/// Far patches: L_j constant (ρ_j (Ē_dir,j + E_ind,j) / π) with the analytic form factor.
+/// Near patches (a point on an edge sees the neighbouring wall at grazing angles, so
+/// nearly all of that wall's contribution comes from right beside the point): L_j linear
+/// over the triangle from its corner values, integrated over sub-triangles refined
+/// toward x. Corner values are exact direct light plus indirect light gathered at the
+/// corner itself, recursively `levels` deep (memoised), which removes the bias of
+/// patch-constant luminance at edges and corners.
+class Gatherer {
+  public:
+    Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
+             const Visibility& vis, int levels);
+
+    /// Indirect illuminance (lx, RGB) at x with unit normal n.
+    Rgb indirectAt(const Vec3& x, const Vec3& n) { return gather(x, n, m_levels); }
+
+  private:
+    Rgb gather(const Vec3& x, const Vec3& n, int level);
+    Rgb cornerIndirect(size_t patch, int corner, int level);
+    Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
+                        int depth) const;
+
+    const scene::Scene& m_scene;
+    const PatchMesh& m_mesh;
+    const RadiositySolution& m_solution;
+    const Visibility& m_vis;
+    int m_levels;
+    double m_nudge;
+    std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect
+};
+
+/// Moves a surface point a hair (metres) toward the centroid of its patch, so points on
+/// an edge or corner take the limit from inside their own wall.
+Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double distance);
+
+/// Direct (exact, `sensorAreaLightSamples` shadow rays per area light), gathered
+/// indirect, and vertex-interpolated indirect at a sensor.
+SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
+                           const DirectLight& lights, const Visibility& vis, Gatherer& gatherer,
+                           const scene::Sensor& sensor);
+
+}  // namespace rayrad::radiosity

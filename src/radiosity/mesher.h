@@ -1,0 +1,19 @@
+// Premeshing: every input polygon becomes well-shaped triangles (the radiosity patches).
+#pragma once
+
+#include <radiosity/patch_mesh.h>
+#include <scene/scene.h>
+
+namespace rayrad::radiosity {
+
+/// Quads become an n_u × n_v grid of cells, two triangles each (diagonals alternate, so
+/// a square wall gives 2n² equal triangles); cells are kept within maxCellAspect, so a
+/// sliver becomes many compact triangles. Other polygons are triangulated and each
+/// triangle split uniformly into k² similar triangles, with one k per surface group so
+/// neighbouring triangles share their edge points (no T-junctions).
+PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options);
+
+/// The edge length the mesher aims for (resolves the automatic default).
+double targetEdge(const scene::Scene& scene, const scene::MeshingOptions& options);
+
+}  // namespace rayrad::radiosity

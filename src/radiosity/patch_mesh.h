@@ -1,0 +1,42 @@
+// Radiosity patches: the premeshed triangles of every input surface.
+#pragma once
+
+#include <core/math.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rayrad::radiosity {
+
+/// One triangle of the premeshed scene. Vertices are shared only inside one surface
+/// group (one quad, one box face, one sphere or mesh), so vertex averaging never mixes
+/// walls that meet at an edge.
+struct Patch {
+    std::array<uint32_t, 3> v{};  ///< indices into PatchMesh::vertices, CCW seen from the front
+    Vec3 normal{0.0};             ///< unit, front side
+    Vec3 centroid{0.0};
+    double area = 0;              ///< m²
+    double diameter = 0;          ///< longest edge, m
+    int material = 0;
+    int group = 0;                ///< index of the scene's SurfaceGroup
+};
+
+struct PatchMesh {
+    std::vector<Vec3> vertices;
+    std::vector<Patch> patches;
+
+    const Vec3& corner(const Patch& p, int k) const { return vertices[p.v[k]]; }
+    /// The point with barycentric coordinates (1-u-v, u, v) on patch p.
+    Vec3 pointAt(const Patch& p, double u, double v) const {
+        return (1 - u - v) * corner(p, 0) + u * corner(p, 1) + v * corner(p, 2);
+    }
+    double totalArea() const;
+};
+
+/// Fills normal, centroid, area and diameter from the vertex positions.
+void computeGeometry(const PatchMesh& mesh, Patch& p);
+
+std::string toString(const Patch& p);
+
+}  // namespace rayrad::radiosity

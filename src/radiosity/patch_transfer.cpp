@@ -1,0 +1,26 @@
+#include <radiosity/patch_transfer.h>
+
+#include <radiosity/form_factor.h>
+
+namespace rayrad::radiosity {
+
+double patchFormFactor(const PatchMesh& mesh, const Patch& source, const Vec3& x, const Vec3& n,
+                       double analyticDistance) {
+    Vec3 d = source.centroid - x;
+    double r2 = glm::dot(d, d);
+    double near = analyticDistance * source.diameter;
+    if (r2 < near * near) {
+        Vec3 v[3] = {mesh.corner(source, 0), mesh.corner(source, 1), mesh.corner(source, 2)};
+        return formFactorToPolygon(x, n, v, 3, source.normal);
+    }
+    return formFactorPointApprox(x, n, source.centroid, source.normal, source.area);
+}
+
+double visiblePatchFormFactor(const PatchMesh& mesh, const Patch& source, const Vec3& x, const Vec3& n,
+                              double analyticDistance, const Visibility& vis) {
+    double f = patchFormFactor(mesh, source, x, n, analyticDistance);
+    if (f <= 0) return 0.0;
+    return vis.visible(x, source.centroid) ? f : 0.0;
+}
+
+}  // namespace rayrad::radiosity

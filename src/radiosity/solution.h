@@ -1,0 +1,39 @@
+// The radiosity solution: per-patch direct and indirect illuminance, per-vertex indirect.
+#pragma once
+
+#include <core/math.h>
+#include <radiosity/patch_mesh.h>
+#include <scene/scene.h>
+
+#include <vector>
+
+namespace rayrad::radiosity {
+
+/// What the secondary pass leaves for the ray tracer and the sensors. All illuminances
+/// in lx (RGB), luminances in cd/m² (RGB).
+struct RadiositySolution {
+    std::vector<Rgb> directMean;      ///< mean direct illuminance over each patch
+    std::vector<Rgb> directCorner;    ///< direct illuminance at each patch's 3 corners (3·i + k)
+    std::vector<Rgb> indirect;        ///< indirect illuminance received at each patch (centroid)
+    std::vector<Rgb> unshot;          ///< ΔL, unshot luminance (may be negative after corrections)
+    std::vector<Rgb> vertexIndirect;  ///< indirect at each mesh vertex (average of its triangles)
+
+    // Statistics of the solve.
+    int64_t shots = 0;
+    double initialUnshotFlux = 0;     ///< lm left to distribute after the direct pass
+    double remainingUnshotFlux = 0;   ///< lm still unshot at the end
+    bool converged = false;
+    double seconds = 0;
+
+    /// Reflected (non-emitted) luminance of patch i: ρ (E_direct + E_indirect) / π.
+    Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const;
+};
+
+/// Vertex values as the paper reconstructs them: the plain average of the centroid
+/// values of the triangles that share the vertex (within one surface group).
+void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution);
+
+/// Indirect at barycentric (u, v) of patch p, interpolated from the vertex values.
+Rgb interpolateIndirect(const PatchMesh& mesh, const RadiositySolution& solution, size_t patch, double u, double v);
+
+}  // namespace rayrad::radiosity

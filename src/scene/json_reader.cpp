@@ -1,0 +1,241 @@
+#include <scene/json_reader.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rayrad::scene {
+
+using nlohmann::json;
+
+std::string describe(const json& value) {
+    switch (value.type()) {
+        case json::value_t::array: return "an array";
+        case json::value_t::object: return "an object";
+        case json::value_t::null: return "null";
+        default: {
+            std::string s = value.dump();
+            return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+        }
+    }
+}
+
+static size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t bestDistance = 4;
+    for (const auto& c : candidates) {
+        size_t d = editDistance(word, c);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+JsonObject::JsonObject(const json& j, std::string path, ParseContext& ctx)
+    : m_json(j), m_path(std::move(path)), m_ctx(ctx) {}
+
+bool JsonObject::has(const std::string& key) const { return m_json.contains(key); }
+
+const json* JsonObject::get(const std::string& key) {
+    m_read.insert(key);
+    auto it = m_json.find(key);
+    return it == m_json.end() ? nullptr : &*it;
+}
+
+void JsonObject::required(const std::string& key) {
+    if (!has(key)) m_ctx.error(m_path.empty() ? "/" : m_path, fmt::format("missing required key \"{}\"", key));
+}
+
+static bool isNumber(const json& v) { return v.is_number(); }
+
+std::optional<double> JsonObject::number(const std::string& key) {
+    const json* v = get(key);
+    if (!v) return std::nullopt;
+    if (v->is_string()) {
+        // JSON has no NaN/Inf; people write them as strings. Name the problem plainly.
+        std::string s = v->get<std::string>();
+        std::string lower = s;
+        std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+        if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos) {
+            error(key, fmt::format("expected a finite number, got {}", describe(*v)));
+            return std::nullopt;
+        }
+    }
+    if (!isNumber(*v)) {
+        error(key, fmt::format("expected a number, got {}", describe(*v)));
+        return std::nullopt;
+    }
+    double d = v->get<double>();
+    if (!std::isfinite(d)) {
+        error(key, fmt::format("expected a finite number, got {}", describe(*v)));
+        return std::nullopt;
+    }
+    return d;
+}
+
+double JsonObject::positive(const std::string& key, double fallback) {
+    auto v = number(key);
+    if (!v) return fallback;
+    if (*v <= 0) {
+        error(key, fmt::format("expected a positive number, got {}", describe(m_json.at(key))));
+        return fallback;
+    }
+    return *v;
+}
+
+double JsonObject::nonNegative(const std::string& key, double fallback) {
+    auto v = number(key);
+    if (!v) return fallback;
+    if (*v < 0) {
+        error(key, fmt::format("expected a number >= 0, got {}", describe(m_json.at(key))));
+        return fallback;
+    }
+    return *v;
+}
+
+int JsonObject::integer(const std::string& key, int fallback, int minValue, int maxValue) {
+    const json* v = get(key);
+    if (!v) return fallback;
+    if (!v->is_number_integer() && !(v->is_number_float() && std::floor(v->get<double>()) == v->get<double>())) {
+        error(key, fmt::format("expected a whole number, got {}", describe(*v)));
+        return fallback;
+    }
+    double d = v->get<double>();
+    if (d < minValue || d > maxValue) {
+        error(key, fmt::format("expected a whole number from {} to {}, got {}", minValue, maxValue, describe(*v)));
+        return fallback;
+    }
+    return static_cast<int>(d);
+}
+
+std::optional<std::string> JsonObject::string(const std::string& key) {
+    const json* v = get(key);
+    if (!v) return std::nullopt;
+    if (!v->is_string()) {
+        error(key, fmt::format("expected a string, got {}", describe(*v)));
+        return std::nullopt;
+    }
+    return v->get<std::string>();
+}
+
+std::optional<bool> JsonObject::boolean(const std::string& key) {
+    const json* v = get(key);
+    if (!v) return std::nullopt;
+    if (!v->is_boolean()) {
+        error(key, fmt::format("expected true or false, got {}", describe(*v)));
+        return std::nullopt;
+    }
+    return v->get<bool>();
+}
+
+static std::optional<Vec3> toVec3(const json& v) {
+    if (!v.is_array() || v.size() != 3) return std::nullopt;
+    Vec3 r;
+    for (int i = 0; i < 3; ++i) {
+        if (!v[i].is_number()) return std::nullopt;
+        r[i] = v[i].get<double>();
+        if (!std::isfinite(r[i])) return std::nullopt;
+    }
+    return r;
+}
+
+std::optional<Vec3> JsonObject::vec3(const std::string& key) {
+    const json* v = get(key);
+    if (!v) return std::nullopt;
+    auto r = toVec3(*v);
+    if (!r) error(key, fmt::format("expected three finite numbers [x, y, z], got {}", describe(*v)));
+    return r;
+}
+
+std::optional<Rgb> JsonObject::rgb(const std::string& key, double lo, double hi, bool hiInclusive) {
+    const json* v = get(key);
+    if (!v) return std::nullopt;
+    Rgb c;
+    if (v->is_number()) {
+        c = Rgb(v->get<double>());
+    } else if (auto r = toVec3(*v)) {
+        c = *r;
+    } else {
+        error(key, fmt::format("expected a number or [r, g, b], got {}", describe(*v)));
+        return std::nullopt;
+    }
+    for (int i = 0; i < 3; ++i) {
+        bool ok = std::isfinite(c[i]) && c[i] >= lo && (hiInclusive ? c[i] <= hi : c[i] < hi);
+        if (!ok) {
+            error(key, fmt::format("expected values in [{}, {}{}, got {}", lo, hi, hiInclusive ? "]" : ")",
+                                   describe(*v)));
+            return std::nullopt;
+        }
+    }
+    return c;
+}
+
+std::vector<Vec3> JsonObject::points(const std::string& key) {
+    const json* v = get(key);
+    std::vector<Vec3> out;
+    if (!v) return out;
+    if (!v->is_array()) {
+        error(key, fmt::format("expected a list of [x, y, z] points, got {}", describe(*v)));
+        return out;
+    }
+    for (size_t i = 0; i < v->size(); ++i) {
+        auto p = toVec3((*v)[i]);
+        if (!p) {
+            m_ctx.error(childPath(key) + "/" + std::to_string(i),
+                        fmt::format("expected three finite numbers [x, y, z], got {}", describe((*v)[i])));
+            return {};
+        }
+        out.push_back(*p);
+    }
+    return out;
+}
+
+std::optional<JsonObject> JsonObject::object(const std::string& key) {
+    const json* v = get(key);
+    if (!v) return std::nullopt;
+    if (!v->is_object()) {
+        error(key, fmt::format("expected an object, got {}", describe(*v)));
+        return std::nullopt;
+    }
+    return JsonObject(*v, childPath(key), m_ctx);
+}
+
+const json* JsonObject::array(const std::string& key) {
+    const json* v = get(key);
+    if (!v) return nullptr;
+    if (!v->is_array()) {
+        error(key, fmt::format("expected an array, got {}", describe(*v)));
+        return nullptr;
+    }
+    return v;
+}
+
+void JsonObject::finish(const std::set<std::string>& alsoAllowed) {
+    std::vector<std::string> known(m_read.begin(), m_read.end());
+    known.insert(known.end(), alsoAllowed.begin(), alsoAllowed.end());
+    for (auto it = m_json.begin(); it != m_json.end(); ++it) {
+        if (m_read.count(it.key()) || alsoAllowed.count(it.key())) continue;
+        std::string hint = closestMatch(it.key(), known);
+        error(it.key(), hint.empty() ? "unknown key" : fmt::format("unknown key (did you mean \"{}\"?)", hint));
+    }
+}
+
+}  // namespace rayrad::scene

@@ -1,0 +1,75 @@
+// A thin reader over nlohmann::json that knows its JSON pointer and reports typed errors.
+#pragma once
+
+#include <core/math.h>
+#include <scene/scene_parser.h>
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace rayrad::scene {
+
+/// Shared state of one parse: where errors go, and whether any happened.
+struct ParseContext {
+    ErrorHandler onError;
+    int errors = 0;
+    void error(const std::string& place, const std::string& message) {
+        ++errors;
+        onError(place, message);
+    }
+};
+
+/// One JSON object being read. Every key read is remembered; `finish()` reports the
+/// keys nobody asked for, with a "did you mean" suggestion.
+class JsonObject {
+  public:
+    JsonObject(const nlohmann::json& json, std::string path, ParseContext& ctx);
+
+    const std::string& path() const { return m_path; }
+    bool has(const std::string& key) const;
+    std::string childPath(const std::string& key) const { return m_path + "/" + key; }
+
+    /// A finite number; reports and returns `fallback` on a wrong type.
+    std::optional<double> number(const std::string& key);
+    double number(const std::string& key, double fallback) { return number(key).value_or(fallback); }
+    double positive(const std::string& key, double fallback);
+    double nonNegative(const std::string& key, double fallback);
+    int integer(const std::string& key, int fallback, int minValue, int maxValue);
+    std::optional<std::string> string(const std::string& key);
+    std::optional<bool> boolean(const std::string& key);
+    std::optional<Vec3> vec3(const std::string& key);
+    /// A grey value or an [r, g, b] triple, each component in [lo, hi) (or [lo, hi]).
+    std::optional<Rgb> rgb(const std::string& key, double lo, double hi, bool hiInclusive);
+    /// A list of points [[x,y,z], ...].
+    std::vector<Vec3> points(const std::string& key);
+    /// A nested object (reports if present but not an object).
+    std::optional<JsonObject> object(const std::string& key);
+    /// A nested array (reports if present but not an array).
+    const nlohmann::json* array(const std::string& key);
+
+    void required(const std::string& key);
+    void finish(const std::set<std::string>& alsoAllowed = {});
+
+    void error(const std::string& key, const std::string& message) { m_ctx.error(childPath(key), message); }
+    ParseContext& context() { return m_ctx; }
+
+  private:
+    const nlohmann::json* get(const std::string& key);
+
+    const nlohmann::json& m_json;
+    std::string m_path;
+    ParseContext& m_ctx;
+    std::set<std::string> m_read;
+};
+
+/// Short description of a JSON value for messages: `-5`, `"abc"`, `an array`.
+std::string describe(const nlohmann::json& value);
+
+/// The closest of `candidates` to `word` (edit distance ≤ 3), or "".
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace rayrad::scene

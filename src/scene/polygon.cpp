@@ -1,0 +1,82 @@
+#include <scene/polygon.h>
+
+#include <cmath>
+
+namespace rayrad::scene {
+
+static Vec3 newell(const std::vector<Vec3>& v) {
+    Vec3 n(0.0);
+    for (size_t i = 0; i < v.size(); ++i) {
+        const Vec3& a = v[i];
+        const Vec3& b = v[(i + 1) % v.size()];
+        n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    return n;  // length = 2 × area
+}
+
+Vec3 polygonNormal(const std::vector<Vec3>& v) {
+    Vec3 n = newell(v);
+    double len = glm::length(n);
+    return len > 0 ? n / len : Vec3(0.0);
+}
+
+double polygonArea(const std::vector<Vec3>& v) { return 0.5 * glm::length(newell(v)); }
+
+double polygonArea(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices) {
+    std::vector<Vec3> v;
+    for (uint32_t i : indices) v.push_back(positions[i]);
+    return polygonArea(v);
+}
+
+double maxPlaneDistance(const std::vector<Vec3>& v) {
+    Vec3 n = polygonNormal(v);
+    Vec3 c(0.0);
+    for (const auto& p : v) c += p;
+    c /= static_cast<double>(v.size());
+    double d = 0;
+    for (const auto& p : v) d = std::max(d, std::abs(glm::dot(p - c, n)));
+    return d;
+}
+
+bool isConvexAround(const std::vector<Vec3>& v, const Vec3& normal) {
+    for (size_t i = 0; i < v.size(); ++i) {
+        const Vec3& a = v[i];
+        const Vec3& b = v[(i + 1) % v.size()];
+        const Vec3& c = v[(i + 2) % v.size()];
+        if (glm::dot(glm::cross(b - a, c - b), normal) < 0) return false;
+    }
+    return true;
+}
+
+std::vector<std::array<uint32_t, 3>> triangulate(const std::vector<Vec3>& v) {
+    Vec3 n = polygonNormal(v);
+    std::vector<uint32_t> idx;
+    for (uint32_t i = 0; i < v.size(); ++i) idx.push_back(i);
+    std::vector<std::array<uint32_t, 3>> out;
+    auto inside = [&](const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+        return glm::dot(glm::cross(b - a, p - a), n) >= 0 && glm::dot(glm::cross(c - b, p - b), n) >= 0 &&
+               glm::dot(glm::cross(a - c, p - c), n) >= 0;
+    };
+    size_t guard = 0;
+    while (idx.size() > 3 && guard++ < 10 * v.size() * v.size()) {
+        bool clipped = false;
+        for (size_t i = 0; i < idx.size(); ++i) {
+            uint32_t ia = idx[(i + idx.size() - 1) % idx.size()], ib = idx[i], ic = idx[(i + 1) % idx.size()];
+            const Vec3 &a = v[ia], &b = v[ib], &c = v[ic];
+            if (glm::dot(glm::cross(b - a, c - b), n) <= 0) continue;  // reflex corner
+            bool ear = true;
+            for (uint32_t j : idx)
+                if (j != ia && j != ib && j != ic && inside(v[j], a, b, c)) ear = false;
+            if (!ear) continue;
+            out.push_back({ia, ib, ic});
+            idx.erase(idx.begin() + static_cast<long>(i));
+            clipped = true;
+            break;
+        }
+        if (!clipped) break;  // not simple: fall back to a fan for what is left
+    }
+    for (size_t i = 1; i + 1 < idx.size(); ++i) out.push_back({idx[0], idx[i], idx[i + 1]});
+    return out;
+}
+
+}  // namespace rayrad::scene

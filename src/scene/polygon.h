@@ -1,0 +1,24 @@
+// Planar polygon helpers: normal, area, planarity, convexity, triangulation.
+#pragma once
+
+#include <core/math.h>
+
+#include <array>
+#include <vector>
+
+namespace rayrad::scene {
+
+/// Unit normal by Newell's method (robust for nearly degenerate and non-planar input);
+/// right-handed with the vertex order. Zero vector for a degenerate polygon.
+Vec3 polygonNormal(const std::vector<Vec3>& v);
+/// Area in m² (of the projection onto the Newell plane).
+double polygonArea(const std::vector<Vec3>& v);
+double polygonArea(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices);
+/// Largest distance of a vertex from the polygon's mean plane, in metres.
+double maxPlaneDistance(const std::vector<Vec3>& v);
+/// True when every corner turns the same way around `normal`.
+bool isConvexAround(const std::vector<Vec3>& v, const Vec3& normal);
+/// Ear-clipping triangulation of a simple planar polygon; indices into v.
+std::vector<std::array<uint32_t, 3>> triangulate(const std::vector<Vec3>& v);
+
+}  // namespace rayrad::scene

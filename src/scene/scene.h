@@ -1,0 +1,87 @@
+// The validated scene in world space: surfaces, materials, lights, camera, sensors.
+#pragma once
+
+#include <core/math.h>
+#include <scene/scene_desc.h>
+#include <scene/settings.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rayrad::scene {
+
+/// A Lambertian material; `emission` is non-zero for area lights.
+struct Material {
+    std::string name;
+    Rgb reflectance{0.0};   ///< diffuse reflectance per channel, in [0, 1)
+    Rgb emission{0.0};      ///< emitted luminance per channel, cd/m² (front side only)
+    bool isEmissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
+};
+
+/// Polygons that share vertices: one quad, one face of a box, a whole sphere or mesh.
+/// Vertex values (indirect light) are averaged only within a group.
+struct SurfaceGroup {
+    std::vector<Vec3> positions;                      ///< world space, metres
+    std::vector<std::vector<uint32_t>> polygons;      ///< indices, CCW seen from the front
+    int material = 0;
+    std::string where;                                ///< JSON pointer of the object
+};
+
+/// A point light or a spot, in candela. I(θ) = intensity for θ ≤ inner, a smooth step
+/// down to 0 at the outer angle (spots); isotropic for points.
+struct PointLight {
+    Vec3 position{0.0};
+    Rgb intensity{0.0};     ///< cd per channel on the axis (luminance-weighted Y = given cd)
+    bool isSpot = false;
+    Vec3 direction{0, 0, -1};
+    double cosInner = -1, cosOuter = -1;
+
+    /// Intensity in cd (RGB) toward the unit direction `w` (from the light).
+    Rgb intensityToward(const Vec3& w) const;
+};
+
+struct Camera {
+    Vec3 position{0.0}, lookAt{0, 0, -1}, up{0, 1, 0};
+    double verticalFovDeg = 45;
+    int width = 512, height = 512;
+};
+
+struct Sensor {
+    std::string name;
+    Vec3 position{0.0};
+    Vec3 normal{0, 0, 1};
+    std::optional<double> refDirect, refIndirect, refTotal;  ///< lx
+};
+
+/// Counts of what the builder dropped, reported as warnings.
+struct BuildWarnings {
+    int degeneratePolygons = 0;
+};
+
+struct Scene {
+    std::string file;
+    std::vector<Material> materials;
+    std::vector<SurfaceGroup> groups;
+    std::vector<PointLight> lights;
+    std::optional<Camera> camera;
+    std::vector<Sensor> sensors;
+    MeshingOptions meshing;
+    SolverOptions solver;
+    RenderOptions render;
+    BuildWarnings warnings;
+
+    /// Axis-aligned bounds of all geometry.
+    Vec3 boundsMin{0.0}, boundsMax{0.0};
+    double diagonal() const { return glm::length(boundsMax - boundsMin); }
+    size_t polygonCount() const;
+    bool hasReflectance() const;
+    bool hasAreaLights() const;
+};
+
+/// Builds world-space geometry (transforms, boxes, spheres, meshes through assimp) and
+/// resolves material names. Throws InputError naming the file and place for problems
+/// found here (missing mesh file, area light of zero area, ...).
+Scene buildScene(const SceneDesc& desc);
+
+}  // namespace rayrad::scene

@@ -1,0 +1,267 @@
+// SceneDesc (plain data) → Scene (world space, materials resolved, meshes loaded).
+#include <scene/scene.h>
+
+#include <core/input_error.h>
+#include <scene/mesh_import.h>
+#include <scene/polygon.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace rayrad::scene {
+
+Rgb PointLight::intensityToward(const Vec3& w) const {
+    if (!isSpot) return intensity;
+    double c = glm::dot(w, direction);
+    if (c >= cosInner) return intensity;
+    if (c <= cosOuter) return Rgb(0.0);
+    double t = (c - cosOuter) / (cosInner - cosOuter);
+    return intensity * (t * t * (3 - 2 * t));  // smoothstep between the cones
+}
+
+size_t Scene::polygonCount() const {
+    size_t n = 0;
+    for (const auto& g : groups) n += g.polygons.size();
+    return n;
+}
+
+bool Scene::hasReflectance() const {
+    for (const auto& g : groups)
+        if (glm::length(materials[g.material].reflectance) > 0) return true;
+    return false;
+}
+
+bool Scene::hasAreaLights() const {
+    for (const auto& g : groups)
+        if (materials[g.material].isEmissive()) return true;
+    return false;
+}
+
+namespace {
+
+Vec3 transformPoint(const glm::dmat4& m, const Vec3& p) { return Vec3(m * glm::dvec4(p, 1.0)); }
+
+/// A box's six faces, each a quad CCW seen from outside.
+std::vector<std::vector<Vec3>> boxFaces(const Vec3& lo, const Vec3& hi) {
+    auto P = [&](int x, int y, int z) { return Vec3(x ? hi.x : lo.x, y ? hi.y : lo.y, z ? hi.z : lo.z); };
+    return {
+        {P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0)},  // -x
+        {P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1)},  // +x
+        {P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1)},  // -y
+        {P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0)},  // +y
+        {P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0)},  // -z
+        {P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1)},  // +z
+    };
+}
+
+/// A sphere as a projected cube: each face an n×n grid of cells, two triangles each,
+/// so 12·n² triangles. Equal-angle mapping keeps the triangles close in size.
+SurfaceGroup cubeSphere(const Vec3& center, double radius, int n) {
+    SurfaceGroup g;
+    std::map<std::tuple<int, int, int>, uint32_t> index;  // integer lattice point on the cube → vertex
+    auto vertex = [&](int i, int j, int k) {
+        auto key = std::make_tuple(i, j, k);
+        auto it = index.find(key);
+        if (it != index.end()) return it->second;
+        auto angle = [n](int a) { return std::tan((2.0 * a / n - 1.0) * kPi / 4.0); };
+        Vec3 d = glm::normalize(Vec3(angle(i), angle(j), angle(k)));
+        auto id = static_cast<uint32_t>(g.positions.size());
+        g.positions.push_back(center + radius * d);
+        index.emplace(key, id);
+        return id;
+    };
+    // For each axis and side: lattice coordinates (u, v) on the face, outward CCW order.
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            int ua = (axis + 1) % 3, va = (axis + 2) % 3;
+            auto at = [&](int u, int v) {
+                int c[3];
+                c[axis] = side ? n : 0;
+                c[ua] = u;
+                c[va] = v;
+                return vertex(c[0], c[1], c[2]);
+            };
+            for (int u = 0; u < n; ++u)
+                for (int v = 0; v < n; ++v) {
+                    uint32_t a = at(u, v), b = at(u + 1, v), c = at(u + 1, v + 1), d = at(u, v + 1);
+                    // (ua × va) = +axis: CCW seen from +axis; flip for the negative side.
+                    bool flip = side == 0;
+                    bool diag = ((u + v) & 1) != 0;  // alternate diagonals for symmetry
+                    std::vector<std::vector<uint32_t>> tris =
+                        diag ? std::vector<std::vector<uint32_t>>{{a, b, c}, {a, c, d}}
+                             : std::vector<std::vector<uint32_t>>{{a, b, d}, {b, c, d}};
+                    for (auto& t : tris) {
+                        if (flip) std::swap(t[1], t[2]);
+                        g.polygons.push_back(t);
+                    }
+                }
+        }
+    return g;
+}
+
+class Builder {
+  public:
+    explicit Builder(const SceneDesc& desc) : m_desc(desc) {}
+
+    Scene build() {
+        Scene s;
+        s.file = m_desc.file;
+        s.meshing = m_desc.meshing;
+        s.solver = m_desc.solver;
+        s.render = m_desc.render;
+        std::map<std::string, int> materialIndex;
+        for (const auto& m : m_desc.materials) {
+            materialIndex[m.name] = static_cast<int>(s.materials.size());
+            Material mat;
+            mat.name = m.name;
+            mat.reflectance = m.reflectance;
+            if (m.emissive && m.luminance > 0) mat.emission = m.color / luminance(m.color) * m.luminance;
+            s.materials.push_back(mat);
+        }
+        for (const auto& o : m_desc.objects) addObject(s, o, materialIndex.at(o.material));
+        resolveFluxes(s);
+        for (const auto& l : m_desc.lights) s.lights.push_back(makeLight(l));
+        if (m_desc.camera) {
+            const auto& c = *m_desc.camera;
+            s.camera = Camera{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height};
+        }
+        for (const auto& d : m_desc.sensors)
+            s.sensors.push_back({d.name, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
+        computeBounds(s);
+        return s;
+    }
+
+  private:
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw InputError(placeMessage(m_desc.file, where, what));
+    }
+
+    void addPolygonGroup(Scene& s, std::vector<Vec3> v, int material, const std::string& where, bool isQuad) {
+        double area = polygonArea(v);
+        double size = 0;
+        for (const auto& p : v) size = std::max(size, glm::length(p - v[0]));
+        if (!(area > 1e-12 * size * size) || size == 0) fail(where + "/vertices", "the polygon has zero area");
+        Vec3 n = polygonNormal(v);
+        if (!isQuad) {
+            double off = maxPlaneDistance(v);
+            if (off > 1e-4 * size)
+                fail(where + "/vertices", fmt::format("the polygon is not planar (a vertex is {:.3g} m off its plane)", off));
+        }
+        if (!isConvexAround(v, n) && isQuad) fail(where + "/vertices", "the quad is not convex (check the vertex order)");
+        SurfaceGroup g;
+        g.positions = std::move(v);
+        g.polygons.push_back({});
+        for (uint32_t i = 0; i < g.positions.size(); ++i) g.polygons[0].push_back(i);
+        g.material = material;
+        g.where = where;
+        s.groups.push_back(std::move(g));
+    }
+
+    void addObject(Scene& s, const ObjectDesc& o, int material) {
+        const glm::dmat4& m = o.transform;
+        bool mirrored = glm::determinant(glm::dmat3(m)) < 0;
+        auto place = [&](std::vector<Vec3> v, bool reverse) {
+            for (auto& p : v) p = transformPoint(m, p);
+            if (reverse != mirrored) std::reverse(v.begin(), v.end());
+            return v;
+        };
+        switch (o.kind) {
+            case ObjectKind::Quad:
+            case ObjectKind::Polygon:
+                addPolygonGroup(s, place(o.vertices, false), material, o.where, o.kind == ObjectKind::Quad);
+                break;
+            case ObjectKind::Box:
+                for (auto& face : boxFaces(o.boxMin, o.boxMax))
+                    addPolygonGroup(s, place(face, o.inward), material, o.where, true);
+                break;
+            case ObjectKind::Sphere: {
+                SurfaceGroup g = cubeSphere(o.center, o.radius, o.subdivisions);
+                finishMeshGroup(s, std::move(g), m, o.inward != mirrored, material, o.where);
+                break;
+            }
+            case ObjectKind::Mesh: {
+                ImportedMesh mesh = importMesh(o.resolvedFile, m_desc.file, o.where);
+                SurfaceGroup g;
+                g.positions = std::move(mesh.positions);
+                g.polygons = std::move(mesh.triangles);
+                finishMeshGroup(s, std::move(g), m, mirrored, material, o.where);
+                break;
+            }
+        }
+    }
+
+    /// Transforms a triangle mesh, drops zero-area and duplicate triangles (counted).
+    void finishMeshGroup(Scene& s, SurfaceGroup g, const glm::dmat4& m, bool reverse, int material,
+                         const std::string& where) {
+        for (auto& p : g.positions) p = transformPoint(m, p);
+        std::vector<std::vector<uint32_t>> kept;
+        std::map<std::array<uint32_t, 3>, int> seen;
+        for (auto t : g.polygons) {
+            if (reverse) std::reverse(t.begin(), t.end());
+            const Vec3 &a = g.positions[t[0]], &b = g.positions[t[1]], &c = g.positions[t[2]];
+            double scale = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
+            double area2 = glm::length(glm::cross(b - a, c - a));
+            std::array<uint32_t, 3> key{t[0], t[1], t[2]};
+            std::sort(key.begin(), key.end());
+            if (!(area2 > 1e-12 * scale * scale) || seen[key]++ > 0) {
+                ++s.warnings.degeneratePolygons;
+                continue;
+            }
+            kept.push_back(t);
+        }
+        if (kept.empty()) fail(where, "every triangle of the mesh has zero area");
+        g.polygons = std::move(kept);
+        g.material = material;
+        g.where = where;
+        s.groups.push_back(std::move(g));
+    }
+
+    /// flux_lm → luminance: a one-sided Lambertian emitter of area A and luminance L
+    /// emits Φ = π L A.
+    void resolveFluxes(Scene& s) {
+        for (size_t mi = 0; mi < m_desc.materials.size(); ++mi) {
+            const auto& md = m_desc.materials[mi];
+            if (!md.emissive || md.flux <= 0) continue;
+            double area = 0;
+            for (const auto& g : s.groups)
+                if (g.material == static_cast<int>(mi))
+                    for (const auto& poly : g.polygons) area += polygonArea(g.positions, poly);
+            if (area <= 0) fail(md.where + "/flux_lm", "no surface uses this emissive material, so its flux has no area");
+            s.materials[mi].emission = md.color / luminance(md.color) * (md.flux / (kPi * area));
+        }
+    }
+
+    static PointLight makeLight(const LightDesc& l) {
+        PointLight p;
+        p.position = l.position;
+        p.intensity = l.color * l.intensity;
+        if (l.kind == LightKind::Spot) {
+            p.isSpot = true;
+            p.direction = l.direction;
+            p.cosInner = std::cos(glm::radians(l.innerAngleDeg));
+            p.cosOuter = std::cos(glm::radians(l.outerAngleDeg));
+            if (p.cosInner - p.cosOuter < 1e-12) p.cosInner = p.cosOuter + 1e-12;  // hard-edged spot
+        }
+        return p;
+    }
+
+    static void computeBounds(Scene& s) {
+        Vec3 lo(1e300), hi(-1e300);
+        for (const auto& g : s.groups)
+            for (const auto& p : g.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        s.boundsMin = lo;
+        s.boundsMax = hi;
+    }
+
+    const SceneDesc& m_desc;
+};
+
+}  // namespace
+
+Scene buildScene(const SceneDesc& desc) { return Builder(desc).build(); }
+
+}  // namespace rayrad::scene

@@ -1,0 +1,85 @@
+// The scene file as plain data: what the parser returns, before any geometry is built.
+#pragma once
+
+#include <core/math.h>
+#include <scene/settings.h>
+
+#include <glm/mat4x4.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rayrad::scene {
+
+/// A Lambertian material, optionally emissive (an area light).
+struct MaterialDesc {
+    std::string name;
+    std::string where;               ///< JSON pointer, for messages
+    Rgb reflectance{0.0};            ///< diffuse reflectance per channel, in [0, 1)
+    bool emissive = false;
+    Rgb color{1.0};                  ///< emission colour (scaled to the given luminance)
+    double luminance = 0.0;          ///< emitted luminance Y in cd/m² (if given)
+    double flux = 0.0;               ///< total emitted flux in lm (if given instead)
+};
+
+enum class ObjectKind { Quad, Polygon, Box, Sphere, Mesh };
+
+struct ObjectDesc {
+    ObjectKind kind = ObjectKind::Quad;
+    std::string where;               ///< JSON pointer, for messages
+    std::string material;
+    std::vector<Vec3> vertices;      ///< quad/polygon, CCW seen from the lit side
+    Vec3 boxMin{0.0}, boxMax{0.0};
+    Vec3 center{0.0};
+    double radius = 1.0;
+    int subdivisions = 8;            ///< sphere: 12·n² triangles (a projected cube)
+    bool inward = false;             ///< box/sphere: normals face the inside
+    std::string file;                ///< mesh: path as written in the scene file
+    std::string resolvedFile;        ///< mesh: path relative to the working directory
+    glm::dmat4 transform{1.0};       ///< object → world
+};
+
+enum class LightKind { Point, Spot };
+
+struct LightDesc {
+    LightKind kind = LightKind::Point;
+    std::string where;
+    Vec3 position{0.0};
+    Rgb color{1.0};                  ///< scaled so its luminance weight is 1
+    double intensity = 0.0;          ///< cd (on the axis for a spot)
+    Vec3 direction{0, 0, -1};        ///< spot axis
+    double innerAngleDeg = 30.0;     ///< spot: full intensity inside this half-angle
+    double outerAngleDeg = 45.0;     ///< spot: zero beyond this half-angle
+};
+
+struct CameraDesc {
+    Vec3 position{0.0};
+    Vec3 lookAt{0, 0, -1};
+    Vec3 up{0, 1, 0};
+    double verticalFovDeg = 45.0;
+    int width = 512;
+    int height = 512;
+};
+
+/// A point where illuminance is reported, with optional references in lx.
+struct SensorDesc {
+    std::string name;
+    Vec3 position{0.0};
+    Vec3 normal{0, 0, 1};
+    std::optional<double> refDirect, refIndirect, refTotal;
+};
+
+struct SceneDesc {
+    std::string file;                ///< the scene file's path, for messages
+    std::vector<MaterialDesc> materials;
+    std::vector<ObjectDesc> objects;
+    std::vector<LightDesc> lights;
+    std::optional<CameraDesc> camera;
+    std::vector<SensorDesc> sensors;  ///< points, with grids already expanded
+    MeshingOptions meshing;
+    SolverOptions solver;
+    RenderOptions render;
+};
+
+}  // namespace rayrad::scene

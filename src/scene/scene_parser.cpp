@@ -1,0 +1,446 @@
+#include <scene/scene_parser.h>
+
+#include <core/input_error.h>
+#include <scene/json_reader.h>
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace rayrad::scene {
+
+using nlohmann::json;
+
+namespace {
+
+// ---- overrides -------------------------------------------------------------------
+
+void applyOverride(json& root, const Override& o, ParseContext& ctx) {
+    json* node = &root;
+    std::stringstream parts(o.path);
+    std::string part;
+    std::vector<std::string> keys;
+    while (std::getline(parts, part, '.')) keys.push_back(part);
+    for (size_t i = 0; i < keys.size(); ++i) {
+        const std::string& k = keys[i];
+        bool last = i + 1 == keys.size();
+        if (node->is_array()) {
+            size_t index = 0;
+            try {
+                index = std::stoul(k);
+            } catch (...) {
+                ctx.error("--set " + o.path, fmt::format("\"{}\" is not an array index", k));
+                return;
+            }
+            if (index >= node->size()) {
+                ctx.error("--set " + o.path, fmt::format("index {} is out of range (size {})", index, node->size()));
+                return;
+            }
+            node = &(*node)[index];
+        } else {
+            if (!node->is_object()) *node = json::object();
+            if (!last && !node->contains(k)) (*node)[k] = json::object();
+            node = &(*node)[k];
+        }
+    }
+    json value = json::parse(o.value, nullptr, /*allow_exceptions=*/false);
+    *node = value.is_discarded() ? json(o.value) : value;
+}
+
+// ---- pieces ----------------------------------------------------------------------
+
+MaterialDesc parseMaterial(JsonObject m, const std::string& name) {
+    MaterialDesc d;
+    d.name = name;
+    d.where = m.path();
+    std::string type = m.string("type").value_or("diffuse");
+    if (type != "diffuse" && type != "emissive") {
+        m.error("type", fmt::format("unknown material type \"{}\" (expected \"diffuse\" or \"emissive\")", type));
+    }
+    d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/false).value_or(Rgb(0.0));
+    if (type == "emissive") {
+        d.emissive = true;
+        d.color = m.rgb("color", 0.0, 1e30, true).value_or(Rgb(1.0));
+        if (luminance(d.color) <= 0) m.error("color", "emission colour must have a positive luminance");
+        bool hasL = m.has("luminance_cd_m2"), hasF = m.has("flux_lm");
+        if (hasL == hasF) m.error("luminance_cd_m2", "an emissive material needs exactly one of \"luminance_cd_m2\" or \"flux_lm\"");
+        if (hasL) d.luminance = m.positive("luminance_cd_m2", 0.0);
+        if (hasF) d.flux = m.positive("flux_lm", 0.0);
+    }
+    m.finish();
+    return d;
+}
+
+glm::dmat4 parseTransform(JsonObject t) {
+    glm::dmat4 m(1.0);
+    if (const json* rows = t.array("matrix")) {
+        bool ok = rows->size() == 16;
+        for (size_t i = 0; ok && i < 16; ++i) ok = (*rows)[i].is_number() && std::isfinite((*rows)[i].get<double>());
+        if (!ok) {
+            t.error("matrix", "expected 16 finite numbers, row by row");
+        } else {
+            for (int r = 0; r < 4; ++r)
+                for (int c = 0; c < 4; ++c) m[c][r] = (*rows)[r * 4 + c].get<double>();  // glm is column-major
+        }
+    }
+    // Applied to points in the order scale, rotate, translate.
+    Vec3 translate = t.vec3("translate").value_or(Vec3(0.0));
+    Vec3 scale(1.0);
+    if (t.has("scale")) {
+        if (auto s = t.rgb("scale", -1e30, 1e30, true)) scale = *s;
+        if (scale.x == 0 || scale.y == 0 || scale.z == 0) t.error("scale", "a scale of zero flattens the object");
+    }
+    Vec3 axis = t.vec3("rotate_axis").value_or(Vec3(0, 0, 1));
+    double angle = t.number("rotate_deg", 0.0);
+    if (glm::length(axis) == 0) {
+        t.error("rotate_axis", "the rotation axis must not be zero");
+        axis = Vec3(0, 0, 1);
+    }
+    glm::dmat4 trs = glm::translate(glm::dmat4(1.0), translate) *
+                     glm::rotate(glm::dmat4(1.0), glm::radians(angle), glm::normalize(axis)) *
+                     glm::scale(glm::dmat4(1.0), scale);
+    t.finish();
+    return trs * m;
+}
+
+bool parseFacing(JsonObject& o, bool defaultInward) {
+    auto f = o.string("facing");
+    if (!f) return defaultInward;
+    if (*f == "inward") return true;
+    if (*f == "outward") return false;
+    o.error("facing", fmt::format("expected \"inward\" or \"outward\", got \"{}\"", *f));
+    return defaultInward;
+}
+
+ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials, const std::string& sceneDir) {
+    ObjectDesc d;
+    d.where = o.path();
+    o.required("type");
+    std::string type = o.string("type").value_or("");
+    static const std::vector<std::string> kTypes = {"quad", "polygon", "box", "sphere", "mesh"};
+    if (type == "quad") d.kind = ObjectKind::Quad;
+    else if (type == "polygon") d.kind = ObjectKind::Polygon;
+    else if (type == "box") d.kind = ObjectKind::Box;
+    else if (type == "sphere") d.kind = ObjectKind::Sphere;
+    else if (type == "mesh") d.kind = ObjectKind::Mesh;
+    else if (!type.empty()) {
+        std::string hint = closestMatch(type, kTypes);
+        o.error("type", fmt::format("unknown object type \"{}\"{}", type,
+                                    hint.empty() ? " (expected quad, polygon, box, sphere or mesh)"
+                                                 : fmt::format(" (did you mean \"{}\"?)", hint)));
+    }
+
+    o.required("material");
+    d.material = o.string("material").value_or("");
+    if (!d.material.empty() && !materials.count(d.material)) {
+        std::vector<std::string> names;
+        for (const auto& [n, i] : materials) names.push_back(n);
+        std::string hint = closestMatch(d.material, names);
+        o.error("material", fmt::format("unknown material \"{}\"{}", d.material,
+                                        hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint)));
+    }
+
+    switch (d.kind) {
+        case ObjectKind::Quad:
+        case ObjectKind::Polygon: {
+            o.required("vertices");
+            d.vertices = o.points("vertices");
+            if (o.has("vertices") && d.kind == ObjectKind::Quad && d.vertices.size() != 4 && !d.vertices.empty())
+                o.error("vertices", fmt::format("a quad needs 4 vertices, got {}", d.vertices.size()));
+            if (o.has("vertices") && d.kind == ObjectKind::Polygon && d.vertices.size() < 3)
+                o.error("vertices", fmt::format("a polygon needs at least 3 vertices, got {}", d.vertices.size()));
+            break;
+        }
+        case ObjectKind::Box: {
+            o.required("min");
+            o.required("max");
+            d.boxMin = o.vec3("min").value_or(Vec3(0.0));
+            d.boxMax = o.vec3("max").value_or(Vec3(1.0));
+            for (int i = 0; i < 3; ++i)
+                if (o.has("min") && o.has("max") && !(d.boxMax[i] > d.boxMin[i]))
+                    o.error("max", "every coordinate of \"max\" must exceed \"min\"");
+            d.inward = parseFacing(o, false);
+            break;
+        }
+        case ObjectKind::Sphere: {
+            d.center = o.vec3("center").value_or(Vec3(0.0));
+            d.radius = o.positive("radius", 1.0);
+            d.subdivisions = o.integer("subdivisions", 8, 1, 512);
+            d.inward = parseFacing(o, false);
+            break;
+        }
+        case ObjectKind::Mesh: {
+            o.required("file");
+            d.file = o.string("file").value_or("");
+            std::filesystem::path p(d.file);
+            d.resolvedFile = p.is_absolute() ? p.string() : (std::filesystem::path(sceneDir) / p).string();
+            break;
+        }
+    }
+    if (auto t = o.object("transform")) d.transform = parseTransform(*t);
+    o.finish();
+    return d;
+}
+
+LightDesc parseLight(JsonObject l) {
+    LightDesc d;
+    d.where = l.path();
+    l.required("type");
+    std::string type = l.string("type").value_or("point");
+    if (type == "point") d.kind = LightKind::Point;
+    else if (type == "spot") d.kind = LightKind::Spot;
+    else l.error("type", fmt::format("unknown light type \"{}\" (expected \"point\" or \"spot\")", type));
+    l.required("position");
+    d.position = l.vec3("position").value_or(Vec3(0.0));
+    l.required("intensity_cd");
+    d.intensity = l.positive("intensity_cd", 1.0);
+    Rgb c = l.rgb("color", 0.0, 1e30, true).value_or(Rgb(1.0));
+    if (luminance(c) <= 0) l.error("color", "light colour must have a positive luminance");
+    else d.color = c / luminance(c);
+    if (d.kind == LightKind::Spot) {
+        if (l.has("look_at")) {
+            Vec3 target = l.vec3("look_at").value_or(d.position + Vec3(0, 0, -1));
+            d.direction = target - d.position;
+        } else {
+            d.direction = l.vec3("direction").value_or(Vec3(0, 0, -1));
+        }
+        if (glm::length(d.direction) == 0) {
+            l.error(l.has("look_at") ? "look_at" : "direction", "the spot direction must not be zero");
+            d.direction = Vec3(0, 0, -1);
+        }
+        d.direction = glm::normalize(d.direction);
+        d.innerAngleDeg = l.number("inner_angle_deg", 30.0);
+        d.outerAngleDeg = l.number("outer_angle_deg", 45.0);
+        if (!(d.outerAngleDeg > 0 && d.outerAngleDeg <= 180))
+            l.error("outer_angle_deg", fmt::format("expected an angle in (0, 180], got {}", d.outerAngleDeg));
+        if (!(d.innerAngleDeg >= 0 && d.innerAngleDeg <= d.outerAngleDeg))
+            l.error("inner_angle_deg", "expected an angle from 0 to outer_angle_deg");
+    }
+    l.finish();
+    return d;
+}
+
+CameraDesc parseCamera(JsonObject c) {
+    CameraDesc d;
+    c.required("position");
+    c.required("look_at");
+    d.position = c.vec3("position").value_or(d.position);
+    d.lookAt = c.vec3("look_at").value_or(d.position + Vec3(0, 0, -1));
+    d.up = c.vec3("up").value_or(Vec3(0, 1, 0));
+    d.verticalFovDeg = c.number("vfov_deg", 45.0);
+    if (!(d.verticalFovDeg > 0 && d.verticalFovDeg < 180))
+        c.error("vfov_deg", fmt::format("expected an angle in (0, 180), got {}", d.verticalFovDeg));
+    if (const json* r = c.array("resolution")) {
+        bool ok = r->size() == 2 && (*r)[0].is_number_integer() && (*r)[1].is_number_integer();
+        if (ok) {
+            long long w = (*r)[0].get<long long>(), h = (*r)[1].get<long long>();
+            if (w < 1 || h < 1 || w > 16384 || h > 16384 || w * h > 100'000'000LL) ok = false;
+            else d.width = static_cast<int>(w), d.height = static_cast<int>(h);
+        }
+        if (!ok) c.error("resolution", fmt::format("expected [width, height], each from 1 to 16384, got {}", describe(*r)));
+    }
+    Vec3 forward = d.lookAt - d.position;
+    if (glm::length(forward) == 0) c.error("look_at", "look_at must differ from position");
+    else if (glm::length(glm::cross(forward, d.up)) < 1e-9 * glm::length(forward) * glm::length(d.up))
+        c.error("up", "up must not be parallel to the viewing direction");
+    c.finish();
+    return d;
+}
+
+void parseReference(JsonObject r, SensorDesc& s) {
+    s.refDirect = r.number("direct_lx");
+    s.refIndirect = r.number("indirect_lx");
+    s.refTotal = r.number("total_lx");
+    r.finish();
+}
+
+SensorDesc parseSensor(JsonObject s, int index) {
+    SensorDesc d;
+    d.name = s.string("name").value_or("S" + std::to_string(index));
+    s.required("position");
+    d.position = s.vec3("position").value_or(Vec3(0.0));
+    s.required("normal");
+    d.normal = s.vec3("normal").value_or(Vec3(0, 0, 1));
+    if (glm::length(d.normal) == 0) s.error("normal", "the normal must not be zero");
+    else d.normal = glm::normalize(d.normal);
+    if (auto r = s.object("reference")) parseReference(*r, d);
+    s.finish();
+    return d;
+}
+
+void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out) {
+    std::string name = g.string("name").value_or("grid" + std::to_string(index));
+    g.required("origin");
+    g.required("u");
+    g.required("v");
+    Vec3 origin = g.vec3("origin").value_or(Vec3(0.0));
+    Vec3 u = g.vec3("u").value_or(Vec3(1, 0, 0));
+    Vec3 v = g.vec3("v").value_or(Vec3(0, 1, 0));
+    int nu = 1, nv = 1;
+    if (const json* c = g.array("counts")) {
+        bool ok = c->size() == 2 && (*c)[0].is_number_integer() && (*c)[1].is_number_integer() &&
+                  (*c)[0].get<long long>() >= 1 && (*c)[1].get<long long>() >= 1 &&
+                  (*c)[0].get<long long>() * (*c)[1].get<long long>() <= 1'000'000;
+        if (ok) nu = (*c)[0].get<int>(), nv = (*c)[1].get<int>();
+        else g.error("counts", fmt::format("expected [nu, nv] with at most 10^6 points, got {}", describe(*c)));
+    }
+    Vec3 n = glm::cross(u, v);
+    if (g.has("normal")) n = g.vec3("normal").value_or(n);
+    if (glm::length(n) == 0) {
+        g.error(g.has("normal") ? "normal" : "v", "the grid's normal is zero (u and v parallel?)");
+        n = Vec3(0, 0, 1);
+    }
+    n = glm::normalize(n);
+    g.finish();
+    // Points at the centres of the nu × nv cells of the parallelogram (origin, u, v).
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
+            SensorDesc s;
+            s.name = fmt::format("{}[{},{}]", name, i, j);
+            s.position = origin + (i + 0.5) / nu * u + (j + 0.5) / nv * v;
+            s.normal = n;
+            out.push_back(s);
+        }
+}
+
+void parseRadiosity(JsonObject r, SceneDesc& d) {
+    d.meshing.maxEdge = r.nonNegative("max_edge", d.meshing.maxEdge);
+    d.meshing.trianglesPerSurface = r.integer("triangles_per_surface", d.meshing.trianglesPerSurface, 0, 10'000'000);
+    d.meshing.maxCellAspect = r.number("max_cell_aspect", d.meshing.maxCellAspect);
+    if (d.meshing.maxCellAspect < 1) r.error("max_cell_aspect", "expected a number >= 1");
+    d.solver.stopUnshot = r.number("stop_unshot", d.solver.stopUnshot);
+    if (!(d.solver.stopUnshot > 0 && d.solver.stopUnshot < 1)) r.error("stop_unshot", "expected a number in (0, 1)");
+    d.solver.maxShots = static_cast<int64_t>(r.nonNegative("max_shots", static_cast<double>(d.solver.maxShots)));
+    d.solver.analyticDistance = r.nonNegative("analytic_distance", d.solver.analyticDistance);
+    d.solver.areaLightSamples = r.integer("area_light_samples", d.solver.areaLightSamples, 1, 4096);
+    d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
+    r.finish();
+}
+
+void parseRender(JsonObject r, SceneDesc& d) {
+    d.render.samplesPerPixel = r.integer("spp", d.render.samplesPerPixel, 1, 65536);
+    d.render.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int>(d.render.seed), 0, 2147483647));
+    d.render.areaLightSamples = r.integer("area_light_samples", d.render.areaLightSamples, 1, 4096);
+    d.render.sensorAreaLightSamples =
+        r.integer("sensor_area_light_samples", d.render.sensorAreaLightSamples, 1, 1 << 20);
+    r.finish();
+}
+
+std::string lineColumn(const std::string& text, size_t byte) {
+    size_t line = 1, column = 1;
+    for (size_t i = 0; i < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') ++line, column = 1;
+        else ++column;
+    }
+    return fmt::format("line {}, column {}", line, column);
+}
+
+}  // namespace
+
+SceneDesc parseScene(const std::string& text, const std::string& fileName, const std::vector<Override>& overrides,
+                     const ErrorHandler& onError) {
+    ParseContext ctx;
+    ctx.onError = onError ? onError : [&fileName](const std::string& place, const std::string& message) {
+        throw InputError(placeMessage(fileName, place, message));
+    };
+    SceneDesc desc;
+    desc.file = fileName;
+
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line ..."
+        std::string what = e.what();
+        auto colon = what.find(": ", what.find("parse error"));
+        ctx.error(lineColumn(text, e.byte > 0 ? e.byte - 1 : 0),
+                  "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+        return desc;
+    }
+    if (!root.is_object()) {
+        ctx.error("/", "the scene must be a JSON object, got " + describe(root));
+        return desc;
+    }
+    for (const auto& o : overrides) applyOverride(root, o, ctx);
+
+    std::string sceneDir = std::filesystem::path(fileName).parent_path().string();
+    JsonObject top(root, "", ctx);
+    top.string("description");
+    top.string("provenance");
+
+    std::map<std::string, int> materialIndex;
+    if (auto mats = top.object("materials")) {
+        const json& mj = root["materials"];
+        for (auto it = mj.begin(); it != mj.end(); ++it) {
+            if (!it.value().is_object()) {
+                mats->error(it.key(), "expected an object, got " + describe(it.value()));
+                continue;
+            }
+            materialIndex[it.key()] = static_cast<int>(desc.materials.size());
+            desc.materials.push_back(parseMaterial(JsonObject(it.value(), mats->childPath(it.key()), ctx), it.key()));
+        }
+        mats->finish([&] {
+            std::set<std::string> all;
+            for (auto it = mj.begin(); it != mj.end(); ++it) all.insert(it.key());
+            return all;
+        }());
+    }
+    auto eachObject = [&](const char* key, auto&& fn) {
+        if (const json* arr = top.array(key)) {
+            for (size_t i = 0; i < arr->size(); ++i) {
+                std::string path = top.childPath(key) + "/" + std::to_string(i);
+                if (!(*arr)[i].is_object()) {
+                    ctx.error(path, "expected an object, got " + describe((*arr)[i]));
+                    continue;
+                }
+                fn(JsonObject((*arr)[i], path, ctx), static_cast<int>(i));
+            }
+        }
+    };
+    eachObject("objects", [&](JsonObject o, int) { desc.objects.push_back(parseObject(o, materialIndex, sceneDir)); });
+    eachObject("lights", [&](JsonObject o, int) { desc.lights.push_back(parseLight(o)); });
+    if (auto c = top.object("camera")) desc.camera = parseCamera(*c);
+    eachObject("sensors", [&](JsonObject o, int i) { desc.sensors.push_back(parseSensor(o, i)); });
+    eachObject("sensor_grids", [&](JsonObject o, int i) { parseSensorGrid(o, i, desc.sensors); });
+    if (auto r = top.object("radiosity")) parseRadiosity(*r, desc);
+    if (auto r = top.object("render")) parseRender(*r, desc);
+    top.finish();
+
+    if (ctx.errors == 0 && desc.objects.empty()) ctx.error("/objects", "the scene has no geometry");
+    if (ctx.errors == 0 && desc.lights.empty()) {
+        bool anyEmitter = false;
+        for (const auto& m : desc.materials) anyEmitter |= m.emissive;
+        if (!anyEmitter) ctx.error("/lights", "the scene has no light: add a light or an emissive material");
+    }
+    std::map<std::string, int> sensorNames;
+    for (size_t i = 0; i < desc.sensors.size(); ++i)
+        if (sensorNames[desc.sensors[i].name]++ == 1)
+            ctx.error("/sensors", fmt::format("sensor name \"{}\" is used twice", desc.sensors[i].name));
+    return desc;
+}
+
+SceneDesc loadScene(const std::string& fileName, const std::vector<Override>& overrides) {
+    std::error_code ec;
+    if (!std::filesystem::exists(fileName, ec)) throw InputError(placeMessage(fileName, "", "no such file"));
+    if (std::filesystem::is_directory(fileName, ec))
+        throw InputError(placeMessage(fileName, "", "is a directory, not a scene file"));
+    std::ifstream in(fileName, std::ios::binary);
+    if (!in) throw InputError(placeMessage(fileName, "", "cannot open the file for reading"));
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    if (in.bad()) throw InputError(placeMessage(fileName, "", "cannot read the file"));
+    return parseScene(buffer.str(), fileName, overrides);
+}
+
+Override parseOverride(const std::string& text) {
+    auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError(placeMessage("", "--set " + text, "expected KEY=VALUE, e.g. radiosity.max_edge=0.25"));
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+}  // namespace rayrad::scene

@@ -1,0 +1,132 @@
+#include <tonemap/display_transform.h>
+
+#include <core/input_error.h>
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace OCIO = OCIO_NAMESPACE;
+
+namespace rayrad::tonemap {
+
+const char* embeddedOcioConfig() {
+    // OCIO 2.1 has no built-in configs (CreateFromBuiltinConfig is 2.2+), so we ship one.
+    // sRGB encoding: ExponentWithLinearTransform gamma 2.4, offset 0.055 is the exact
+    // piecewise sRGB curve (0.18 → 0.4614).
+    return R"(ocio_profile_version: 2
+
+environment: {}
+search_path: ""
+strictparsing: true
+luma: [0.2126, 0.7152, 0.0722]
+description: rayrad embedded config (scene-linear Rec.709, sRGB display)
+
+roles:
+  default: Linear Rec.709
+  scene_linear: Linear Rec.709
+  data: Raw
+
+displays:
+  sRGB:
+    - !<View> {name: Standard, colorspace: sRGB}
+    - !<View> {name: Raw, colorspace: Raw}
+
+active_displays: [sRGB]
+active_views: [Standard, Raw]
+
+colorspaces:
+  - !<ColorSpace>
+    name: Linear Rec.709
+    family: Linear
+    encoding: scene-linear
+    bitdepth: 32f
+    description: Scene-linear Rec.709 primaries, D65 white
+    isdata: false
+
+  - !<ColorSpace>
+    name: sRGB
+    family: Display
+    encoding: sdr-video
+    bitdepth: 8ui
+    description: sRGB display encoding (IEC 61966-2-1 piecewise curve)
+    isdata: false
+    from_scene_reference: !<ExponentWithLinearTransform> {gamma: 2.4, offset: 0.055, direction: inverse}
+
+  - !<ColorSpace>
+    name: Raw
+    family: Utility
+    bitdepth: 32f
+    isdata: true
+)";
+}
+
+namespace {
+
+OCIO::ConstConfigRcPtr loadConfig(const DisplayOptions& o) {
+    try {
+        if (!o.ocioConfig.empty()) return OCIO::Config::CreateFromFile(o.ocioConfig.c_str());
+        std::istringstream in(embeddedOcioConfig());
+        return OCIO::Config::CreateFromStream(in);
+    } catch (const OCIO::Exception& e) {
+        throw InputError(placeMessage(o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig, "",
+                                      std::string("cannot load the OpenColorIO config: ") + e.what()));
+    }
+}
+
+OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
+    auto config = loadConfig(o);
+    std::string display = o.display.empty() ? config->getDefaultDisplay() : o.display;
+    std::string view = o.view.empty() ? config->getDefaultView(display.c_str()) : o.view;
+    try {
+        auto processor = config->getProcessor(OCIO::ROLE_SCENE_LINEAR, display.c_str(), view.c_str(),
+                                              OCIO::TRANSFORM_DIR_FORWARD);
+        return processor->getDefaultCPUProcessor();
+    } catch (const OCIO::Exception& e) {
+        throw InputError(placeMessage(o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig,
+                                      "display \"" + display + "\", view \"" + view + "\"", e.what()));
+    }
+}
+
+}  // namespace
+
+double exposureScale(const HdrImage& image, const DisplayOptions& o) {
+    double stops = std::pow(2.0, o.exposureStops);
+    if (!o.autoExposure) return stops;
+    // Reinhard's key value: the log-average luminance of lit pixels maps to 0.18.
+    double sumLog = 0;
+    size_t n = 0;
+    for (const auto& p : image.pixels) {
+        double y = luminance(p);
+        if (y > 0 && std::isfinite(y)) sumLog += std::log(y), ++n;
+    }
+    if (n == 0) return stops;
+    return 0.18 / std::exp(sumLog / n) * stops;
+}
+
+std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOptions& options) {
+    auto cpu = makeProcessor(options);
+    std::vector<float> out = rgb;
+    for (size_t i = 0; i + 2 < out.size(); i += 3) cpu->applyRGB(&out[i]);
+    return out;
+}
+
+std::vector<uint8_t> toDisplay(const HdrImage& image, const DisplayOptions& options) {
+    auto cpu = makeProcessor(options);
+    double scale = exposureScale(image, options);
+    std::vector<float> buf(image.pixels.size() * 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(image.pixels[i][c] * scale);
+    OCIO::PackedImageDesc desc(buf.data(), image.width, image.height, 3);
+    cpu->apply(desc);
+    std::vector<uint8_t> out(buf.size());
+    for (size_t i = 0; i < buf.size(); ++i) {
+        float v = std::isfinite(buf[i]) ? std::clamp(buf[i], 0.0f, 1.0f) : 0.0f;
+        out[i] = static_cast<uint8_t>(std::lround(v * 255.0f));
+    }
+    return out;
+}
+
+}  // namespace rayrad::tonemap

@@ -1,0 +1,78 @@
+#include <tonemap/image_io.h>
+
+#include <core/input_error.h>
+#include <core/output_file.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace rayrad::tonemap {
+
+namespace {
+
+std::string extensionOf(const std::string& path) {
+    std::string e = std::filesystem::path(path).extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), ::tolower);
+    return e;
+}
+
+void writePixels(const std::string& finalPath, const std::string& tmpPath, const OIIO::ImageSpec& spec,
+                 OIIO::TypeDesc format, const void* data) {
+    auto out = OIIO::ImageOutput::create(tmpPath);
+    if (!out) throw InputError(placeMessage(finalPath, "", "cannot write: " + OIIO::geterror()));
+    // OIIO's convention: bool results, then has_error()/geterror() (which clears it).
+    if (!out->open(tmpPath, spec) || !out->write_image(format, data) || !out->close()) {
+        std::string why = out->has_error() ? out->geterror() : "unknown OpenImageIO error";
+        throw InputError(placeMessage(finalPath, "", "cannot write: " + why));
+    }
+}
+
+}  // namespace
+
+bool isHdrFormat(const std::string& path) { return extensionOf(path) == ".exr"; }
+
+void checkImageFormat(const std::string& path) {
+    std::string e = extensionOf(path);
+    if (e != ".exr" && e != ".png" && e != ".jpg" && e != ".jpeg")
+        throw InputError(placeMessage(path, "", "unknown image format '" + e + "' (use .exr, .png or .jpg)"));
+}
+
+void writeExr(const std::string& path, const HdrImage& image, const std::string& description) {
+    std::vector<float> buf(image.pixels.size() * 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(image.pixels[i][c]);
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+    spec.attribute("oiio:ColorSpace", "Linear");
+    spec.attribute("ImageDescription", description);
+    spec.attribute("Software", "rayrad");
+    spec.attribute("rayrad:units", "cd/m^2 (absolute luminance), linear Rec.709 primaries, D65");
+    // OpenEXR's standard attribute: luminance in cd/m² of RGB (1, 1, 1).
+    spec.attribute("whiteLuminance", 1.0f);
+    spec.attribute("compression", "zip");
+    writeAtomically(path, [&](const std::string& tmp) { writePixels(path, tmp, spec, OIIO::TypeDesc::FLOAT, buf.data()); });
+}
+
+void writeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8) {
+    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("Software", "rayrad");
+    writeAtomically(path, [&](const std::string& tmp) { writePixels(path, tmp, spec, OIIO::TypeDesc::UINT8, rgb8.data()); });
+}
+
+HdrImage readImage(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw InputError(placeMessage(path, "", "cannot read image: " + OIIO::geterror()));
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<float> buf(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buf.data()))
+        throw InputError(placeMessage(path, "", "cannot read image: " + in->geterror()));
+    HdrImage img(spec.width, spec.height);
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) img.pixels[i][c] = buf[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+    return img;
+}
+
+}  // namespace rayrad::tonemap
