@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The command line end to end on the bundled cube (coarse mesh): info, solve, render.
+set -u
+rayrad="$1"
+src="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passed=0
+check() {  # check NAME CONDITION...
+    local name="$1"
+    shift
+    if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
+}
+
+cube="$src/scenes/cube/cube.json"
+"$rayrad" info "$cube" > "$work/info.txt"
+check "info counts patches" grep -q "patches (premeshed triangles): 4800" "$work/info.txt"
+check "info lists stages" grep -q "stages needed: premesh, direct light, secondary pass, sensor gather, ray trace" "$work/info.txt"
+
+"$rayrad" solve "$cube" --set radiosity.max_edge=2.5 --sensors "$work/s.csv" -q > "$work/solve.txt" 2> "$work/solve.err"
+check "solve exit 0" test $? -eq 0
+check "csv header" grep -qx "sensor,x,y,z,nx,ny,nz,direct_lx,indirect_lx,total_lx,ref_direct_lx,ref_indirect_lx,ref_total_lx,err_direct_pct,err_indirect_pct,err_total_pct,indirect_vertex_lx,err_indirect_vertex_pct" "$work/s.csv"
+check "csv rows" test "$(wc -l < "$work/s.csv")" -eq 4
+check "stage times on stderr" grep -q "secondary pass (shooting)" "$work/solve.err"
+check "energy line" grep -q "energy: emitted" "$work/solve.err"
+
+"$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[16,16] -o "$work/c.exr" -o "$work/c.png" -o "$work/c.jpg" -q > /dev/null 2>&1
+check "render exit 0" test $? -eq 0
+check "exr written" test -s "$work/c.exr"
+check "png written" test -s "$work/c.png"
+check "jpg written" test -s "$work/c.jpg"
+check "no temporary files left" test "$(ls -a "$work" | grep -c '\.tmp')" -eq 0
+
+"$rayrad" --help > "$work/help.txt"
+check "help lists commands" grep -q "render" "$work/help.txt"
+
+echo "cli: $passed passed, $failures failed"
+[ "$failures" -eq 0 ]

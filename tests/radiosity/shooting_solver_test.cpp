@@ -1,0 +1,77 @@
+// The shooting iteration: energy balance, analytic sphere, determinism.
+#include <app/pipeline.h>
+#include <radiosity/shooting_solver.h>
+
+#include "scene/scene_test_util.h"
+#include "test_support.h"
+
+#include <tbb/global_control.h>
+
+#include <cstdio>
+#include <fstream>
+
+using namespace rayrad;
+
+namespace {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+    std::string path = "/tmp/rayrad_test_" + name + ".json";
+    std::ofstream(path) << text;
+    return path;
+}
+
+app::PipelineOptions quiet(std::vector<scene::Override> o = {}) {
+    app::PipelineOptions p;
+    p.quiet = true;
+    p.overrides = std::move(o);
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("closed box: emitted = absorbed + unshot within 0.5%", "[solver]") {
+    std::string json = test::boxScene(R"({"type": "diffuse", "reflectance": [0.8, 0.5, 0.2]})",
+                                      R"({"type": "point", "position": [0.3, 0.6, 0.45], "intensity_cd": 100})");
+    auto run = app::runPipeline(writeTemp("box", json), quiet({{"radiosity.max_edge", "0.125"}}));
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    INFO("emitted " << b.emitted << " absorbed " << b.absorbed << " unshot " << b.unshot);
+    CHECK(run.solution.converged);
+    CHECK(b.emitted == Approx(4 * kPi * 100));
+    CHECK(std::abs(b.relativeError()) < 0.005);
+}
+
+TEST_CASE("closed sphere: the indirect light is uniform rho/(1-rho) Phi / A", "[solver]") {
+    // Inside a closed diffuse sphere every patch sees every other with F = dA / A_total,
+    // so E_ind = ρ/(1−ρ) Φ / A for any light position (the tessellated sphere's own area A).
+    std::string json = R"({"materials": {"m": {"reflectance": 0.5}},
+        "objects": [{"type": "sphere", "material": "m", "radius": 1, "subdivisions": 12, "facing": "inward"}],
+        "lights": [{"type": "point", "position": [0.2, 0.4, 0.6], "intensity_cd": 100}],
+        "sensors": [{"name": "A", "position": [0, 0, 1], "normal": [0, 0, -1]},
+                    {"name": "B", "position": [0, -0.70710678, -0.70710678], "normal": [0, 0.70710678, 0.70710678]}],
+        "radiosity": {"max_edge": 10, "stop_unshot": 1e-4}})";
+    auto run = app::runPipeline(writeTemp("sphere", json), quiet());
+    double area = run.mesh.totalArea();
+    double expected = 0.5 / (1 - 0.5) * (4 * kPi * 100) / area;
+    for (const auto& s : run.sensors) {
+        INFO(s.sensor.name);
+        CHECK(luminance(s.value.indirect) == Approx(expected).epsilon(0.01));
+    }
+    // Patch values (what the ray tracer shows) are uniform too.
+    for (size_t i = 0; i < run.mesh.patches.size(); i += 97)
+        CHECK(luminance(run.solution.indirect[i]) == Approx(expected).epsilon(0.02));
+}
+
+TEST_CASE("the solve is deterministic and independent of the thread count", "[solver]") {
+    std::string path = test::sourcePath("scenes/cube/cube.json");
+    auto o = quiet({{"radiosity.max_edge", "2.5"}, {"radiosity.stop_unshot", "0.01"}});
+    o.wantSensors = false;
+    auto a = app::runPipeline(path, o);
+    std::optional<app::PipelineRun> b;
+    {
+        tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+        b.emplace(app::runPipeline(path, o));
+    }
+    REQUIRE(a.solution.indirect.size() == b->solution.indirect.size());
+    CHECK(a.solution.shots == b->solution.shots);
+    for (size_t i = 0; i < a.solution.indirect.size(); ++i) REQUIRE(a.solution.indirect[i] == b->solution.indirect[i]);
+}

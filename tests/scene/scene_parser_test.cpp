@@ -1,0 +1,117 @@
+// The parser reports every problem with its place (JSON pointer or line/column).
+#include <core/input_error.h>
+#include <scene/scene.h>
+#include <scene/scene_parser.h>
+
+#include "scene/scene_test_util.h"
+#include "test_support.h"
+
+using namespace rayrad;
+using namespace rayrad::test;
+
+TEST_CASE("a valid scene parses without errors", "[parser]") {
+    auto e = parseErrors(boxScene());
+    CHECK(e.messages.empty());
+    auto desc = scene::parseScene(boxScene(), "test.json");
+    REQUIRE(desc.objects.size() == 1);
+    CHECK(desc.lights[0].intensity == 100.0);
+}
+
+TEST_CASE("malformed JSON names the line and column", "[parser]") {
+    auto e = parseErrors("{\n  \"materials\": {,\n}");
+    REQUIRE(e.messages.size() == 1);
+    CHECK(e.contains("line 2, column"));
+    CHECK(e.contains("invalid JSON"));
+}
+
+TEST_CASE("the default handler throws one InputError naming file and place", "[parser]") {
+    std::string bad = boxScene(R"({"type": "diffuse", "reflectance": 0.5})",
+                               R"({"type": "point", "position": [0,0,0], "intensity_cd": -5})");
+    try {
+        scene::parseScene(bad, "scenes/cube.json");
+        FAIL("no error");
+    } catch (const InputError& err) {
+        CHECK(std::string(err.what()) == "scenes/cube.json: /lights/0/intensity_cd: expected a positive number, got -5");
+    }
+}
+
+TEST_CASE("reflectance must be at least 0 and below 1", "[parser]") {
+    CHECK(parseErrors(boxScene(R"({"type": "diffuse", "reflectance": 1.0})")).contains("/materials/grey/reflectance"));
+    CHECK(parseErrors(boxScene(R"({"type": "diffuse", "reflectance": [0.5, -0.1, 0.2]})")).contains("/materials/grey/reflectance"));
+    CHECK(parseErrors(boxScene(R"({"type": "diffuse", "reflectance": 0.99})")).messages.empty());
+}
+
+TEST_CASE("unknown keys and names get a did-you-mean", "[parser]") {
+    auto e = parseErrors(boxScene(R"({"type": "diffuse", "reflectence": 0.5})"));
+    CHECK(e.contains("/materials/grey/reflectence: unknown key (did you mean \"reflectance\"?)"));
+    std::string s = R"({"materials": {"white": {"reflectance": 0.5}},
+        "objects": [{"type": "quad", "material": "whte", "vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+        "lights": [{"type": "point", "position": [0,0,1], "intensity_cd": 1}]})";
+    CHECK(parseErrors(s).contains("/objects/0/material: unknown material \"whte\" (did you mean \"white\"?)"));
+}
+
+TEST_CASE("NaN and infinity are rejected", "[parser]") {
+    auto e = parseErrors(boxScene(R"({"type": "diffuse", "reflectance": 0.5})",
+                                  R"({"type": "point", "position": [0,0,0], "intensity_cd": "NaN"})"));
+    CHECK(e.contains("/lights/0/intensity_cd: expected a finite number"));
+    auto e2 = parseErrors(boxScene(R"({"type": "diffuse", "reflectance": 0.5})",
+                                   R"({"type": "point", "position": [0, 1e999, 0], "intensity_cd": 1})"));
+    CHECK(e2.contains("/lights/0/position"));
+}
+
+TEST_CASE("wrong types and shapes are named", "[parser]") {
+    std::string s = R"({"materials": {"m": {"reflectance": 0.5}},
+        "objects": [{"type": "quad", "material": "m", "vertices": [[0,0,0],[1,0,0],[1,1,0]]}],
+        "lights": [{"type": "point", "position": "here", "intensity_cd": 1}]})";
+    auto e = parseErrors(s);
+    CHECK(e.contains("/objects/0/vertices: a quad needs 4 vertices, got 3"));
+    CHECK(e.contains("/lights/0/position: expected three finite numbers"));
+}
+
+TEST_CASE("a scene without light or geometry is an error", "[parser]") {
+    CHECK(parseErrors(R"({"materials": {}, "objects": []})").contains("/objects: the scene has no geometry"));
+    std::string noLight = R"({"materials": {"m": {"reflectance": 0.5}},
+        "objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "material": "m"}]})";
+    CHECK(parseErrors(noLight).contains("/lights: the scene has no light"));
+}
+
+TEST_CASE("--set overrides are applied and checked like the file", "[parser]") {
+    auto desc = scene::parseScene(boxScene(), "t.json", {scene::parseOverride("radiosity.max_edge=0.25"),
+                                                          scene::parseOverride("lights.0.intensity_cd=7")});
+    CHECK(desc.meshing.maxEdge == 0.25);
+    CHECK(desc.lights[0].intensity == 7.0);
+    CHECK(parseErrors(boxScene(), {scene::parseOverride("radiosity.max_egde=1")})
+              .contains("/radiosity/max_egde: unknown key (did you mean \"max_edge\"?)"));
+    CHECK_THROWS_AS(scene::parseOverride("novalue"), InputError);
+}
+
+TEST_CASE("a missing mesh file is named with its place", "[parser]") {
+    std::string s = R"({"materials": {"m": {"reflectance": 0.5}},
+        "objects": [{"type": "mesh", "material": "m", "file": "nowhere.obj"}],
+        "lights": [{"type": "point", "position": [0,0,1], "intensity_cd": 1}]})";
+    auto desc = scene::parseScene(s, "dir/scene.json");
+    try {
+        scene::buildScene(desc);
+        FAIL("no error");
+    } catch (const InputError& err) {
+        std::string what = err.what();
+        CHECK(what.find("dir/scene.json: /objects/0/file: mesh file 'dir/nowhere.obj' does not exist") == 0);
+    }
+}
+
+TEST_CASE("area lights: flux in lm becomes luminance L = Φ / (π A)", "[parser]") {
+    std::string s = R"({"materials": {"lamp": {"type": "emissive", "flux_lm": 100, "reflectance": 0}},
+        "objects": [{"type": "quad", "material": "lamp", "vertices": [[0,0,0],[2,0,0],[2,0.5,0],[0,0.5,0]]}]})";
+    auto scene = scene::buildScene(scene::parseScene(s, "t.json"));
+    CHECK(luminance(scene.materials[0].emission) == Approx(100.0 / (kPi * 1.0)));
+}
+
+TEST_CASE("sensor grids expand to named points at cell centres", "[parser]") {
+    std::string s = boxScene();
+    s.insert(s.size() - 1, R"(, "sensor_grids": [{"name": "g", "origin": [0,0,0], "u": [1,0,0], "v": [0,1,0], "counts": [2, 3]}])");
+    auto desc = scene::parseScene(s, "t.json");
+    REQUIRE(desc.sensors.size() == 6);
+    CHECK(desc.sensors[0].name == "g[0,0]");
+    CHECK(desc.sensors[0].position == Vec3(0.25, 1.0 / 6, 0));
+    CHECK(desc.sensors[5].normal == Vec3(0, 0, 1));
+}
