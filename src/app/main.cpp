@@ -66,7 +66,7 @@ void printSolveSummary(const app::PipelineRun& run) {
     fmt::print(stderr, "patches: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n", run.mesh.patches.size(), s.shots,
                s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
                s.converged ? "converged" : "stopped at max_shots");
-    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm, unshot {:.6g} lm, balance {:+.4f}%\n",
+    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm, unshot {:.6g} lm, not accounted {:+.4f}%\n",
                balance.emitted, balance.absorbed, balance.unshot, 100 * balance.relativeError());
 }
 
