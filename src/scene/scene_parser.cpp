@@ -321,6 +321,23 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     r.finish();
 }
 
+void parseClusters(JsonObject c, SceneDesc& d) {
+    ClusterOptions& o = d.clusters;
+    o.enabled = c.boolean("enabled").value_or(o.enabled);
+    o.voxelSize = c.nonNegative("voxel_size", o.voxelSize);
+    o.patchesPerCluster = c.nonNegative("patches_per_cluster", o.patchesPerCluster);
+    o.sizePercent = c.positive("size_percent", o.sizePercent);
+    o.referenceArea = c.nonNegative("reference_area", o.referenceArea);
+    o.normalToleranceDeg = c.number("normal_tolerance_deg", o.normalToleranceDeg);
+    if (!(o.normalToleranceDeg >= 0 && o.normalToleranceDeg <= 180))
+        c.error("normal_tolerance_deg", "expected an angle from 0 to 180");
+    o.maxIlluminanceStep = c.nonNegative("max_illuminance_step_lx", o.maxIlluminanceStep);
+    o.energyCorrection = c.boolean("energy_correction").value_or(o.energyCorrection);
+    o.pushPullFraction = c.number("push_pull_fraction", o.pushPullFraction);
+    if (!(o.pushPullFraction > 0 && o.pushPullFraction <= 1)) c.error("push_pull_fraction", "expected a number in (0, 1]");
+    c.finish();
+}
+
 void parseRender(JsonObject r, SceneDesc& d) {
     d.render.samplesPerPixel = r.integer("spp", d.render.samplesPerPixel, 1, 65536);
     d.render.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int>(d.render.seed), 0, 2147483647));
@@ -359,6 +376,19 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         auto colon = what.find(": ", what.find("parse error"));
         ctx.error(lineColumn(text, e.byte > 0 ? e.byte - 1 : 0),
                   "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+        return desc;
+    } catch (const json::exception& e) {
+        // e.g. out_of_range.406 "number overflow parsing '1e999'": no byte offset is given,
+        // so find the quoted token in the text to name the place.
+        std::string what = e.what();
+        auto q1 = what.find('\''), q2 = what.rfind('\'');
+        std::string place = "/";
+        if (q1 != std::string::npos && q2 > q1) {
+            auto at = text.find(what.substr(q1 + 1, q2 - q1 - 1));
+            if (at != std::string::npos) place = lineColumn(text, at);
+        }
+        auto bracket = what.find("] ");
+        ctx.error(place, "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
         return desc;
     }
     if (!root.is_object()) {
@@ -407,6 +437,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     eachObject("sensors", [&](JsonObject o, int i) { desc.sensors.push_back(parseSensor(o, i)); });
     eachObject("sensor_grids", [&](JsonObject o, int i) { parseSensorGrid(o, i, desc.sensors); });
     if (auto r = top.object("radiosity")) parseRadiosity(*r, desc);
+    if (auto c = top.object("clusters")) parseClusters(*c, desc);
     if (auto r = top.object("render")) parseRender(*r, desc);
     top.finish();
 
