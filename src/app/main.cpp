@@ -3,6 +3,7 @@
 #include <app/sensor_table.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
+#include <radiosity/clusters.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
 #include <tonemap/display_transform.h>
@@ -66,6 +67,11 @@ void printSolveSummary(const app::PipelineRun& run) {
     fmt::print(stderr, "patches: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n", run.mesh.patches.size(), s.shots,
                s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
                s.converged ? "converged" : "stopped at max_shots");
+    fmt::print(stderr, "{}\n", run.clustering.statistics());
+    if (run.clustering.enabled)
+        fmt::print(stderr, "transfers: {} cluster→cluster, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
+                   run.shooting.clusterTransfers, run.shooting.patchPairs, run.shooting.corrections,
+                   run.shooting.pushPulls, run.maxIlluminanceStep);
     fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm, unshot {:.6g} lm, not accounted {:+.4f}%\n",
                balance.emitted, balance.absorbed, balance.unshot, 100 * balance.relativeError());
 }
@@ -141,6 +147,7 @@ int runInfo(const CommonArgs& a) {
     fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
     fmt::print("patches (premeshed triangles): {} (target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
                mesh.patches.size(), radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(), mesh.totalArea());
+    fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters).statistics());
     fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
     fmt::print("sensors: {}\n", scene.sensors.size());
     if (scene.camera) fmt::print("camera: {}x{}, vfov {} deg\n", scene.camera->width, scene.camera->height, scene.camera->verticalFovDeg);

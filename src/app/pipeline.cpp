@@ -21,16 +21,19 @@ scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Ove
 namespace {
 
 void solveSecondary(PipelineRun& run, bool quiet) {
-    radiosity::ShootingSolver solver(run.scene, run.mesh, *run.embree, run.scene.solver);
+    radiosity::ShootingSolver solver(run.scene, run.mesh, run.clustering, *run.embree, run.scene.solver,
+                                     run.scene.clusters);
     solver.initialize(run.solution);
     Progress progress("secondary pass", quiet);
     double target = run.scene.solver.stopUnshot;
-    solver.solve(run.solution, [&](const radiosity::RadiositySolution& s) {
+    solver.solve(run.solution, {}, [&](const radiosity::RadiositySolution& s) {
         double frac = s.initialUnshotFlux > 0 ? s.remainingUnshotFlux / s.initialUnshotFlux : 0;
         // Progress in log space from 1 down to the stopping threshold.
         double done = frac > 0 ? std::log(frac) / std::log(target) : 1.0;
         progress.update(done, fmt::format("{} shots, unshot {:.3g}%", s.shots, 100 * frac));
     });
+    run.shooting = solver.statistics();
+    run.maxIlluminanceStep = solver.maxIlluminanceStep();
 }
 
 }  // namespace
@@ -51,10 +54,12 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     radiosity::computeDirect(run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples, run.solution);
 
     if (run.scene.hasReflectance()) {
+        run.report.begin("clusters");
+        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters);
         run.report.begin("secondary pass (shooting)");
         solveSecondary(run, options.quiet);
         run.report.begin("reconstruct vertices");
-        radiosity::reconstructVertices(run.mesh, run.solution);
+        radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
     } else {
         run.skipped.push_back("secondary pass (no surface reflects light)");
     }

@@ -4,7 +4,9 @@
 #include <app/sensor_table.h>
 #include <core/hdr_image.h>
 #include <core/stage_report.h>
+#include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
+#include <radiosity/shooting_solver.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
 #include <raytrace/embree_scene.h>
@@ -29,6 +31,9 @@ struct PipelineOptions {
 struct PipelineRun {
     scene::Scene scene;
     radiosity::PatchMesh mesh;
+    radiosity::Clustering clustering;
+    radiosity::ShootingStatistics shooting;
+    double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
     std::unique_ptr<raytrace::EmbreeScene> embree;
     std::unique_ptr<radiosity::DirectLight> lights;
     radiosity::RadiositySolution solution;

@@ -1,42 +1,101 @@
-// Progressive radiosity by shooting: largest unshot power first (the secondary pass).
+// The secondary pass: progressive shooting over the two-level hierarchy (clusters, patches).
 #pragma once
 
 #include <core/visibility.h>
+#include <radiosity/clusters.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 #include <scene/settings.h>
 
 #include <functional>
+#include <vector>
 
 namespace rayrad::radiosity {
 
-/// The non-clustered shooting iteration (Cohen et al. 1988) over the premeshed patches.
-/// Each step picks the patch with the largest unshot power |Y(ΔL)|·A and shoots ΔL to
-/// every receiver r:  ΔE_r = π ΔL F(c_r → s) V(c_r, s),  E_r += ΔE_r,  ΔL_r += ρ_r ΔE_r / π.
-/// Receivers are independent, so a shot runs in parallel and stays deterministic.
+/// The light a cluster holds during the solve (Myszkowski & Kunii, eq. 1–2).
+struct ClusterLight {
+    Rgb unshot{0.0};    ///< ΔL_C = Σ ΔL_i A_i / A_C, cd/m² (kept current as patches receive)
+    Rgb total{0.0};     ///< L_C = Σ L_i A_i / A_C, cd/m²
+    /// ρ I / π of the cluster→cluster illuminance received but not yet pushed down:
+    /// the reflected luminance it will add, area-averaged, cd/m² (for choosing shooters).
+    Rgb pendingReflected{0.0};
+    int radius = 0;     ///< r_v of the last shot, in voxels (0 = never shot)
+};
+
+/// Counters of what the solve did.
+struct ShootingStatistics {
+    int64_t clusterTransfers = 0;  ///< cluster→cluster receivers
+    int64_t patchPairs = 0;        ///< patch→patch source/receiver pairs evaluated
+    int64_t corrections = 0;       ///< receiver clusters corrected
+    int64_t pushPulls = 0;         ///< global push-pulls
+};
+
+/// Shooting (Cohen et al. 1988) over clusters and patches with the energy-transfer
+/// correction of Myszkowski & Kunii. Each step picks the cluster with the largest unshot
+/// power |Y(ΔL_C)|·A_C (pending I_C included), push-pulls it, and shoots ΔL to every
+/// receiver cluster D:
+///  - cluster→cluster where D's voxel is at Chebyshev distance ≥ r_v from the shooter's,
+///    r_v = ceil(R / voxel), R = sqrt(Y(L_C) A_C / ΔI_max):  I_D += ΔL_C · π F V;
+///  - patch→patch otherwise, and inside the shooter:  E_j += Σ_i ΔL_i π F(c_j → i) V.
+/// When r_v grows, the receivers in the ring between the old and the new radius are
+/// corrected (see energy_correction.cpp). Receivers are independent, so each shot runs
+/// in parallel over receiver clusters and the result does not depend on thread count.
+/// Without clusters every patch is its own cluster and every transfer patch→patch.
 class ShootingSolver {
   public:
-    ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,
-                   const scene::SolverOptions& options);
+    ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+                   const Visibility& vis, const scene::SolverOptions& solver, const scene::ClusterOptions& clusters);
 
     /// Starts from the direct pass: ΔL_i = ρ_i Ē_direct,i / π, E_indirect = 0.
-    void initialize(RadiositySolution& solution) const;
+    void initialize(RadiositySolution& solution);
     /// One shot; false (and nothing done) once converged or out of shots.
-    bool step(RadiositySolution& solution) const;
-    /// Iterates to the stopping rule; `onProgress` is called now and then.
-    void solve(RadiositySolution& solution, const std::function<void(const RadiositySolution&)>& onProgress = {}) const;
+    bool step(RadiositySolution& solution);
+    /// Iterates to the stopping rule. `onPushPull` runs after every global push-pull
+    /// (the solution is consistent then); `onProgress` now and then.
+    void solve(RadiositySolution& solution, const std::function<void(const RadiositySolution&)>& onPushPull = {},
+               const std::function<void(const RadiositySolution&)>& onProgress = {});
+    /// Pushes every pending I_C down to the patches and pulls ΔL_C, L_C up.
+    void pushPullAll(RadiositySolution& solution);
 
-    /// Unshot flux in lm: Σ π |Y(ΔL_i)| A_i.
+    /// Shoots cluster c now; `radius` overrides r_v (tests). Public for tests.
+    void shootCluster(size_t c, RadiositySolution& solution, int radius = -1);
+
+    double maxIlluminanceStep() const { return m_maxStep; }
+    const std::vector<ClusterLight>& clusterLight() const { return m_light; }
+    const ShootingStatistics& statistics() const { return m_stats; }
+    /// Unshot flux in lm: Σ π |Y(ΔL_i)| A_i over patches.
     double unshotFlux(const RadiositySolution& solution) const;
 
   private:
-    void shoot(size_t source, RadiositySolution& solution) const;
+    double clusterPower(size_t c) const;
+    int radiusFor(size_t c) const;
+    void pushPull(size_t c, RadiositySolution& s);
+    void pull(size_t c, const RadiositySolution& s);
+    /// Adds one cluster→cluster shot (illuminance `e` at the receiver's centroid) to the
+    /// receiver's pending illuminance, shared by receiverShape().
+    void addPending(const Cluster& source, size_t receiver, const Rgb& e);
+    /// Adds illuminance ΔE to patch j (and its cluster's pulled values).
+    void receive(size_t j, const Rgb& deltaE, RadiositySolution& s);
+    /// Patch→patch from the members of `source` (luminance per member from `amount`)
+    /// to every member of `receiver`.
+    void shootPatches(const Cluster& source, const std::vector<Rgb>& amount, size_t receiver, RadiositySolution& s);
+    /// The energy-transfer correction for receiver d (energy_correction.cpp).
+    void correct(size_t c, size_t d, const std::vector<Rgb>& totalOfSource, RadiositySolution& s);
+    bool coplanar(const Cluster& a, const Cluster& b) const;
 
     const scene::Scene& m_scene;
     const PatchMesh& m_mesh;
+    const Clustering& m_clustering;
     const Visibility& m_vis;
     scene::SolverOptions m_options;
+    scene::ClusterOptions m_clusterOptions;
+    double m_maxStep = 0;               ///< ΔI_max, lx
+    std::vector<ClusterLight> m_light;
+    std::vector<Rgb> m_pending;         ///< per patch: cluster→cluster illuminance not yet pushed, lx
+    double m_shotSincePushPull = 0;     ///< unshot power shot since the last push-pull, cd
+    double m_powerAtPushPull = 0;
+    ShootingStatistics m_stats;
 };
 
 /// Energy accounting in lm: what the lights emit, what surfaces absorbed

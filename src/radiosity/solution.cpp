@@ -1,5 +1,9 @@
 #include <radiosity/solution.h>
 
+#include <algorithm>
+#include <cmath>
+#include <set>
+
 namespace rayrad::radiosity {
 
 Rgb RadiositySolution::reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const {
@@ -7,17 +11,70 @@ Rgb RadiositySolution::reflectedLuminance(const scene::Scene& scene, const Patch
     return rho * (directMean[i] + indirect[i]) / kPi;  // L = ρ E / π
 }
 
-void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution) {
-    std::vector<Rgb> sum(mesh.vertices.size(), Rgb(0.0));
-    std::vector<int> count(mesh.vertices.size(), 0);
-    for (size_t i = 0; i < mesh.patches.size(); ++i)
-        for (uint32_t v : mesh.patches[i].v) {
-            sum[v] += solution.indirect[i];
-            ++count[v];
+namespace {
+
+/// Least-squares plane through (u, w, value) samples, value at (0, 0); false when the
+/// sample positions are (nearly) collinear.
+bool planeAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& values, Rgb& out) {
+    // Normal equations for [1 u w]·[a b c]ᵀ ≈ value.
+    glm::dmat3 m(0.0);
+    Rgb r1(0.0), ru(0.0), rw(0.0);
+    for (size_t k = 0; k < uv.size(); ++k) {
+        double u = uv[k].x, w = uv[k].y;
+        m[0][0] += 1, m[1][0] += u, m[2][0] += w;
+        m[0][1] += u, m[1][1] += u * u, m[2][1] += u * w;
+        m[0][2] += w, m[1][2] += u * w, m[2][2] += w * w;
+        r1 += values[k], ru += u * values[k], rw += w * values[k];
+    }
+    double scale = m[1][1] + m[2][2];
+    if (uv.size() < 3 || std::abs(glm::determinant(m)) < 1e-9 * scale * scale * m[0][0]) return false;
+    glm::dmat3 inv = glm::inverse(m);
+    for (int ch = 0; ch < 3; ++ch) {
+        glm::dvec3 rhs(r1[ch], ru[ch], rw[ch]);
+        out[ch] = (inv * rhs)[0];  // a: the value at the vertex
+    }
+    return true;
+}
+
+}  // namespace
+
+void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, bool linear) {
+    const size_t nv = mesh.vertices.size();
+    std::vector<std::vector<uint32_t>> around(nv);  // vertex → patches sharing it
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
+        for (uint32_t v : mesh.patches[i].v) around[v].push_back(i);
+
+    solution.vertexIndirect.assign(nv, Rgb(0.0));
+    for (size_t v = 0; v < nv; ++v) {
+        if (around[v].empty()) continue;
+        Rgb sum(0.0);
+        for (uint32_t i : around[v]) sum += solution.indirect[i];
+        Rgb average = sum / static_cast<double>(around[v].size());  // the paper's reconstruction
+        solution.vertexIndirect[v] = average;
+        if (!linear) continue;
+
+        // Two rings of patches around v, in v's surface group.
+        std::set<uint32_t> ring(around[v].begin(), around[v].end());
+        for (uint32_t i : around[v])
+            for (uint32_t w : mesh.patches[i].v) ring.insert(around[w].begin(), around[w].end());
+        Vec3 n(0.0);
+        for (uint32_t i : around[v]) n += mesh.patches[i].normal * mesh.patches[i].area;
+        if (glm::length(n) == 0) continue;
+        n = glm::normalize(n);
+        Vec3 t1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+        Vec3 t2 = glm::cross(n, t1);
+        std::vector<Vec2> uv;
+        std::vector<Rgb> values;
+        for (uint32_t i : ring) {
+            if (mesh.patches[i].group != mesh.patches[around[v][0]].group) continue;
+            Vec3 d = mesh.patches[i].centroid - mesh.vertices[v];
+            uv.emplace_back(glm::dot(d, t1), glm::dot(d, t2));
+            values.push_back(solution.indirect[i]);
         }
-    solution.vertexIndirect.assign(mesh.vertices.size(), Rgb(0.0));
-    for (size_t v = 0; v < sum.size(); ++v)
-        if (count[v] > 0) solution.vertexIndirect[v] = sum[v] / static_cast<double>(count[v]);
+        Rgb fitted;
+        // Illuminance is never negative; a plane fitted across a sharp shadow edge could be.
+        if (planeAtOrigin(uv, values, fitted)) solution.vertexIndirect[v] = glm::max(fitted, Rgb(0.0));
+    }
 }
 
 Rgb interpolateIndirect(const PatchMesh& mesh, const RadiositySolution& solution, size_t patch, double u, double v) {

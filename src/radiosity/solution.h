@@ -29,9 +29,12 @@ struct RadiositySolution {
     Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const;
 };
 
-/// Vertex values as the paper reconstructs them: the plain average of the centroid
-/// values of the triangles that share the vertex (within one surface group).
-void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution);
+/// Vertex values from the centroid values of the triangles around each vertex (within
+/// its surface group). `linear` false: the paper's plain average. `linear` true: a
+/// least-squares plane E = a + b u + c w (tangent coordinates at the vertex) through the
+/// centroid values of the two rings of triangles around the vertex, evaluated at the
+/// vertex; falls back to the average where the points do not span a plane.
+void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, bool linear = false);
 
 /// Indirect at barycentric (u, v) of patch p, interpolated from the vertex values.
 Rgb interpolateIndirect(const PatchMesh& mesh, const RadiositySolution& solution, size_t patch, double u, double v);

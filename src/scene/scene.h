@@ -67,6 +67,7 @@ struct Scene {
     std::optional<Camera> camera;
     std::vector<Sensor> sensors;
     MeshingOptions meshing;
+    ClusterOptions clusters;
     SolverOptions solver;
     RenderOptions render;
     BuildWarnings warnings;

@@ -111,6 +111,7 @@ class Builder {
         Scene s;
         s.file = m_desc.file;
         s.meshing = m_desc.meshing;
+        s.clusters = m_desc.clusters;
         s.solver = m_desc.solver;
         s.render = m_desc.render;
         std::map<std::string, int> materialIndex;

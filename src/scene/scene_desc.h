@@ -78,6 +78,7 @@ struct SceneDesc {
     std::optional<CameraDesc> camera;
     std::vector<SensorDesc> sensors;  ///< points, with grids already expanded
     MeshingOptions meshing;
+    ClusterOptions clusters;
     SolverOptions solver;
     RenderOptions render;
 };

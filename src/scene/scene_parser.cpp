@@ -318,6 +318,11 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.analyticDistance = r.nonNegative("analytic_distance", d.solver.analyticDistance);
     d.solver.areaLightSamples = r.integer("area_light_samples", d.solver.areaLightSamples, 1, 4096);
     d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
+    if (auto rec = r.string("reconstruction")) {
+        if (*rec == "linear") d.solver.linearReconstruction = true;
+        else if (*rec == "average") d.solver.linearReconstruction = false;
+        else r.error("reconstruction", fmt::format("expected \"linear\" or \"average\", got \"{}\"", *rec));
+    }
     r.finish();
 }
 
@@ -333,6 +338,11 @@ void parseClusters(JsonObject c, SceneDesc& d) {
         c.error("normal_tolerance_deg", "expected an angle from 0 to 180");
     o.maxIlluminanceStep = c.nonNegative("max_illuminance_step_lx", o.maxIlluminanceStep);
     o.energyCorrection = c.boolean("energy_correction").value_or(o.energyCorrection);
+    if (auto detail = c.string("receiver_detail")) {
+        if (*detail == "patch") o.receiverDetail = true;
+        else if (*detail == "cluster") o.receiverDetail = false;
+        else c.error("receiver_detail", fmt::format("expected \"patch\" or \"cluster\", got \"{}\"", *detail));
+    }
     o.pushPullFraction = c.number("push_pull_fraction", o.pushPullFraction);
     if (!(o.pushPullFraction > 0 && o.pushPullFraction <= 1)) c.error("push_pull_fraction", "expected a number in (0, 1]");
     c.finish();

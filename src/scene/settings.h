@@ -18,6 +18,31 @@ struct MeshingOptions {
     double maxCellAspect = 2.0;
 };
 
+/// Clustering for the secondary pass (a voxel grid; two levels: clusters and patches).
+/// The voxel size is taken from the first of: voxelSize, patchesPerCluster, sizePercent.
+struct ClusterOptions {
+    bool enabled = true;            ///< false: every patch shoots and receives on its own
+    double voxelSize = 0;           ///< voxel edge in metres (0 = derive)
+    double patchesPerCluster = 0;   ///< target average patches per cluster (0 = off)
+    /// Cluster size as a percentage of the reference area (the paper's "1 % of the wall
+    /// area"): voxel edge = sqrt(sizePercent/100 · referenceArea).
+    double sizePercent = 1.0;
+    double referenceArea = 0;       ///< m²; 0 = the area of the largest input surface
+    double normalToleranceDeg = 30; ///< patches of one cluster have normals within this of the first
+    /// ΔI_max in lx: cluster→cluster transfer only where one shot of the cluster's total
+    /// power would give the receiver less than this. 0 = derive: 1 % of the mean
+    /// illuminance (direct + estimated indirect) over the scene.
+    double maxIlluminanceStep = 0;
+    bool energyCorrection = true;   ///< the paper's energy-transfer correction
+    /// How a cluster→cluster shot is shared among the receiver's patches. false (the
+    /// paper, eq. 2): I_C pushed down uniformly. true: the same flux, shared in
+    /// proportion to each patch's own kernel cosθ_j cosθ_C / r_j² from the source cluster,
+    /// so patches at grazing angles (along edges) do not get the cluster centre's light.
+    bool receiverDetail = true;
+    /// Push-pull every cluster after this fraction of the unshot power has been shot.
+    double pushPullFraction = 0.1;
+};
+
 /// The secondary (indirect) pass: progressive shooting.
 struct SolverOptions {
     /// Stop when the unshot flux falls below this fraction of the flux the direct pass
@@ -33,6 +58,11 @@ struct SolverOptions {
     /// Sensor gather: how many times corner values of near patches are themselves
     /// re-gathered (a local fixed-point iteration at edges and corners; 0 = patch-constant).
     int gatherLevels = 8;
+    /// Vertex values from centroid values: false = the paper's plain average of the
+    /// triangles around the vertex; true = a least-squares plane through the centroid
+    /// values of the two rings of triangles around it, evaluated at the vertex (exact for
+    /// linear variation, so it does not flatten the fall-off into edges and corners).
+    bool linearReconstruction = true;
 };
 
 /// The ray tracer and the sensor gather.

@@ -1,0 +1,147 @@
+#include <radiosity/clusters.h>
+
+#include <core/check.h>
+#include <scene/polygon.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace rayrad::radiosity {
+
+int Clustering::voxelDistance(const Cluster& a, const Cluster& b) const {
+    return std::max({std::abs(a.voxel[0] - b.voxel[0]), std::abs(a.voxel[1] - b.voxel[1]),
+                     std::abs(a.voxel[2] - b.voxel[2])});
+}
+
+size_t Clustering::multiPatchClusters() const {
+    return static_cast<size_t>(std::count_if(clusters.begin(), clusters.end(),
+                                             [](const Cluster& c) { return c.patches.size() > 1; }));
+}
+
+std::string Clustering::statistics() const {
+    if (!enabled) return fmt::format("clusters: off ({} patches shoot on their own)", clusters.size());
+    size_t multi = multiPatchClusters(), inMulti = 0, largest = 0;
+    for (const auto& c : clusters) {
+        if (c.patches.size() > 1) inMulti += c.patches.size();
+        largest = std::max(largest, c.patches.size());
+    }
+    return fmt::format(
+        "clusters: {} of 2+ patches (mean {:.1f}, largest {}), {} patches in no cluster; voxel {:.4g} m, grid {}x{}x{}",
+        multi, multi ? double(inMulti) / multi : 0.0, largest, clusters.size() - multi, voxelSize, dims[0], dims[1],
+        dims[2]);
+}
+
+double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& o) {
+    if (o.voxelSize > 0) return o.voxelSize;
+    if (o.patchesPerCluster > 0 && !mesh.patches.empty()) {
+        // A planar cluster in a voxel of edge s covers about s²: s² = n · mean patch area.
+        return std::sqrt(o.patchesPerCluster * mesh.totalArea() / mesh.patches.size());
+    }
+    double reference = o.referenceArea;
+    if (reference <= 0)
+        for (const auto& g : scene.groups) {
+            double a = 0;
+            for (const auto& poly : g.polygons) a += scene::polygonArea(g.positions, poly);
+            reference = std::max(reference, a);
+        }
+    return std::sqrt(o.sizePercent / 100.0 * reference);
+}
+
+namespace {
+
+void finishCluster(const PatchMesh& mesh, const scene::Scene& scene, Cluster& c) {
+    c.area = 0;
+    c.centroid = Vec3(0.0);
+    Vec3 n(0.0);
+    c.meanReflectance = Rgb(0.0);
+    for (uint32_t i : c.patches) {
+        const Patch& p = mesh.patches[i];
+        c.area += p.area;
+        c.centroid += p.area * p.centroid;
+        n += p.area * p.normal;
+        c.meanReflectance += p.area * scene.materials[p.material].reflectance;
+    }
+    c.centroid /= c.area;
+    c.meanReflectance /= c.area;
+    c.normal = glm::length(n) > 0 ? glm::normalize(n) : mesh.patches[c.patches[0]].normal;
+    double r = 0;
+    c.planar = true;
+    for (uint32_t i : c.patches) {
+        const Patch& p = mesh.patches[i];
+        for (int k = 0; k < 3; ++k) {
+            r = std::max(r, glm::length(mesh.corner(p, k) - c.centroid));
+            c.planar &= std::abs(glm::dot(mesh.corner(p, k) - c.centroid, c.normal)) < 1e-9 * (1 + p.diameter);
+        }
+        c.planar &= glm::dot(p.normal, c.normal) > 1 - 1e-12;
+    }
+    c.diameter = 2 * r;
+    // Visibility samples: the member nearest the centroid, then members spread over the list.
+    size_t n0 = c.patches.size();
+    uint32_t nearest = c.patches[0];
+    double best = 1e300;
+    for (uint32_t i : c.patches) {
+        double d = glm::length(mesh.patches[i].centroid - c.centroid);
+        if (d < best) best = d, nearest = i;
+    }
+    c.samples = {nearest, c.patches[n0 / 4], c.patches[n0 / 2], c.patches[(3 * n0) / 4]};
+}
+
+}  // namespace
+
+Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& o) {
+    Clustering out;
+    out.enabled = o.enabled;
+    out.clusterOf.assign(mesh.patches.size(), 0);
+    out.origin = scene.boundsMin;
+    out.voxelSize = o.enabled ? clusterVoxelSize(scene, mesh, o) : std::max(scene.diagonal(), 1e-300);
+    CHECK(out.voxelSize > 0);
+    Vec3 extent = scene.boundsMax - scene.boundsMin;
+    for (int a = 0; a < 3; ++a)
+        out.dims[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / out.voxelSize - 1e-9)));
+    auto voxelOf = [&](const Vec3& p) {
+        std::array<int, 3> v;
+        for (int a = 0; a < 3; ++a)
+            v[a] = std::clamp(static_cast<int>(std::floor((p[a] - out.origin[a]) / out.voxelSize)), 0, out.dims[a] - 1);
+        return v;
+    };
+
+    if (!o.enabled) {
+        out.clusters.resize(mesh.patches.size());
+        for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
+            out.clusters[i].patches = {i};
+            out.clusters[i].voxel = voxelOf(mesh.patches[i].centroid);
+            out.clusterOf[i] = i;
+            finishCluster(mesh, scene, out.clusters[i]);
+        }
+        return out;
+    }
+
+    const double cosTolerance = std::cos(glm::radians(o.normalToleranceDeg));
+    std::map<std::array<int, 3>, std::vector<uint32_t>> voxelClusters;  // voxel → cluster ids
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
+        const Patch& p = mesh.patches[i];
+        auto v = voxelOf(p.centroid);
+        auto& ids = voxelClusters[v];
+        uint32_t chosen = UINT32_MAX;
+        for (uint32_t id : ids)
+            if (glm::dot(mesh.patches[out.clusters[id].patches[0]].normal, p.normal) >= cosTolerance) {
+                chosen = id;
+                break;
+            }
+        if (chosen == UINT32_MAX) {
+            chosen = static_cast<uint32_t>(out.clusters.size());
+            out.clusters.emplace_back();
+            out.clusters.back().voxel = v;
+            ids.push_back(chosen);
+        }
+        out.clusters[chosen].patches.push_back(i);
+        out.clusterOf[i] = chosen;
+    }
+    for (auto& c : out.clusters) finishCluster(mesh, scene, c);
+    return out;
+}
+
+}  // namespace rayrad::radiosity

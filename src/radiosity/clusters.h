@@ -1,0 +1,52 @@
+// Clusters: patches grouped by the voxel holding their centroid and by normal direction.
+#pragma once
+
+#include <radiosity/patch_mesh.h>
+#include <scene/scene.h>
+#include <scene/settings.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rayrad::radiosity {
+
+/// A group of patches that shoots and receives as one far away (the upper of the two
+/// hierarchy levels). Geometry only; the solver keeps the light.
+struct Cluster {
+    std::vector<uint32_t> patches;       ///< indices into PatchMesh::patches
+    std::array<int, 3> voxel{};          ///< the voxel holding every member's centroid
+    double area = 0;                     ///< A_C = Σ A_i, m²
+    Vec3 centroid{0.0};                  ///< area-weighted
+    Vec3 normal{0.0};                    ///< area-weighted mean normal, unit
+    double diameter = 0;                 ///< twice the largest centroid-to-vertex distance, m
+    Rgb meanReflectance{0.0};            ///< area-weighted ρ
+    std::array<uint32_t, 4> samples{};   ///< member patches whose centroids carry visibility rays
+    bool planar = false;                 ///< all members in one plane
+};
+
+/// The voxel grid and its clusters. Every patch belongs to exactly one cluster; a
+/// cluster of one patch is a "patch in no cluster" in the paper's words.
+struct Clustering {
+    Vec3 origin{0.0};
+    double voxelSize = 0;                ///< m
+    std::array<int, 3> dims{};
+    std::vector<Cluster> clusters;
+    std::vector<uint32_t> clusterOf;     ///< patch → cluster
+    bool enabled = false;
+
+    /// Chebyshev distance between two clusters' voxels: max(|x−i|, |y−j|, |z−k|).
+    int voxelDistance(const Cluster& a, const Cluster& b) const;
+    size_t multiPatchClusters() const;
+    std::string statistics() const;
+};
+
+/// The voxel edge the options ask for (resolves the derived defaults).
+double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options);
+
+/// Builds the clusters. With options.enabled false every patch is its own cluster.
+/// Deterministic: patches are visited in index order and join the first cluster of
+/// their voxel whose first member's normal is within the tolerance.
+Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options);
+
+}  // namespace rayrad::radiosity

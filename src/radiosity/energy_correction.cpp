@@ -1,0 +1,35 @@
+// The energy-transfer correction (Myszkowski & Kunii, section 3.3).
+#include <radiosity/cluster_transfer.h>
+#include <radiosity/shooting_solver.h>
+
+namespace rayrad::radiosity {
+
+/// When the shooter C's radius r_v grows, a receiver cluster D in the ring between the
+/// old and the new radius switches from cluster→cluster to patch→patch. Then:
+///  1. reconstruct the illuminance D received from C in earlier cluster→cluster shots:
+///     C has shot (L_C − ΔL_C) in all (every shot ships the current ΔL_C), and the
+///     transfer factor and the receiver shape are deterministic, so
+///     I^r_j = (L_C − ΔL_C) · π F V · shape_j;
+///  2. take it away from every patch of D: E_j −= I^r_j, ΔL_j −= ρ_j I^r_j / π (ΔL may go
+///     negative: that is legitimate unshot energy and is shot later like any other);
+///  3. shoot C's *total* luminance L_i of every member patch→patch to D's patches
+///     (this includes the current ΔL_i, so D takes no part in this step's regular shot);
+///  4. push-pull D.
+/// `totalOfSource[k]` is L_i of C's k-th member. Touches only D's state, so receivers
+/// can be corrected in parallel.
+void ShootingSolver::correct(size_t c, size_t d, const std::vector<Rgb>& totalOfSource, RadiositySolution& s) {
+    const Cluster& C = m_clustering.clusters[c];
+    const Cluster& D = m_clustering.clusters[d];
+    pushPull(d, s);  // anything C sent earlier and still pending is now on D's patches
+    Rgb shotSoFar = m_light[c].total - m_light[c].unshot;
+    Rgb received = shotSoFar * clusterTransfer(m_mesh, C, D, m_vis, m_options.analyticDistance);
+    if (received != Rgb(0.0)) {
+        std::vector<double> shape;
+        receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
+        for (size_t k = 0; k < D.patches.size(); ++k) receive(D.patches[k], -received * shape[k], s);
+    }
+    shootPatches(C, totalOfSource, d, s);
+    pull(d, s);
+}
+
+}  // namespace rayrad::radiosity
