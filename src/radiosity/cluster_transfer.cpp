@@ -18,7 +18,8 @@ double clusterTransfer(const PatchMesh& mesh, const Cluster& source, const Clust
     double r2 = glm::dot(d, d);
     double f = 0;
     if (r2 > kFarDiameters * kFarDiameters * source.diameter * source.diameter) {
-        f = formFactorPointApprox(receiver.centroid, receiver.normal, source.centroid, source.normal, source.area);
+        f = formFactorPointApprox(receiver.centroid, receiver.normal, source.centroid, source.normal,
+                                  source.projectedArea);
     } else {
         for (uint32_t i : source.patches)
             f += patchFormFactor(mesh, mesh.patches[i], receiver.centroid, receiver.normal, analyticDistance);
@@ -41,24 +42,20 @@ void receiverShape(const PatchMesh& mesh, const Cluster& source, const Cluster& 
     const size_t n = receiver.patches.size();
     shape.assign(n, 1.0);
     if (!detail || n == 1) return;
-    double weighted = 0;
+    // Point kernel cosθ_x cosθ_C / r² from the source cluster's centroid.
+    auto kernel = [&](const Vec3& x, const Vec3& normal) {
+        Vec3 d = source.centroid - x;
+        double r2 = glm::dot(d, d);
+        if (r2 <= 0) return 0.0;
+        double r = std::sqrt(r2);
+        return std::max(0.0, glm::dot(normal, d) / r) * std::max(0.0, -glm::dot(source.normal, d) / r) / r2;
+    };
+    double atCentre = kernel(receiver.centroid, receiver.normal);
+    if (atCentre <= 0) return;  // the cluster-level transfer is 0 as well
     for (size_t k = 0; k < n; ++k) {
         const Patch& p = mesh.patches[receiver.patches[k]];
-        Vec3 d = source.centroid - p.centroid;
-        double r2 = glm::dot(d, d);
-        double r = std::sqrt(r2);
-        double kernel = r2 > 0 ? std::max(0.0, glm::dot(p.normal, d) / r) *
-                                     std::max(0.0, -glm::dot(source.normal, d) / r) / r2
-                               : 0.0;
-        shape[k] = kernel;
-        weighted += kernel * p.area;
+        shape[k] = kernel(p.centroid, p.normal) / atCentre;
     }
-    if (weighted <= 0) {
-        shape.assign(n, 1.0);
-        return;
-    }
-    double scale = receiver.area / weighted;  // area-weighted mean 1
-    for (double& v : shape) v *= scale;
 }
 
 }  // namespace rayrad::radiosity

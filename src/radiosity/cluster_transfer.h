@@ -20,10 +20,11 @@ double clusterTransfer(const PatchMesh& mesh, const Cluster& source, const Clust
                        double analyticDistance);
 
 /// How a cluster→cluster shot from `source` is shared among the receiver's patches:
-/// shape[k] multiplies the cluster-level illuminance for member k, with area-weighted
-/// mean 1 (so the flux is the cluster-level flux). `detail` false: all 1 (uniform, the
-/// paper). true: proportional to the point kernel max(0, cosθ_k) max(0, cosθ_C) / r_k²
-/// from the source cluster's centroid (uniform if that vanishes everywhere).
+/// shape[k] multiplies the illuminance computed at the receiver's centroid for member k.
+/// `detail` false: all 1 (uniform push-down, the paper's eq. 2). true: the ratio of the
+/// point kernel cosθ_k cosθ_C / r_k² at member k to its value at the centroid, so each
+/// patch gets its own orientation and distance (patches along an edge see far sources
+/// at grazing angles) and curved clusters receive their projected area, not A_D.
 void receiverShape(const PatchMesh& mesh, const Cluster& source, const Cluster& receiver, bool detail,
                    std::vector<double>& shape);
 

@@ -67,6 +67,7 @@ void finishCluster(const PatchMesh& mesh, const scene::Scene& scene, Cluster& c)
     c.centroid /= c.area;
     c.meanReflectance /= c.area;
     c.normal = glm::length(n) > 0 ? glm::normalize(n) : mesh.patches[c.patches[0]].normal;
+    c.projectedArea = glm::length(n);
     double r = 0;
     c.planar = true;
     for (uint32_t i : c.patches) {

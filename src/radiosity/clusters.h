@@ -19,6 +19,9 @@ struct Cluster {
     double area = 0;                     ///< A_C = Σ A_i, m²
     Vec3 centroid{0.0};                  ///< area-weighted
     Vec3 normal{0.0};                    ///< area-weighted mean normal, unit
+    /// |Σ A_i n_i| in m²: the projected area toward directions all members face
+    /// (≤ area; equal for a planar cluster). Used by the point approximation.
+    double projectedArea = 0;
     double diameter = 0;                 ///< twice the largest centroid-to-vertex distance, m
     Rgb meanReflectance{0.0};            ///< area-weighted ρ
     std::array<uint32_t, 4> samples{};   ///< member patches whose centroids carry visibility rays

@@ -35,9 +35,9 @@ struct ClusterOptions {
     double maxIlluminanceStep = 0;
     bool energyCorrection = true;   ///< the paper's energy-transfer correction
     /// How a cluster→cluster shot is shared among the receiver's patches. false (the
-    /// paper, eq. 2): I_C pushed down uniformly. true: the same flux, shared in
-    /// proportion to each patch's own kernel cosθ_j cosθ_C / r_j² from the source cluster,
-    /// so patches at grazing angles (along edges) do not get the cluster centre's light.
+    /// paper, eq. 2): I_C pushed down uniformly. true: scaled for each patch by its own
+    /// kernel cosθ_j cosθ_C / r_j² from the source cluster relative to the centroid's, so
+    /// patches at grazing angles (along edges) do not get the cluster centre's light.
     bool receiverDetail = true;
     /// Push-pull every cluster after this fraction of the unshot power has been shot.
     double pushPullFraction = 0.1;
