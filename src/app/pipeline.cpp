@@ -66,7 +66,10 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
     if (options.wantSensors && !run.scene.sensors.empty()) {
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
-        radiosity::Gatherer gatherer(run.scene, run.mesh, run.solution, *run.embree, run.scene.solver.gatherLevels);
+        if (run.clustering.clusters.empty())  // no secondary pass: the gather finds nothing to gather
+            run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters);
+        radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
+                                     run.scene.solver.gatherLevels);
         for (const auto& s : run.scene.sensors)
             run.sensors.push_back({s, radiosity::evaluateSensor(run.scene, run.mesh, run.solution, *run.lights,
                                                                 *run.embree, gatherer, s)});

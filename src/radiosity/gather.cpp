@@ -1,6 +1,7 @@
 #include <radiosity/gather.h>
 
 #include <radiosity/form_factor.h>
+#include <radiosity/patch_transfer.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>  // parallel_deterministic_reduce: same sum for any thread count
@@ -16,6 +17,8 @@ constexpr double kNearDiameters = 2.0;
 /// Sub-triangles are split while closer to x than this many of their own sizes.
 constexpr double kSplitRatio = 2.0;
 constexpr int kMaxSplitDepth = 12;
+/// A cluster farther than this many of its diameters shares one visibility ray.
+constexpr double kClusterVisibilityDiameters = 2.0;
 }  // namespace
 
 std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance) {
@@ -54,9 +57,9 @@ Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double dist
     return len > distance ? x + toward * (distance / len) : x;
 }
 
-Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
-                   const Visibility& vis, int levels)
-    : m_scene(scene), m_mesh(mesh), m_solution(solution), m_vis(vis), m_levels(levels),
+Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+                   const RadiositySolution& solution, const Visibility& vis, int levels)
+    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_levels(levels),
       m_nudge(1e-6 * scene.diagonal()) {}
 
 Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
@@ -113,21 +116,34 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level) {
     std::vector<int> nearIndex(near.empty() ? 0 : m_mesh.patches.size(), -1);
     for (size_t k = 0; k < near.size(); ++k) nearIndex[near[k].first] = static_cast<int>(k);
 
+    // Sum over clusters: near ones patch by patch with their own rays, far ones with one
+    // shared ray (form factors still per member). Deterministic for any thread count.
+    const auto& clusters = m_clustering.clusters;
     return tbb::parallel_deterministic_reduce(
-        tbb::blocked_range<size_t>(0, m_mesh.patches.size(), 512), Rgb(0.0),
+        tbb::blocked_range<size_t>(0, clusters.size(), 16), Rgb(0.0),
         [&](const tbb::blocked_range<size_t>& r, Rgb sum) {
-            for (size_t j = r.begin(); j != r.end(); ++j) {
-                const Patch& p = m_mesh.patches[j];
-                Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
-                if (!nearIndex.empty() && nearIndex[j] >= 0) {
-                    sum += integrateLinear(x, n, v, near[nearIndex[j]].second.data(), p.normal, 0);
-                    continue;
+            for (size_t c = r.begin(); c != r.end(); ++c) {
+                const Cluster& C = clusters[c];
+                double far = kClusterVisibilityDiameters * C.diameter;
+                bool shared = C.patches.size() > 1 && glm::dot(C.centroid - x, C.centroid - x) > far * far;
+                Rgb clusterSum(0.0);
+                for (uint32_t j : C.patches) {
+                    const Patch& p = m_mesh.patches[j];
+                    Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+                    if (!nearIndex.empty() && nearIndex[j] >= 0) {
+                        sum += integrateLinear(x, n, v, near[nearIndex[j]].second.data(), p.normal, 0);
+                        continue;
+                    }
+                    Rgb L = m_solution.reflectedLuminance(m_scene, m_mesh, j);
+                    if (L == Rgb(0.0)) continue;
+                    // Analytic within analyticDistance patch diameters, point approximation beyond.
+                    double f = patchFormFactor(m_mesh, p, x, n, m_scene.solver.analyticDistance);
+                    if (f <= 0) continue;
+                    if (shared) clusterSum += L * (kPi * f);
+                    else if (m_vis.visible(x, p.centroid)) sum += L * (kPi * f);  // E = π L F
                 }
-                Rgb L = m_solution.reflectedLuminance(m_scene, m_mesh, j);
-                if (L == Rgb(0.0)) continue;
-                double f = formFactorToPolygon(x, n, v, 3, p.normal);
-                if (f <= 0 || !m_vis.visible(x, p.centroid)) continue;
-                sum += L * (kPi * f);  // E = π L F
+                if (shared && clusterSum != Rgb(0.0) && m_vis.visible(x, m_mesh.patches[C.samples[0]].centroid))
+                    sum += clusterSum;
             }
             return sum;
         },

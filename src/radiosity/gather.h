@@ -2,6 +2,7 @@
 #pragma once
 
 #include <core/visibility.h>
+#include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
@@ -40,8 +41,11 @@ struct SensorValue {
 /// patch-constant luminance at edges and corners.
 class Gatherer {
   public:
-    Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
-             const Visibility& vis, int levels);
+    /// Clusters farther than a few of their diameters from the point share one
+    /// visibility ray (to their sample patch nearest the centroid); their members' form
+    /// factors are still summed one by one.
+    Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+             const RadiositySolution& solution, const Visibility& vis, int levels);
 
     /// Indirect illuminance (lx, RGB) at x with unit normal n.
     Rgb indirectAt(const Vec3& x, const Vec3& n) { return gather(x, n, m_levels); }
@@ -54,6 +58,7 @@ class Gatherer {
 
     const scene::Scene& m_scene;
     const PatchMesh& m_mesh;
+    const Clustering& m_clustering;
     const RadiositySolution& m_solution;
     const Visibility& m_vis;
     int m_levels;

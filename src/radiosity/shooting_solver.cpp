@@ -17,14 +17,17 @@ namespace rayrad::radiosity {
 namespace {
 /// Derived ΔI_max: this fraction of the scene's mean illuminance (measured trade-off, see
 /// docs/validation.md).
-constexpr double kDefaultStepFraction = 0.05;
+constexpr double kDefaultStepFraction = 0.2;
 }  // namespace
 
 ShootingSolver::ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                const Visibility& vis, const scene::SolverOptions& solver,
                                const scene::ClusterOptions& clusters)
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(solver),
-      m_clusterOptions(clusters) {}
+      m_clusterOptions(clusters) {
+    m_reflectance.reserve(mesh.patches.size());
+    for (const auto& p : mesh.patches) m_reflectance.push_back(scene.materials[p.material].reflectance);
+}
 
 void ShootingSolver::initialize(RadiositySolution& s) {
     size_t n = m_mesh.patches.size();
@@ -82,7 +85,7 @@ int ShootingSolver::radiusFor(size_t c) const {
 
 void ShootingSolver::receive(size_t j, const Rgb& deltaE, RadiositySolution& s) {
     const Patch& p = m_mesh.patches[j];
-    Rgb deltaL = m_scene.materials[p.material].reflectance * deltaE / kPi;  // ΔL = ρ ΔE / π
+    Rgb deltaL = m_reflectance[j] * deltaE / kPi;  // ΔL = ρ ΔE / π
     s.indirect[j] += deltaE;
     s.unshot[j] += deltaL;
     size_t c = m_clustering.clusterOf[j];
@@ -104,15 +107,22 @@ void ShootingSolver::pull(size_t c, const RadiositySolution& s) {
 }
 
 void ShootingSolver::addPending(const Cluster& source, size_t receiver, const Rgb& e) {
+    // Inlined receiverShape() (this is the hot path of cluster→cluster shots).
     const Cluster& D = m_clustering.clusters[receiver];
-    thread_local std::vector<double> shape;
-    receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
+    auto kernel = [&](const Vec3& x, const Vec3& normal) {  // cosθ_x cosθ_C / r²
+        Vec3 d = source.centroid - x;
+        double r2 = glm::dot(d, d);
+        double cx = glm::dot(normal, d), cs = -glm::dot(source.normal, d);
+        return (r2 > 0 && cx > 0 && cs > 0) ? cx * cs / (r2 * r2) : 0.0;
+    };
+    double atCentre = m_clusterOptions.receiverDetail ? kernel(D.centroid, D.normal) : 0.0;
+    bool uniform = atCentre <= 0 || D.patches.size() == 1;
     Rgb reflected(0.0);
-    for (size_t k = 0; k < D.patches.size(); ++k) {
-        uint32_t j = D.patches[k];
-        Rgb ej = e * shape[k];
+    for (uint32_t j : D.patches) {
+        const Patch& p = m_mesh.patches[j];
+        Rgb ej = uniform ? e : e * (kernel(p.centroid, p.normal) / atCentre);
         m_pending[j] += ej;
-        reflected += m_scene.materials[m_mesh.patches[j].material].reflectance * ej * m_mesh.patches[j].area;
+        reflected += m_reflectance[j] * ej * p.area;
     }
     m_light[receiver].pendingReflected += reflected / (kPi * D.area);
 }
@@ -202,7 +212,7 @@ void ShootingSolver::shootCluster(size_t c, RadiositySolution& s, int radius) {
         for (size_t d = range.begin(); d != range.end(); ++d) {
             if (corrected[d]) continue;
             const Cluster& D = m_clustering.clusters[d];
-            if (d != c && coplanar(C, D)) continue;  // coplanar surfaces exchange no light
+            if (d == c ? C.planar : coplanar(C, D)) continue;  // coplanar surfaces exchange no light
             if (d != c && m_clustering.voxelDistance(C, D) >= r) {
                 double t = clusterTransfer(m_mesh, C, D, m_vis, m_options.analyticDistance);
                 if (t > 0) addPending(C, d, deltaLC * t);  // I_D += ΔL_C π F V

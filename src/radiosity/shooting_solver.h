@@ -93,6 +93,7 @@ class ShootingSolver {
     double m_maxStep = 0;               ///< ΔI_max, lx
     std::vector<ClusterLight> m_light;
     std::vector<Rgb> m_pending;         ///< per patch: cluster→cluster illuminance not yet pushed, lx
+    std::vector<Rgb> m_reflectance;     ///< per patch ρ (saves a material lookup in hot loops)
     double m_shotSincePushPull = 0;     ///< unshot power shot since the last push-pull, cd
     double m_powerAtPushPull = 0;
     ShootingStatistics m_stats;

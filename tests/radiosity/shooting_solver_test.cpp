@@ -40,25 +40,40 @@ TEST_CASE("closed box: emitted = absorbed + unshot within 0.5%", "[solver]") {
     CHECK(std::abs(b.relativeError()) < 0.005);
 }
 
-TEST_CASE("closed sphere: the indirect light is uniform rho/(1-rho) Phi / A", "[solver]") {
-    // Inside a closed diffuse sphere every patch sees every other with F = dA / A_total,
-    // so E_ind = ρ/(1−ρ) Φ / A for any light position (the tessellated sphere's own area A).
+TEST_CASE("closed sphere: the indirect light is rho/(1-rho) Phi / A", "[solver]") {
+    // Inside a true closed diffuse sphere every point sees every other with F = dA / A,
+    // so E_ind = ρ/(1−ρ) Φ / A everywhere. The tessellated sphere is a polyhedron: there
+    // the point values at the sensors still agree to 1% (gather), and the area-weighted
+    // mean over the patches is exactly ρ/(1−ρ) Φ / A for any closed scene of uniform ρ
+    // (all flux is eventually absorbed), but single patch values vary by about ±5% with
+    // the triangles' depth — measured without clusters — so they are compared with the
+    // unclustered solution instead.
     std::string json = R"({"materials": {"m": {"reflectance": 0.5}},
         "objects": [{"type": "sphere", "material": "m", "radius": 1, "subdivisions": 12, "facing": "inward"}],
         "lights": [{"type": "point", "position": [0.2, 0.4, 0.6], "intensity_cd": 100}],
         "sensors": [{"name": "A", "position": [0, 0, 1], "normal": [0, 0, -1]},
                     {"name": "B", "position": [0, -0.70710678, -0.70710678], "normal": [0, 0.70710678, 0.70710678]}],
         "radiosity": {"max_edge": 10, "stop_unshot": 1e-4}})";
-    auto run = app::runPipeline(writeTemp("sphere", json), quiet());
+    std::string path = writeTemp("sphere", json);
+    auto run = app::runPipeline(path, quiet());
+    REQUIRE(run.clustering.multiPatchClusters() > 0);
     double area = run.mesh.totalArea();
     double expected = 0.5 / (1 - 0.5) * (4 * kPi * 100) / area;
     for (const auto& s : run.sensors) {
         INFO(s.sensor.name);
         CHECK(luminance(s.value.indirect) == Approx(expected).epsilon(0.01));
     }
-    // Patch values (what the ray tracer shows) are uniform too.
-    for (size_t i = 0; i < run.mesh.patches.size(); i += 97)
-        CHECK(luminance(run.solution.indirect[i]) == Approx(expected).epsilon(0.02));
+    double mean = 0;
+    for (size_t i = 0; i < run.mesh.patches.size(); ++i)
+        mean += luminance(run.solution.indirect[i]) * run.mesh.patches[i].area;
+    CHECK(mean / area == Approx(expected).epsilon(0.005));
+
+    auto plain = app::runPipeline(path, quiet({{"clusters.enabled", "false"}}));
+    double worst = 0;
+    for (size_t i = 0; i < run.mesh.patches.size(); ++i)
+        worst = std::max(worst, std::abs(luminance(run.solution.indirect[i]) / luminance(plain.solution.indirect[i]) - 1));
+    INFO("worst patch difference clustered vs unclustered: " << 100 * worst << "%");
+    CHECK(worst < 0.02);
 }
 
 TEST_CASE("the solve is deterministic and independent of the thread count", "[solver]") {

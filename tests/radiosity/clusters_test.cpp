@@ -1,0 +1,165 @@
+// Clusters and the two-level shooting: invariants, push-pull, the energy correction.
+#include <app/pipeline.h>
+#include <radiosity/clusters.h>
+#include <radiosity/direct_pass.h>
+#include <radiosity/mesher.h>
+#include <radiosity/patch_transfer.h>
+#include <radiosity/shooting_solver.h>
+#include <raytrace/embree_scene.h>
+#include <scene/scene_parser.h>
+
+#include "test_support.h"
+
+#include <tbb/global_control.h>
+
+#include <cmath>
+
+using namespace rayrad;
+using namespace rayrad::radiosity;
+
+namespace {
+
+scene::Scene parse(const std::string& json, std::vector<scene::Override> o = {}) {
+    return scene::buildScene(scene::parseScene(json, "t.json", o));
+}
+
+const char* kTwoQuads = R"({"materials": {"m": {"reflectance": 0.5}},
+    "objects": [
+      {"type": "quad", "material": "m", "vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]},
+      {"type": "quad", "material": "m", "vertices": [[0,0,3],[0,1,3],[1,1,3],[1,0,3]]}],
+    "lights": [{"type": "point", "position": [0.5, 0.5, 1.5], "intensity_cd": 100}],
+    "radiosity": {"max_edge": 0.25},
+    "clusters": {"voxel_size": 1.0}})";
+
+}  // namespace
+
+TEST_CASE("every patch is in exactly one cluster within the normal tolerance and its voxel", "[clusters]") {
+    auto s = scene::buildScene(scene::loadScene(test::sourcePath("scenes/cube/cube.json"),
+                                                {{"radiosity.max_edge", "0.25"}, {"clusters.size_percent", "4"}}));
+    auto mesh = premesh(s, s.meshing);
+    auto c = buildClusters(s, mesh, s.clusters);
+    std::vector<int> seen(mesh.patches.size(), 0);
+    double tol = std::cos(glm::radians(s.clusters.normalToleranceDeg));
+    for (size_t k = 0; k < c.clusters.size(); ++k) {
+        const auto& cl = c.clusters[k];
+        for (uint32_t i : cl.patches) {
+            ++seen[i];
+            REQUIRE(c.clusterOf[i] == k);
+            REQUIRE(glm::dot(mesh.patches[i].normal, mesh.patches[cl.patches[0]].normal) >= tol);
+            for (int a = 0; a < 3; ++a) {
+                int v = static_cast<int>(std::floor((mesh.patches[i].centroid[a] - c.origin[a]) / c.voxelSize));
+                REQUIRE(std::clamp(v, 0, c.dims[a] - 1) == cl.voxel[a]);
+            }
+        }
+    }
+    for (int n : seen) REQUIRE(n == 1);
+    // 4 % of a 100 m² wall: 2 m voxels, 19 200 triangles → 128 per wall cluster.
+    CHECK(c.voxelSize == Approx(2.0));
+    CHECK(c.clusters.size() == 6 * 25);
+    CHECK(c.statistics().find("150 of 2+ patches (mean 128.0") != std::string::npos);
+}
+
+TEST_CASE("push-pull conserves energy", "[clusters]") {
+    auto s = scene::buildScene(scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "1"}}));
+    auto mesh = premesh(s, s.meshing);
+    auto clustering = buildClusters(s, mesh, s.clusters);
+    raytrace::EmbreeScene embree(mesh, 1e-5 * s.diagonal());
+    DirectLight lights(s);
+    RadiositySolution sol;
+    computeDirect(mesh, lights, embree, 4, sol);
+    ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
+    solver.initialize(sol);
+    for (int k = 0; k < 20; ++k) solver.step(sol);
+    double before = 0, indirectBefore = 0, pending = 0;
+    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+        before += kPi * luminance(sol.unshot[i]) * mesh.patches[i].area;
+        indirectBefore += luminance(sol.indirect[i]) * mesh.patches[i].area;
+    }
+    for (size_t c = 0; c < clustering.clusters.size(); ++c)
+        pending += kPi * luminance(solver.clusterLight()[c].pendingReflected) * clustering.clusters[c].area;
+    REQUIRE(pending > 0);
+    solver.pushPullAll(sol);
+    double after = 0, indirectAfter = 0;
+    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+        after += kPi * luminance(sol.unshot[i]) * mesh.patches[i].area;
+        indirectAfter += luminance(sol.indirect[i]) * mesh.patches[i].area;
+    }
+    CHECK(after == Approx(before + pending).epsilon(1e-12));
+    // ρ = 2/3 everywhere: the pushed illuminance flux is pending / ρ.
+    CHECK(indirectAfter - indirectBefore == Approx(pending * 1.5).epsilon(1e-9));
+    for (size_t c = 0; c < clustering.clusters.size(); ++c) REQUIRE(solver.clusterLight()[c].pendingReflected == Rgb(0.0));
+}
+
+TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the total energy", "[clusters]") {
+    auto s = parse(kTwoQuads);
+    auto mesh = premesh(s, s.meshing);
+    auto clustering = buildClusters(s, mesh, s.clusters);
+    REQUIRE(clustering.clusters.size() == 2);
+    raytrace::EmbreeScene embree(mesh, 1e-5 * s.diagonal());
+    const size_t C = clustering.clusterOf[0], D = 1 - C;
+    REQUIRE(clustering.voxelDistance(clustering.clusters[C], clustering.clusters[D]) == 2);  // z = 3 is clamped into the last voxel
+
+    // Only C is lit (direct light set by hand), so D's light all comes from C.
+    RadiositySolution sol;
+    sol.directMean.assign(mesh.patches.size(), Rgb(0.0));
+    sol.directCorner.assign(3 * mesh.patches.size(), Rgb(0.0));
+    for (uint32_t i : clustering.clusters[C].patches) sol.directMean[i] = Rgb(1000.0 + 10.0 * i);
+    ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
+    solver.initialize(sol);
+    solver.shootCluster(C, sol, /*radius=*/1);  // distance 2 ≥ 1: cluster→cluster
+    solver.pushPullAll(sol);
+    REQUIRE(luminance(sol.indirect[clustering.clusters[D].patches[0]]) > 0);
+    REQUIRE(solver.statistics().corrections == 0);
+    solver.shootCluster(C, sol, /*radius=*/5);  // r_v grows past D: correct D
+    REQUIRE(solver.statistics().corrections == 1);
+
+    for (uint32_t j : clustering.clusters[D].patches) {
+        const Patch& rec = mesh.patches[j];
+        Rgb expected(0.0);
+        for (uint32_t i : clustering.clusters[C].patches) {
+            Rgb L = Rgb(0.5) * sol.directMean[i] / kPi;  // C's total: it received nothing
+            expected += L * (kPi * visiblePatchFormFactor(mesh, mesh.patches[i], rec.centroid, rec.normal,
+                                                          s.solver.analyticDistance, embree));
+        }
+        INFO("patch " << j);
+        REQUIRE(luminance(sol.indirect[j]) == Approx(luminance(expected)).epsilon(1e-6));
+    }
+}
+
+TEST_CASE("closed box with clusters and corrections: emitted = absorbed + unshot within 0.5%", "[clusters]") {
+    auto run = [] {
+        app::PipelineOptions o;
+        o.quiet = true;
+        o.wantSensors = false;
+        o.overrides = {{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}};
+        return app::runPipeline(test::sourcePath("scenes/cube/cube.json"), o);
+    }();
+    REQUIRE(run.shooting.corrections > 0);
+    REQUIRE(run.shooting.clusterTransfers > 0);
+    auto b = energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    INFO("not accounted " << 100 * b.relativeError() << "%");
+    CHECK(std::abs(b.relativeError()) < 0.005);
+}
+
+TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]") {
+    app::PipelineOptions o;
+    o.quiet = true;
+    o.overrides = {{"radiosity.max_edge", "0.5"}, {"radiosity.stop_unshot", "0.01"}, {"radiosity.gather_levels", "2"}};
+    std::string path = test::sourcePath("scenes/cube/cube.json");
+    auto a = app::runPipeline(path, o);
+    auto b = app::runPipeline(path, o);
+    std::optional<app::PipelineRun> one;
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        one.emplace(app::runPipeline(path, o));
+    }
+    REQUIRE(a.clustering.multiPatchClusters() > 0);
+    CHECK(app::sensorCsv(a.sensors) == app::sensorCsv(b.sensors));
+    for (size_t i = 0; i < a.solution.indirect.size(); ++i) {
+        REQUIRE(a.solution.indirect[i] == b.solution.indirect[i]);
+        REQUIRE(luminance(one->solution.indirect[i]) ==
+                Approx(luminance(a.solution.indirect[i])).epsilon(1e-9));
+    }
+    for (size_t k = 0; k < a.sensors.size(); ++k)
+        CHECK(luminance(one->sensors[k].value.indirect) == Approx(luminance(a.sensors[k].value.indirect)).epsilon(1e-9));
+}
