@@ -1,4 +1,5 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
+#include <app/image_output.h>
 #include <app/pipeline.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
@@ -76,13 +77,32 @@ void printSolveSummary(const app::PipelineRun& run) {
                balance.emitted, balance.absorbed, balance.unshot, 100 * balance.relativeError());
 }
 
-int runSolve(const CommonArgs& a, const std::string& csv) {
-    if (!csv.empty()) checkWritable(csv);
+struct ReportArgs {
+    std::string convergence;  ///< --convergence FILE.csv
+    std::string report;       ///< --report FILE.json
+};
+
+void writeReports(const app::PipelineRun& run, const std::string& scene, const ReportArgs& r) {
+    if (!r.convergence.empty()) {
+        writeText(r.convergence, app::convergenceCsv(run));
+        fmt::print(stderr, "wrote {}\n", r.convergence);
+    }
+    if (!r.report.empty()) {
+        writeText(r.report, app::runReportJson(run, scene));
+        fmt::print(stderr, "wrote {}\n", r.report);
+    }
+}
+
+int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& reports) {
+    for (const auto& path : {csv, reports.convergence, reports.report})
+        if (!path.empty()) checkWritable(path);
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
     o.quiet = a.quiet;
+    o.logConvergence = !reports.convergence.empty();
     auto run = app::runPipeline(a.scene, o);
     printSensorsAndEnergy(run, csv);
+    writeReports(run, a.scene, reports);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
@@ -90,12 +110,10 @@ int runSolve(const CommonArgs& a, const std::string& csv) {
 
 int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, const std::string& csv,
               std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
-              const tonemap::DisplayOptions& displayIn) {
-    for (const auto& path : outputs) {
-        tonemap::checkImageFormat(path);
-        checkWritable(path);
-    }
-    if (!csv.empty()) checkWritable(csv);
+              const tonemap::DisplayOptions& displayIn, int snapshots, const ReportArgs& reports) {
+    app::checkImageOutputs(outputs);
+    for (const auto& path : {csv, reports.convergence, reports.report})
+        if (!path.empty()) checkWritable(path);
     tonemap::DisplayOptions display = displayIn;
     if (exposure != "auto") {
         try {
@@ -113,6 +131,10 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, cons
     if (seed) o.overrides.push_back({"render.seed", std::to_string(*seed)});
     o.quiet = a.quiet;
     o.wantImage = true;
+    o.logConvergence = !reports.convergence.empty();
+    o.snapshots = snapshots;
+    o.snapshotOutputs = outputs;
+    o.display = display;
     {
         // Fail before the solve if there is nothing to look through.
         auto desc = scene::loadScene(a.scene, o.overrides);
@@ -120,17 +142,11 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, cons
     }
     auto run = app::runPipeline(a.scene, o);
     run.report.begin("tone map + write");
-    for (const auto& path : outputs) {
-        if (tonemap::isHdrFormat(path)) {
-            tonemap::writeExr(path, *run.image, "rayrad rendering of " + a.scene + "; pixel values are luminance in cd/m^2");
-        } else {
-            auto rgb8 = tonemap::toDisplay(*run.image, display);
-            tonemap::writeDisplayImage(path, run.image->width, run.image->height, rgb8);
-        }
-        fmt::print(stderr, "wrote {}\n", path);
-    }
+    app::writeImages(outputs, *run.image, display, "rayrad rendering of " + a.scene);
+    for (const auto& path : outputs) fmt::print(stderr, "wrote {}\n", path);
     run.report.end();
     printSensorsAndEnergy(run, csv);
+    writeReports(run, a.scene, reports);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
@@ -177,7 +193,16 @@ int main(int argc, char** argv) {
     std::vector<std::string> outputs;
     std::string renderCsv, solveCsv, exposure = "auto";
     std::optional<int> spp, seed;
+    int snapshots = 0;
+    ReportArgs renderReports, solveReports;
     tonemap::DisplayOptions display;
+    auto addReports = [](CLI::App* cmd, ReportArgs& r) {
+        cmd->add_option("--convergence", r.convergence,
+                        "Log error against time at every push-pull as CSV (seconds, shots, unshot %, and the "
+                        "indirect error at every sensor with a reference: vertex values always, the gather each "
+                        "time the unshot energy has halved)");
+        cmd->add_option("--report", r.report, "Write a JSON account of the run (stages, time, memory, sensors)");
+    };
 
     auto* render = cli.add_subcommand("render", "Solve the lighting and render the scene's camera view");
     addCommon(render, renderArgs);
@@ -189,10 +214,15 @@ int main(int argc, char** argv) {
     render->add_option("--ocio-config", display.ocioConfig, "OpenColorIO config file (default: rayrad's embedded sRGB config)");
     render->add_option("--display", display.display, "OCIO display (default: the config's default)");
     render->add_option("--view", display.view, "OCIO view (default: the display's default)");
+    render->add_option("--snapshots", snapshots,
+                       "Also render K images during the solve (NAME.snap01.EXT ...), evenly spaced in log unshot energy")
+        ->check(CLI::Range(0, 100));
+    addReports(render, renderReports);
 
     auto* solve = cli.add_subcommand("solve", "Solve the lighting and report illuminance at the sensors (no image)");
     addCommon(solve, solveArgs);
     solve->add_option("--sensors", solveCsv, "Write the sensor table as CSV");
+    addReports(solve, solveReports);
 
     auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs");
     addCommon(info, infoArgs);
@@ -209,8 +239,9 @@ int main(int argc, char** argv) {
     if (common.threads > 0)
         threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common.threads);
     try {
-        if (render->parsed()) return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display);
-        if (solve->parsed()) return runSolve(solveArgs, solveCsv);
+        if (render->parsed())
+            return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, renderReports);
+        if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports);
         return runInfo(infoArgs);
     } catch (const InputError& e) {
         std::cerr << "rayrad: " << e.what() << "\n";

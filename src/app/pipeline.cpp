@@ -8,8 +8,12 @@
 #include <raytrace/camera.h>
 #include <raytrace/ray_tracer.h>
 
-#include <fmt/format.h>
+#include <app/image_output.h>
 
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <mutex>
 
 namespace rayrad::app {
@@ -20,13 +24,94 @@ scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Ove
 
 namespace {
 
-void solveSecondary(PipelineRun& run, bool quiet) {
+std::optional<double> errorPct(double value, const std::optional<double>& ref) {
+    if (!ref || *ref == 0) return std::nullopt;
+    return 100.0 * (value - *ref) / *ref;
+}
+
+/// What is done at each push-pull: the convergence log and the snapshots. The solution
+/// is copied so the solve itself is not disturbed; the time is not counted as solve time.
+class PushPullObserver {
+  public:
+    PushPullObserver(PipelineRun& run, const PipelineOptions& options) : m_run(run), m_options(options) {
+        for (const auto& s : run.scene.sensors)
+            if (s.refIndirect) {
+                m_sensors.push_back(&s);
+                run.convergenceSensors.push_back(s.name);
+            }
+    }
+
+    void operator()(const radiosity::RadiositySolution& solution) {
+        double fraction = solution.initialUnshotFlux > 0 ? solution.remainingUnshotFlux / solution.initialUnshotFlux : 0;
+        bool last = solution.converged;
+        bool log = m_options.logConvergence;
+        bool snapshot = m_options.snapshots > 0 && m_nextSnapshot <= m_options.snapshots &&
+                        (last || fraction <= std::pow(m_run.scene.solver.stopUnshot,
+                                                      double(m_nextSnapshot) / m_options.snapshots));
+        if (!log && !snapshot) return;
+        radiosity::RadiositySolution copy = solution;
+        radiosity::reconstructVertices(m_run.mesh, copy, m_run.scene.solver.linearReconstruction);
+        if (log) logRow(copy, fraction, last);
+        if (snapshot) writeSnapshot(copy);
+    }
+
+  private:
+    void logRow(const radiosity::RadiositySolution& copy, double fraction, bool last) {
+        ConvergenceRow row;
+        row.seconds = copy.seconds;
+        row.shots = copy.shots;
+        row.unshotFraction = fraction;
+        // The gather is costly: take it each time the unshot fraction has halved, and last.
+        bool gather = last || fraction <= 0.5 * m_lastGatherFraction;
+        std::optional<radiosity::Gatherer> gatherer;
+        if (gather) {
+            m_lastGatherFraction = fraction;
+            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
+                             m_run.scene.solver.gatherLevels);
+        }
+        for (const auto* s : m_sensors) {
+            auto where = radiosity::locateOnMesh(m_run.mesh, s->position, s->normal, 1e-6 * m_run.scene.diagonal());
+            std::optional<double> vertex;
+            if (where) vertex = luminance(radiosity::interpolateIndirect(m_run.mesh, copy, where->patch, where->u, where->v));
+            row.vertexErrorPct.push_back(vertex ? errorPct(*vertex, s->refIndirect) : std::nullopt);
+            std::optional<double> gathered;
+            if (gatherer) {
+                Vec3 x = where ? radiosity::nudgeInside(m_run.mesh, where->patch, s->position, 1e-6 * m_run.scene.diagonal())
+                               : s->position;
+                gathered = errorPct(luminance(gatherer->indirectAt(x, s->normal)), s->refIndirect);
+            }
+            row.gatheredErrorPct.push_back(gathered);
+        }
+        m_run.convergence.push_back(row);
+    }
+
+    void writeSnapshot(const radiosity::RadiositySolution& copy) {
+        raytrace::PinholeCamera camera(*m_run.scene.camera);
+        HdrImage image = raytrace::render(m_run.scene, m_run.mesh, copy, *m_run.lights, *m_run.embree, camera,
+                                          m_run.scene.render);
+        std::vector<std::string> paths;
+        for (const auto& p : m_options.snapshotOutputs) paths.push_back(snapshotPath(p, m_nextSnapshot));
+        writeImages(paths, image, m_options.display,
+                    fmt::format("rayrad snapshot {} after {} shots, {:.3g} s", m_nextSnapshot, copy.shots, copy.seconds));
+        for (const auto& p : paths) fmt::print(stderr, "wrote {}\n", p);
+        ++m_nextSnapshot;
+    }
+
+    PipelineRun& m_run;
+    const PipelineOptions& m_options;
+    std::vector<const scene::Sensor*> m_sensors;
+    double m_lastGatherFraction = 2.0;
+    int m_nextSnapshot = 1;
+};
+
+void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
     radiosity::ShootingSolver solver(run.scene, run.mesh, run.clustering, *run.embree, run.scene.solver,
                                      run.scene.clusters);
     solver.initialize(run.solution);
-    Progress progress("secondary pass", quiet);
+    Progress progress("secondary pass", options.quiet);
     double target = run.scene.solver.stopUnshot;
-    solver.solve(run.solution, {}, [&](const radiosity::RadiositySolution& s) {
+    PushPullObserver observer(run, options);
+    solver.solve(run.solution, std::ref(observer), [&](const radiosity::RadiositySolution& s) {
         double frac = s.initialUnshotFlux > 0 ? s.remainingUnshotFlux / s.initialUnshotFlux : 0;
         // Progress in log space from 1 down to the stopping threshold.
         double done = frac > 0 ? std::log(frac) / std::log(target) : 1.0;
@@ -57,7 +142,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         run.report.begin("clusters");
         run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters);
         run.report.begin("secondary pass (shooting)");
-        solveSecondary(run, options.quiet);
+        solveSecondary(run, options);
         run.report.begin("reconstruct vertices");
         radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
     } else {
@@ -102,6 +187,67 @@ std::string stagesSummary(const PipelineRun& run) {
         for (const auto& k : run.skipped) s += " " + k + ";";
     }
     return s + "\n";
+}
+
+}  // namespace rayrad::app
+
+namespace rayrad::app {
+
+std::string convergenceCsv(const PipelineRun& run) {
+    std::string s = "seconds,shots,unshot_pct";
+    for (const auto& n : run.convergenceSensors) s += fmt::format(",{0}_vertex_err_pct,{0}_gather_err_pct", n);
+    s += "\n";
+    auto cell = [](const std::optional<double>& v) { return v ? fmt::format("{:.6f}", *v) : std::string(); };
+    for (const auto& r : run.convergence) {
+        s += fmt::format("{:.6f},{},{:.6g}", r.seconds, r.shots, 100 * r.unshotFraction);
+        for (size_t k = 0; k < r.vertexErrorPct.size(); ++k)
+            s += "," + cell(r.vertexErrorPct[k]) + "," + cell(r.gatheredErrorPct[k]);
+        s += "\n";
+    }
+    return s;
+}
+
+std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) {
+    using nlohmann::json;
+    json j;
+    j["scene"] = sceneFile;
+    j["patches"] = run.mesh.patches.size();
+    j["clusters"] = {{"enabled", run.clustering.enabled},
+                     {"count", run.clustering.clusters.size()},
+                     {"multi_patch", run.clustering.multiPatchClusters()},
+                     {"voxel_size_m", run.clustering.voxelSize},
+                     {"max_illuminance_step_lx", run.maxIlluminanceStep}};
+    const auto& s = run.solution;
+    j["solve"] = {{"seconds", s.seconds},
+                  {"shots", s.shots},
+                  {"converged", s.converged},
+                  {"unshot_fraction", s.initialUnshotFlux > 0 ? s.remainingUnshotFlux / s.initialUnshotFlux : 0.0},
+                  {"cluster_transfers", run.shooting.clusterTransfers},
+                  {"patch_pairs", run.shooting.patchPairs},
+                  {"corrections", run.shooting.corrections},
+                  {"push_pulls", run.shooting.pushPulls}};
+    if (run.lights) {
+        auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
+        j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"unshot", b.unshot},
+                          {"not_accounted_pct", 100 * b.relativeError()}};
+    }
+    j["stages"] = json::array();
+    for (const auto& st : run.report.stages())
+        j["stages"].push_back({{"name", st.name}, {"seconds", st.seconds}, {"peak_bytes", st.peakBytes}});
+    j["total_seconds"] = run.report.totalSeconds();
+    j["peak_bytes"] = peakMemoryBytes();
+    j["sensors"] = json::array();
+    for (const auto& r : run.sensors) {
+        json e = {{"name", r.sensor.name},
+                  {"direct_lx", luminance(r.value.direct)},
+                  {"indirect_lx", luminance(r.value.indirect)}};
+        if (r.value.indirectVertex) e["indirect_vertex_lx"] = luminance(*r.value.indirectVertex);
+        if (r.sensor.refDirect) e["ref_direct_lx"] = *r.sensor.refDirect;
+        if (r.sensor.refIndirect) e["ref_indirect_lx"] = *r.sensor.refIndirect;
+        if (r.sensor.refTotal) e["ref_total_lx"] = *r.sensor.refTotal;
+        j["sensors"].push_back(e);
+    }
+    return j.dump(2) + "\n";
 }
 
 }  // namespace rayrad::app

@@ -12,6 +12,7 @@
 #include <raytrace/embree_scene.h>
 #include <scene/scene.h>
 #include <scene/scene_parser.h>
+#include <tonemap/display_transform.h>
 
 #include <memory>
 #include <optional>
@@ -25,6 +26,22 @@ struct PipelineOptions {
     bool wantImage = false;                  ///< render: run the ray tracer
     bool wantSensors = true;                 ///< evaluate the scene's sensors
     bool quiet = false;                      ///< no progress line
+    /// Log error against time at every push-pull (rayrad solve --convergence).
+    bool logConvergence = false;
+    /// Render this many images during the solve (rayrad render --snapshots), written
+    /// next to each of `snapshotOutputs` as NAME.snapKK.EXT.
+    int snapshots = 0;
+    std::vector<std::string> snapshotOutputs;
+    tonemap::DisplayOptions display;
+};
+
+/// One line of the convergence log, taken at a push-pull.
+struct ConvergenceRow {
+    double seconds = 0;                      ///< solve time so far (logging excluded)
+    int64_t shots = 0;
+    double unshotFraction = 0;               ///< of the flux the direct pass left
+    std::vector<std::optional<double>> vertexErrorPct;    ///< per referenced sensor
+    std::vector<std::optional<double>> gatheredErrorPct;  ///< only at some rows (costly)
 };
 
 /// Everything a run produced, and how long each stage took.
@@ -41,6 +58,8 @@ struct PipelineRun {
     std::optional<HdrImage> image;
     StageReport report;
     std::vector<std::string> skipped;  ///< "stage (reason)" for the stages not needed
+    std::vector<ConvergenceRow> convergence;
+    std::vector<std::string> convergenceSensors;  ///< names of the sensors with an indirect reference
 };
 
 /// Parses and builds the scene (stage "parse").
@@ -51,5 +70,13 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
 /// One-paragraph summary of the stages run and skipped, for stderr.
 std::string stagesSummary(const PipelineRun& run);
+
+/// The convergence log as CSV: seconds,shots,unshot_pct, then per referenced sensor
+/// NAME_vertex_err_pct and NAME_gather_err_pct (indirect light; empty where not computed).
+std::string convergenceCsv(const PipelineRun& run);
+
+/// A machine-readable account of the run (JSON): counts, stages with time and peak
+/// memory, solver statistics, energy balance, sensors with references and errors.
+std::string runReportJson(const PipelineRun& run, const std::string& sceneFile);
 
 }  // namespace rayrad::app
