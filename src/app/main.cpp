@@ -1,6 +1,7 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
 #include <app/image_output.h>
 #include <app/pipeline.h>
+#include <app/validate_cube.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
@@ -227,6 +228,16 @@ int main(int argc, char** argv) {
     auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs");
     addCommon(info, infoArgs);
 
+    app::ValidateOptions validateOptions;
+    auto* validate = cli.add_subcommand("validate", "Reproduce a validation from the paper on this machine");
+    auto* validateCube = validate->add_subcommand(
+        "cube", "The empty cube: mesh sweep and cluster sweep (paper Tables 2-3), ablations, error-vs-time plots");
+    validate->require_subcommand(1);
+    validateCube->add_flag("--quick", validateOptions.quick, "A subset at 1 200 and 4 800 triangles (about a minute)");
+    validateCube->add_option("--scene", validateOptions.scene, "The cube scene")->default_str(validateOptions.scene);
+    validateCube->add_option("--out", validateOptions.outDir, "Output directory")->default_str(validateOptions.outDir);
+    validateCube->add_option("--threads", validateOptions.threads, "Worker threads per run (default: all cores)");
+
     try {
         cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -234,6 +245,17 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : kExitInputError;
     }
 
+    if (validate->parsed()) {
+        try {
+            return app::validateCube(validateOptions);
+        } catch (const InputError& e) {
+            std::cerr << "rayrad: " << e.what() << "\n";
+            return kExitInputError;
+        } catch (const std::exception& e) {
+            std::cerr << "rayrad: internal error: " << e.what() << "\n";
+            return 1;
+        }
+    }
     CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : infoArgs;
     std::unique_ptr<tbb::global_control> threads;
     if (common.threads > 0)

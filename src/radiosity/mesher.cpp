@@ -138,7 +138,7 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
     for (size_t gi = 0; gi < scene.groups.size(); ++gi) {
         const SurfaceGroup& g = scene.groups[gi];
         int group = static_cast<int>(gi);
-        if (g.polygons.size() == 1 && g.polygons[0].size() == 4) {
+        if (g.polygons.size() == 1 && g.polygons[0].size() == 4 && options.premesh) {
             std::vector<Vec3> q;
             for (uint32_t i : g.polygons[0]) q.push_back(g.positions[i]);
             meshQuad(mesh, q, g.material, group, options, edge);
@@ -154,7 +154,18 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
             for (uint32_t i : poly) v.push_back(g.positions[i]);
             for (const auto& t : scene::triangulate(v)) tris.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});
         }
-        meshTriangles(mesh, g, tris, group, options, edge);
+        if (options.premesh) {
+            meshTriangles(mesh, g, tris, group, options, edge);
+            continue;
+        }
+        // Premeshing off: the input triangles are the patches, shape as given.
+        std::map<uint32_t, uint32_t> ids;
+        auto id = [&](uint32_t a) {
+            auto [it, added] = ids.emplace(a, static_cast<uint32_t>(mesh.vertices.size()));
+            if (added) mesh.vertices.push_back(g.positions[a]);
+            return it->second;
+        };
+        for (const auto& t : tris) addPatch(mesh, id(t[0]), id(t[1]), id(t[2]), g.material, group);
     }
     return mesh;
 }

@@ -308,6 +308,7 @@ void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out) {
 }
 
 void parseRadiosity(JsonObject r, SceneDesc& d) {
+    d.meshing.premesh = r.boolean("premesh").value_or(d.meshing.premesh);
     d.meshing.maxEdge = r.nonNegative("max_edge", d.meshing.maxEdge);
     d.meshing.trianglesPerSurface = r.integer("triangles_per_surface", d.meshing.trianglesPerSurface, 0, 10'000'000);
     d.meshing.maxCellAspect = r.number("max_cell_aspect", d.meshing.maxCellAspect);

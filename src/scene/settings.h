@@ -8,6 +8,9 @@ namespace rayrad::scene {
 
 /// Premeshing: how input polygons become radiosity patches (`radiosity.max_edge`, ...).
 struct MeshingOptions {
+    /// false: no premeshing — each input polygon is only triangulated (a quad gives two
+    /// triangles), for comparisons with badly shaped input.
+    bool premesh = true;
     /// Longest allowed triangle leg (grid cell side) in metres; 0 = 1/20 of the scene's
     /// bounding-box diagonal.
     double maxEdge = 0.0;
