@@ -245,22 +245,12 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : kExitInputError;
     }
 
-    if (validate->parsed()) {
-        try {
-            return app::validateCube(validateOptions);
-        } catch (const InputError& e) {
-            std::cerr << "rayrad: " << e.what() << "\n";
-            return kExitInputError;
-        } catch (const std::exception& e) {
-            std::cerr << "rayrad: internal error: " << e.what() << "\n";
-            return 1;
-        }
-    }
-    CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : infoArgs;
-    std::unique_ptr<tbb::global_control> threads;
-    if (common.threads > 0)
-        threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common.threads);
     try {
+        if (validate->parsed()) return app::validateCube(validateOptions);
+        CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : infoArgs;
+        std::unique_ptr<tbb::global_control> threads;
+        if (common.threads > 0)
+            threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common.threads);
         if (render->parsed())
             return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, renderReports);
         if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports);

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# rayrad validate cube --quick end to end: every run succeeds, the tables and plots are
+# written, and the default configuration's gathered indirect error is within 1 % at A, B, C.
+set -u
+rayrad="$1"
+src="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$rayrad" validate cube --quick --scene "$src/scenes/cube/cube.json" --out "$work" > "$work/stdout.txt" 2>&1
+rc=$?
+failures=0
+passed=0
+check() {
+    local name="$1"
+    shift
+    if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
+}
+check "exit 0" test "$rc" -eq 0
+check "tables printed" grep -q "### Cluster sweep at 4800 triangles" "$work/stdout.txt"
+check "mesh plot" test -s "$work/error_vs_time_mesh.png"
+check "cluster plot" test -s "$work/error_vs_time_clusters.png"
+check "11 result rows" test "$(tail -n +2 "$work/results.csv" | wc -l)" -eq 11
+# results.csv: A/B/C gather errors are columns 14, 17, 20.
+row=$(grep '^clusters,1 %,4800,' "$work/results.csv")
+for col in 14 17 20; do
+    err=$(echo "$row" | cut -d, -f$col)
+    check "gathered error column $col = $err within 1%" awk -v e="$err" 'BEGIN { exit !(e > -1 && e < 1) }'
+done
+[ "$failures" -eq 0 ] || cat "$work/stdout.txt"
+echo "validate --quick: $passed passed, $failures failed"
+[ "$failures" -eq 0 ]
