@@ -107,22 +107,15 @@ void ShootingSolver::pull(size_t c, const RadiositySolution& s) {
 }
 
 void ShootingSolver::addPending(const Cluster& source, size_t receiver, const Rgb& e) {
-    // Inlined receiverShape() (this is the hot path of cluster→cluster shots).
     const Cluster& D = m_clustering.clusters[receiver];
-    auto kernel = [&](const Vec3& x, const Vec3& normal) {  // cosθ_x cosθ_C / r²
-        Vec3 d = source.centroid - x;
-        double r2 = glm::dot(d, d);
-        double cx = glm::dot(normal, d), cs = -glm::dot(source.normal, d);
-        return (r2 > 0 && cx > 0 && cs > 0) ? cx * cs / (r2 * r2) : 0.0;
-    };
-    double atCentre = m_clusterOptions.receiverDetail ? kernel(D.centroid, D.normal) : 0.0;
-    bool uniform = atCentre <= 0 || D.patches.size() == 1;
+    thread_local std::vector<double> shape;
+    receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
     Rgb reflected(0.0);
-    for (uint32_t j : D.patches) {
-        const Patch& p = m_mesh.patches[j];
-        Rgb ej = uniform ? e : e * (kernel(p.centroid, p.normal) / atCentre);
+    for (size_t k = 0; k < D.patches.size(); ++k) {
+        uint32_t j = D.patches[k];
+        Rgb ej = e * shape[k];
         m_pending[j] += ej;
-        reflected += m_reflectance[j] * ej * p.area;
+        reflected += m_reflectance[j] * ej * m_mesh.patches[j].area;
     }
     m_light[receiver].pendingReflected += reflected / (kPi * D.area);
 }

@@ -77,7 +77,6 @@ struct Scene {
     double diagonal() const { return glm::length(boundsMax - boundsMin); }
     size_t polygonCount() const;
     bool hasReflectance() const;
-    bool hasAreaLights() const;
 };
 
 /// Builds world-space geometry (transforms, boxes, spheres, meshes through assimp) and

@@ -35,12 +35,6 @@ bool Scene::hasReflectance() const {
     return false;
 }
 
-bool Scene::hasAreaLights() const {
-    for (const auto& g : groups)
-        if (materials[g.material].isEmissive()) return true;
-    return false;
-}
-
 namespace {
 
 Vec3 transformPoint(const glm::dmat4& m, const Vec3& p) { return Vec3(m * glm::dvec4(p, 1.0)); }
