@@ -1,0 +1,101 @@
+// Direct light from point, spot and area lights against closed forms; mesh import.
+#include <radiosity/direct_light.h>
+#include <radiosity/mesher.h>
+#include <raytrace/embree_scene.h>
+#include <scene/scene.h>
+#include <scene/scene_parser.h>
+
+#include "test_support.h"
+
+#include <cmath>
+
+using namespace rayrad;
+
+namespace {
+
+/// A scene with a floor quad far below everything (so visibility is trivially clear).
+scene::Scene withLights(const std::string& lights, const std::string& extraObjects = "",
+                        const std::string& extraMaterials = "") {
+    std::string json = R"({"materials": {"m": {"reflectance": 0.5})" + extraMaterials + R"(},
+        "objects": [{"type": "quad", "material": "m", "vertices": [[-50,-50,-10],[50,-50,-10],[50,50,-10],[-50,50,-10]]})" +
+                       extraObjects + R"(],
+        "lights": [)" + lights + "]}";
+    return scene::buildScene(scene::parseScene(json, "t.json"));
+}
+
+struct Setup {
+    scene::Scene scene;
+    radiosity::PatchMesh mesh;
+    std::unique_ptr<raytrace::EmbreeScene> embree;
+    std::unique_ptr<radiosity::DirectLight> lights;
+    explicit Setup(scene::Scene s) : scene(std::move(s)) {
+        mesh = radiosity::premesh(scene, scene.meshing);
+        embree = std::make_unique<raytrace::EmbreeScene>(mesh, 1e-5 * scene.diagonal());
+        lights = std::make_unique<radiosity::DirectLight>(scene);
+    }
+    double at(const Vec3& x, const Vec3& n, int samples = 64) const {
+        return luminance(lights->illuminance(x, n, *embree, samples, nullptr));
+    }
+};
+
+}  // namespace
+
+TEST_CASE("point light: E = I cos(theta) / d^2", "[direct]") {
+    Setup s(withLights(R"({"type": "point", "position": [0, 0, 3], "intensity_cd": 900})"));
+    CHECK(s.at({0, 0, 0}, {0, 0, 1}) == Approx(100.0));
+    CHECK(s.at({4, 0, 0}, {0, 0, 1}) == Approx(900.0 * (3.0 / 5.0) / 25.0));
+    CHECK(s.at({0, 0, 0}, {0, 0, -1}) == 0.0);  // facing away
+    CHECK(s.lights->emittedFlux() == Approx(4 * kPi * 900));
+}
+
+TEST_CASE("spot light: full inside the inner cone, zero outside the outer, flux by integration", "[direct]") {
+    Setup s(withLights(R"({"type": "spot", "position": [0, 0, 2], "direction": [0, 0, -1], "intensity_cd": 400,
+                          "inner_angle_deg": 20, "outer_angle_deg": 30})"));
+    CHECK(s.at({0, 0, 0}, {0, 0, 1}) == Approx(100.0));  // on the axis: I / d²
+    double inside = 2 * std::tan(glm::radians(15.0));
+    double d2 = 4 + inside * inside;
+    CHECK(s.at({inside, 0, 0}, {0, 0, 1}) == Approx(400.0 * (2 / std::sqrt(d2)) / d2));
+    CHECK(s.at({2 * std::tan(glm::radians(31.0)), 0, 0}, {0, 0, 1}) == 0.0);
+    // Φ = 2π ∫ I(θ) sinθ dθ: between the flux of a 20° and a 30° hard-edged cone.
+    double flux = s.lights->emittedFlux();
+    CHECK(flux > 2 * kPi * 400 * (1 - std::cos(glm::radians(20.0))));
+    CHECK(flux < 2 * kPi * 400 * (1 - std::cos(glm::radians(30.0))));
+}
+
+TEST_CASE("area light: a square emitter above a point gives pi L F (catalogue B-1)", "[direct]") {
+    // Emitter [0,1]×[0,1] at z = 1 facing down, L = 1000 cd/m²; receiver at the origin.
+    std::string emitter = R"(, {"type": "quad", "material": "lamp", "vertices": [[0,0,1],[0,1,1],[1,1,1],[1,0,1]]})";
+    std::string lamp = R"(, "lamp": {"type": "emissive", "luminance_cd_m2": 1000})";
+    Setup s(withLights(R"({"type": "point", "position": [0, 0, -20], "intensity_cd": 1e-9})", emitter, lamp));
+    double A = 1.0, B = 1.0;
+    double F = (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
+                B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) / (2 * kPi);
+    CHECK(s.at({0, 0, 0}, {0, 0, 1}) == Approx(kPi * 1000 * F).epsilon(1e-9));
+    CHECK(s.lights->emittedFlux() == Approx(kPi * 1000 * 1.0 + 4 * kPi * 1e-9));  // Φ = π L A
+}
+
+TEST_CASE("area light: an occluder halfway casts a shadow", "[direct]") {
+    std::string emitter = R"(, {"type": "quad", "material": "lamp", "vertices": [[-0.1,-0.1,2],[-0.1,0.1,2],[0.1,0.1,2],[0.1,-0.1,2]]},
+                              {"type": "quad", "material": "m", "vertices": [[-1,-1,1],[1,-1,1],[1,1,1],[-1,1,1]]})";
+    std::string lamp = R"(, "lamp": {"type": "emissive", "luminance_cd_m2": 1000})";
+    Setup s(withLights(R"({"type": "point", "position": [0, 0, -20], "intensity_cd": 1e-9})", emitter, lamp));
+    CHECK(s.at({0, 0, 0}, {0, 0, 1}) < 1e-6);
+    CHECK(s.at({5, 0, 0}, {0, 0, 1}) > 0.0);  // sees the lamp past the occluder's edge
+}
+
+TEST_CASE("OBJ meshes load through assimp with their transform", "[scene]") {
+    std::string json = R"({"materials": {"m": {"reflectance": 0.5}},
+        "objects": [{"type": "mesh", "material": "m", "file": "tetrahedron.obj",
+                     "transform": {"scale": 2, "translate": [10, 0, 0]}}],
+        "lights": [{"type": "point", "position": [0, 0, 5], "intensity_cd": 1}]})";
+    auto s = scene::buildScene(scene::parseScene(json, test::sourcePath("tests/data/scene.json")));
+    REQUIRE(s.groups.size() == 1);
+    CHECK(s.groups[0].polygons.size() == 4);
+    CHECK(s.boundsMin == Vec3(10, 0, 0));
+    CHECK(s.boundsMax == Vec3(12, 2, 2));
+    auto mesh = radiosity::premesh(s, s.meshing);
+    // Closed and outward: the normals point away from the centroid.
+    Vec3 c(10.5, 0.5, 0.5);
+    for (const auto& p : mesh.patches) REQUIRE(glm::dot(p.normal, p.centroid - c) > 0);
+    CHECK(mesh.totalArea() == Approx(4 * (1.5 + std::sqrt(3.0) / 2)));
+}
