@@ -2,6 +2,7 @@
 
 #include <core/progress.h>
 #include <radiosity/direct_pass.h>
+#include <radiosity/edge_vertices.h>
 #include <radiosity/gather.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
@@ -145,6 +146,9 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         solveSecondary(run, options);
         run.report.begin("reconstruct vertices");
         radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
+        if (run.scene.solver.edgeGatherLevels > 0)
+            run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
+                                                             *run.embree, run.scene.solver.edgeGatherLevels);
     } else {
         run.skipped.push_back("secondary pass (no surface reflects light)");
     }

@@ -51,6 +51,7 @@ struct PipelineRun {
     radiosity::Clustering clustering;
     radiosity::ShootingStatistics shooting;
     double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
+    size_t edgeVertices = 0;        ///< vertices whose value came from a point gather
     std::unique_ptr<raytrace::EmbreeScene> embree;
     std::unique_ptr<radiosity::DirectLight> lights;
     radiosity::RadiositySolution solution;

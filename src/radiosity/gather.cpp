@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>  // parallel_deterministic_reduce: same sum for any thread count
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -16,7 +17,6 @@ namespace {
 constexpr double kNearDiameters = 2.0;
 /// Sub-triangles are split while closer to x than this many of their own sizes.
 constexpr double kSplitRatio = 2.0;
-constexpr int kMaxSplitDepth = 12;
 /// A cluster farther than this many of its diameters shares one visibility ray.
 constexpr double kClusterVisibilityDiameters = 2.0;
 }  // namespace
@@ -58,9 +58,22 @@ Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double dist
 }
 
 Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                   const RadiositySolution& solution, const Visibility& vis, int levels)
+                   const RadiositySolution& solution, const Visibility& vis, int levels, double farClusterDiameters,
+                   int maxSplitDepth)
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_levels(levels),
-      m_nudge(1e-6 * scene.diagonal()) {}
+      m_nudge(1e-6 * scene.diagonal()), m_farClusterDiameters(farClusterDiameters),
+      m_maxSplitDepth(maxSplitDepth) {
+    for (const auto& c : clustering.clusters) {
+        Rgb L(0.0);
+        double size = 0;
+        for (uint32_t j : c.patches) {
+            L += solution.reflectedLuminance(scene, mesh, j) * mesh.patches[j].area;
+            size = std::max(size, mesh.patches[j].diameter);
+        }
+        m_clusterLuminance.push_back(L / c.area);
+        m_clusterPatchSize.push_back(size);
+    }
+}
 
 Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
     uint32_t v = m_mesh.patches[patch].v[corner];
@@ -79,7 +92,7 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
     Vec3 c = (p[0] + p[1] + p[2]) / 3.0;
     double size = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
     double dist = std::min({glm::length(c - x), glm::length(p[0] - x), glm::length(p[1] - x), glm::length(p[2] - x)});
-    if (depth < kMaxSplitDepth && dist < kSplitRatio * size) {
+    if (depth < m_maxSplitDepth && dist < kSplitRatio * size) {
         Vec3 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
         Rgb l01 = 0.5 * (L[0] + L[1]), l12 = 0.5 * (L[1] + L[2]), l20 = 0.5 * (L[2] + L[0]);
         const Vec3 t[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};
@@ -94,57 +107,94 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
 }
 
 Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level) {
-    // Near patches get linear luminance from refined corner values (computed serially
-    // first: the memo is not thread-safe), the rest a patch-constant luminance.
-    std::vector<std::pair<size_t, std::array<Rgb, 3>>> near;
-    if (level > 0) {
-        for (size_t j = 0; j < m_mesh.patches.size(); ++j) {
-            const Patch& p = m_mesh.patches[j];
-            double r = kNearDiameters * p.diameter;
-            Vec3 d = p.centroid - x;
-            if (glm::dot(d, d) > r * r) continue;
-            const Rgb& rho = m_scene.materials[p.material].reflectance;
-            if (rho == Rgb(0.0)) continue;
-            Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
-            if (formFactorToPolygon(x, n, v, 3, p.normal) <= 0) continue;
-            std::array<Rgb, 3> L;
-            for (int k = 0; k < 3; ++k)
-                L[k] = rho * (m_solution.directCorner[3 * j + k] + cornerIndirect(j, k, level - 1)) / kPi;
-            near.emplace_back(j, L);
+    if (level <= 0) return gatherWith(x, n, nullptr, true);
+    // The memo is filled while the near list is built (serially); the sum runs in parallel.
+    CornerSource corners = [&](size_t patch, int corner) { return cornerIndirect(patch, corner, level - 1); };
+    return gatherWith(x, n, &corners, true);
+}
+
+Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel) const {
+    // Near patches get linear luminance from corner values, the rest a patch-constant one.
+    struct Near {
+        uint32_t patch;
+        std::array<Rgb, 3> L;
+    };
+    std::vector<Near> near;
+    std::vector<uint32_t> nearClusters;
+    if (cornerIndirectOf) {
+        for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
+            const Cluster& C = m_clustering.clusters[c];
+            // Only clusters that can hold a patch within kNearDiameters of x.
+            double reach = 0.5 * C.diameter + kNearDiameters * m_clusterPatchSize[c];
+            if (glm::dot(C.centroid - x, C.centroid - x) > reach * reach) continue;
+            size_t before = near.size();
+            for (uint32_t j : C.patches) {
+                const Patch& p = m_mesh.patches[j];
+                double r = kNearDiameters * p.diameter;
+                Vec3 d = p.centroid - x;
+                if (glm::dot(d, d) > r * r) continue;
+                const Rgb& rho = m_scene.materials[p.material].reflectance;
+                if (rho == Rgb(0.0)) continue;
+                Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+                if (formFactorToPolygon(x, n, v, 3, p.normal) <= 0) continue;
+                Near e{j, {}};
+                for (int k = 0; k < 3; ++k)
+                    e.L[k] = rho * (m_solution.directCorner[3 * j + k] + (*cornerIndirectOf)(j, k)) / kPi;
+                near.push_back(e);
+            }
+            if (near.size() > before) nearClusters.push_back(static_cast<uint32_t>(c));
         }
     }
-    std::vector<int> nearIndex(near.empty() ? 0 : m_mesh.patches.size(), -1);
-    for (size_t k = 0; k < near.size(); ++k) nearIndex[near[k].first] = static_cast<int>(k);
 
-    // Sum over clusters: near ones patch by patch with their own rays, far ones with one
-    // shared ray (form factors still per member). Deterministic for any thread count.
-    const auto& clusters = m_clustering.clusters;
-    return tbb::parallel_deterministic_reduce(
-        tbb::blocked_range<size_t>(0, clusters.size(), 16), Rgb(0.0),
-        [&](const tbb::blocked_range<size_t>& r, Rgb sum) {
-            for (size_t c = r.begin(); c != r.end(); ++c) {
-                const Cluster& C = clusters[c];
-                double far = kClusterVisibilityDiameters * C.diameter;
-                bool shared = C.patches.size() > 1 && glm::dot(C.centroid - x, C.centroid - x) > far * far;
-                Rgb clusterSum(0.0);
-                for (uint32_t j : C.patches) {
-                    const Patch& p = m_mesh.patches[j];
-                    Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
-                    if (!nearIndex.empty() && nearIndex[j] >= 0) {
-                        sum += integrateLinear(x, n, v, near[nearIndex[j]].second.data(), p.normal, 0);
-                        continue;
-                    }
-                    Rgb L = m_solution.reflectedLuminance(m_scene, m_mesh, j);
-                    if (L == Rgb(0.0)) continue;
-                    // Analytic within analyticDistance patch diameters, point approximation beyond.
-                    double f = patchFormFactor(m_mesh, p, x, n, m_scene.solver.analyticDistance);
-                    if (f <= 0) continue;
-                    if (shared) clusterSum += L * (kPi * f);
-                    else if (m_vis.visible(x, p.centroid)) sum += L * (kPi * f);  // E = π L F
+    // Sum over clusters: near patches by sub-triangles, other patches with their own rays
+    // when close, far clusters with one shared ray (form factors still per member), or
+    // as one source beyond m_farClusterDiameters when asked.
+    auto contribution = [&](size_t c) {
+        const Cluster& C = m_clustering.clusters[c];
+        double d2 = glm::dot(C.centroid - x, C.centroid - x);
+        double asOne = m_farClusterDiameters * C.diameter;
+        if (asOne > 0 && C.patches.size() > 1 && d2 > asOne * asOne) {
+            double f = formFactorPointApprox(x, n, C.centroid, C.normal, C.projectedArea);
+            bool seen = f > 0 && m_vis.visible(x, m_mesh.patches[C.samples[0]].centroid);
+            return seen ? Rgb(m_clusterLuminance[c] * (kPi * f)) : Rgb(0.0);  // π L_C F V
+        }
+        bool hasNear = std::find(nearClusters.begin(), nearClusters.end(), c) != nearClusters.end();
+        double far = kClusterVisibilityDiameters * C.diameter;
+        bool shared = C.patches.size() > 1 && d2 > far * far;
+        Rgb sum(0.0), sharedSum(0.0);
+        for (uint32_t j : C.patches) {
+            const Patch& p = m_mesh.patches[j];
+            Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+            if (hasNear) {
+                auto it = std::find_if(near.begin(), near.end(), [j](const Near& e) { return e.patch == j; });
+                if (it != near.end()) {
+                    sum += integrateLinear(x, n, v, it->L.data(), p.normal, 0);
+                    continue;
                 }
-                if (shared && clusterSum != Rgb(0.0) && m_vis.visible(x, m_mesh.patches[C.samples[0]].centroid))
-                    sum += clusterSum;
             }
+            Rgb L = m_solution.reflectedLuminance(m_scene, m_mesh, j);
+            if (L == Rgb(0.0)) continue;
+            // Analytic within analyticDistance patch diameters, point approximation beyond.
+            double f = patchFormFactor(m_mesh, p, x, n, m_scene.solver.analyticDistance);
+            if (f <= 0) continue;
+            if (shared) sharedSum += L * (kPi * f);
+            else if (m_vis.visible(x, p.centroid)) sum += L * (kPi * f);  // E = π L F
+        }
+        if (shared && sharedSum != Rgb(0.0) && m_vis.visible(x, m_mesh.patches[C.samples[0]].centroid))
+            sum += sharedSum;
+        return sum;
+    };
+    const size_t count = m_clustering.clusters.size();
+    if (!parallel) {
+        Rgb sum(0.0);
+        for (size_t c = 0; c < count; ++c) sum += contribution(c);
+        return sum;
+    }
+    // Deterministic for any thread count.
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<size_t>(0, count, 16), Rgb(0.0),
+        [&](const tbb::blocked_range<size_t>& r, Rgb sum) {
+            for (size_t c = r.begin(); c != r.end(); ++c) sum += contribution(c);
             return sum;
         },
         [](const Rgb& a, const Rgb& b) { return a + b; });

@@ -8,6 +8,7 @@
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -44,11 +45,22 @@ class Gatherer {
     /// Clusters farther than a few of their diameters from the point share one
     /// visibility ray (to their sample patch nearest the centroid); their members' form
     /// factors are still summed one by one.
+    /// `farClusterDiameters` > 0: clusters farther than that many of their diameters
+    /// count as one source (their mean reflected luminance, projected area, centroid) —
+    /// cheaper, for the many gathers at mesh vertices; 0 keeps every patch (sensors).
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-             const RadiositySolution& solution, const Visibility& vis, int levels);
+             const RadiositySolution& solution, const Visibility& vis, int levels, double farClusterDiameters = 0,
+             int maxSplitDepth = 12);
 
     /// Indirect illuminance (lx, RGB) at x with unit normal n.
     Rgb indirectAt(const Vec3& x, const Vec3& n) { return gather(x, n, m_levels); }
+
+    /// Indirect illuminance of a patch corner (patch, corner index) — lx, RGB.
+    using CornerSource = std::function<Rgb(size_t, int)>;
+    /// One gather at x. With `cornerIndirectOf`, near patches get linear luminance from
+    /// exact direct light plus these indirect corner values; without, patch-constant.
+    /// `parallel` false: a serial sum (for callers that are parallel themselves).
+    Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel) const;
 
   private:
     Rgb gather(const Vec3& x, const Vec3& n, int level);
@@ -63,6 +75,10 @@ class Gatherer {
     const Visibility& m_vis;
     int m_levels;
     double m_nudge;
+    double m_farClusterDiameters;
+    int m_maxSplitDepth;  ///< sub-triangle refinement toward the point
+    std::vector<Rgb> m_clusterLuminance;    ///< area-weighted mean reflected luminance per cluster
+    std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect
 };
 

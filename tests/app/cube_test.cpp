@@ -51,3 +51,16 @@ TEST_CASE("cube 4800: the EXR pixel at A reads rho (E_dir + E_ind) / pi = 892.3 
     CHECK(expected == Approx(892.3).epsilon(1e-4));
     CHECK(L == Approx(expected).epsilon(0.03));
 }
+
+TEST_CASE("cube 4800: with edge vertices gathered the vertex values at A B C are within 1.5%", "[cube][slow]") {
+    app::PipelineOptions o;
+    o.quiet = true;
+    o.overrides = {{"radiosity.edge_gather_levels", "4"}};
+    auto run = app::runPipeline(test::sourcePath("scenes/cube/cube.json"), o);
+    REQUIRE(run.edgeVertices > 0);
+    for (const auto& s : run.sensors) {
+        INFO(s.sensor.name << " vertex " << luminance(*s.value.indirectVertex) << " reference " << *s.sensor.refIndirect);
+        REQUIRE(s.value.indirectVertex.has_value());
+        CHECK(luminance(*s.value.indirectVertex) == Approx(*s.sensor.refIndirect).epsilon(0.015));
+    }
+}

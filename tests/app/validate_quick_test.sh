@@ -19,7 +19,7 @@ check "exit 0" test "$rc" -eq 0
 check "tables printed" grep -q "### Cluster sweep at 4800 triangles" "$work/stdout.txt"
 check "mesh plot" test -s "$work/error_vs_time_mesh.png"
 check "cluster plot" test -s "$work/error_vs_time_clusters.png"
-check "11 result rows" test "$(tail -n +2 "$work/results.csv" | wc -l)" -eq 11
+check "12 result rows" test "$(tail -n +2 "$work/results.csv" | wc -l)" -eq 12
 # results.csv: A/B/C gather errors are columns 14, 17, 20.
 row=$(grep '^clusters,1 %,4800,' "$work/results.csv")
 for col in 14 17 20; do

@@ -144,7 +144,8 @@ TEST_CASE("closed box with clusters and corrections: emitted = absorbed + unshot
 TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]") {
     app::PipelineOptions o;
     o.quiet = true;
-    o.overrides = {{"radiosity.max_edge", "0.5"}, {"radiosity.stop_unshot", "0.01"}, {"radiosity.gather_levels", "2"}};
+    o.overrides = {{"radiosity.max_edge", "0.5"}, {"radiosity.stop_unshot", "0.01"}, {"radiosity.gather_levels", "2"},
+                   {"radiosity.edge_gather_levels", "2"}};
     std::string path = test::sourcePath("scenes/cube/cube.json");
     auto a = app::runPipeline(path, o);
     auto b = app::runPipeline(path, o);
@@ -162,4 +163,10 @@ TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]
     }
     for (size_t k = 0; k < a.sensors.size(); ++k)
         CHECK(luminance(one->sensors[k].value.indirect) == Approx(luminance(a.sensors[k].value.indirect)).epsilon(1e-9));
+    REQUIRE(a.edgeVertices > 0);
+    for (size_t v = 0; v < a.solution.vertexIndirect.size(); ++v) {
+        REQUIRE(a.solution.vertexIndirect[v] == b.solution.vertexIndirect[v]);
+        REQUIRE(luminance(one->solution.vertexIndirect[v]) ==
+                Approx(luminance(a.solution.vertexIndirect[v])).epsilon(1e-9));
+    }
 }

@@ -1,0 +1,21 @@
+// Vertex values along concave edges and corners from a point gather, not extrapolation.
+#pragma once
+
+#include <core/visibility.h>
+#include <radiosity/clusters.h>
+#include <radiosity/patch_mesh.h>
+#include <radiosity/solution.h>
+#include <scene/scene.h>
+
+namespace rayrad::radiosity {
+
+/// Vertices where another surface meets theirs within a patch diameter and faces them
+/// (the concave edges and corners of a room): the indirect light falls steeply there,
+/// and no reconstruction from centroid values follows it. Their vertex values are
+/// replaced by a final gather at the vertex, iterated `levels` rounds (each round uses
+/// the previous round's values at the corners of near patches, as the sensor gather's
+/// levels do). Returns the number of vertices refined.
+size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+                          RadiositySolution& solution, const Visibility& vis, int levels);
+
+}  // namespace rayrad::radiosity
