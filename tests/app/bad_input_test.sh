@@ -4,10 +4,7 @@
 set -u
 rayrad="$1"
 src="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-passed=0
+source "$(dirname "$0")/test_lib.sh"
 
 # expect NAME EXPECTED_SUBSTRING -- ARGS...
 expect() {
@@ -71,5 +68,4 @@ echo keep > "$work/keep.png"
 "$rayrad" render "$work/negative.json" -o "$work/keep.png" >/dev/null 2>&1
 if [ "$(cat "$work/keep.png")" != keep ]; then echo "FAIL existing output was overwritten"; failures=$((failures + 1)); else passed=$((passed + 1)); fi
 
-echo "bad input: $passed passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish "bad input"

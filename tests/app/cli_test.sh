@@ -3,15 +3,7 @@
 set -u
 rayrad="$1"
 src="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-passed=0
-check() {  # check NAME CONDITION...
-    local name="$1"
-    shift
-    if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
-}
+source "$(dirname "$0")/test_lib.sh"
 
 cube="$src/scenes/cube/cube.json"
 "$rayrad" info "$cube" > "$work/info.txt"
@@ -35,5 +27,4 @@ check "no temporary files left" test "$(ls -a "$work" | grep -c '\.tmp')" -eq 0
 "$rayrad" --help > "$work/help.txt"
 check "help lists commands" grep -q "render" "$work/help.txt"
 
-echo "cli: $passed passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish cli

@@ -4,17 +4,9 @@
 set -u
 rayrad="$1"
 src="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/test_lib.sh"
 "$rayrad" validate cube --quick --scene "$src/scenes/cube/cube.json" --out "$work" > "$work/stdout.txt" 2>&1
 rc=$?
-failures=0
-passed=0
-check() {
-    local name="$1"
-    shift
-    if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
-}
 check "exit 0" test "$rc" -eq 0
 check "tables printed" grep -q "### Cluster sweep at 4800 triangles" "$work/stdout.txt"
 check "mesh plot" test -s "$work/error_vs_time_mesh.png"
@@ -27,5 +19,4 @@ for col in 14 17 20; do
     check "gathered error column $col = $err within 1%" awk -v e="$err" 'BEGIN { exit !(e > -1 && e < 1) }'
 done
 [ "$failures" -eq 0 ] || cat "$work/stdout.txt"
-echo "validate --quick: $passed passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish "validate --quick"

@@ -4,10 +4,28 @@
 
 #include "test_support.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
 
 using namespace rayrad;
+
+namespace {
+
+/// The Cornell box rendered small: `size` pixels square, `spp` samples, coarse mesh.
+app::PipelineRun renderCornell(int size, int spp, const std::string& maxEdge) {
+    app::PipelineOptions o;
+    o.quiet = true;
+    o.wantImage = true;
+    o.wantSensors = false;
+    o.overrides = {{"camera.resolution", fmt::format("[{0}, {0}]", size)},
+                   {"render.spp", std::to_string(spp)},
+                   {"radiosity.max_edge", maxEdge}};
+    return app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), o);
+}
+
+}  // namespace
 
 // Threshold (documented in docs/validation.md): a pixel fails when its luminance differs
 // from the reference by more than 2% + 0.5 cd/m² (tiny absolute floor for black pixels);
@@ -15,12 +33,7 @@ using namespace rayrad;
 // on the machine that made the reference no pixel fails; the margin absorbs differences
 // in floating-point libraries between machines.
 TEST_CASE("Cornell box 64x64 matches the golden image", "[image]") {
-    app::PipelineOptions o;
-    o.quiet = true;
-    o.wantImage = true;
-    o.wantSensors = false;
-    o.overrides = {{"camera.resolution", "[64, 64]"}, {"render.spp", "4"}, {"radiosity.max_edge", "0.1"}};
-    auto run = app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), o);
+    auto run = renderCornell(64, 4, "0.1");
     REQUIRE(run.image);
     std::string refPath = test::sourcePath("tests/data/cornell_64.exr");
     if (std::getenv("RAYRAD_UPDATE_GOLDEN")) tonemap::writeExr(refPath, *run.image, "golden image for golden_image_test");
@@ -42,12 +55,7 @@ TEST_CASE("Cornell box 64x64 matches the golden image", "[image]") {
 }
 
 TEST_CASE("the same seed gives a bit-identical image", "[image]") {
-    app::PipelineOptions o;
-    o.quiet = true;
-    o.wantImage = true;
-    o.wantSensors = false;
-    o.overrides = {{"camera.resolution", "[24, 24]"}, {"render.spp", "2"}, {"radiosity.max_edge", "0.2"}};
-    auto a = app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), o);
-    auto b = app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), o);
+    auto a = renderCornell(24, 2, "0.2");
+    auto b = renderCornell(24, 2, "0.2");
     CHECK(a.image->pixels == b.image->pixels);
 }
