@@ -66,7 +66,8 @@ void printSensorsAndEnergy(const app::PipelineRun& run, const std::string& csvPa
 void printSolveSummary(const app::PipelineRun& run) {
     const auto& s = run.solution;
     auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
-    fmt::print(stderr, "patches: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n", run.mesh.patches.size(), s.shots,
+    fmt::print(stderr, "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n",
+               run.mesh.patches.size(), run.singleChannel ? "1 (grey scene)" : "3", s.shots,
                s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
                s.converged ? "converged" : "stopped at max_shots");
     fmt::print(stderr, "{}\n", run.clustering.statistics());

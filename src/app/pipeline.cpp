@@ -120,6 +120,7 @@ void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
     });
     run.shooting = solver.statistics();
     run.maxIlluminanceStep = solver.maxIlluminanceStep();
+    run.singleChannel = solver.singleChannel();
 }
 
 }  // namespace
@@ -229,7 +230,8 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) 
                   {"cluster_transfers", run.shooting.clusterTransfers},
                   {"patch_pairs", run.shooting.patchPairs},
                   {"corrections", run.shooting.corrections},
-                  {"push_pulls", run.shooting.pushPulls}};
+                  {"push_pulls", run.shooting.pushPulls},
+                  {"channels", run.singleChannel ? 1 : 3}};
     if (run.lights) {
         auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
         j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"unshot", b.unshot},

@@ -52,6 +52,7 @@ struct PipelineRun {
     radiosity::ShootingStatistics shooting;
     double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
     size_t edgeVertices = 0;        ///< vertices whose value came from a point gather
+    bool singleChannel = false;     ///< the scene is grey: one channel was solved
     std::unique_ptr<raytrace::EmbreeScene> embree;
     std::unique_ptr<radiosity::DirectLight> lights;
     radiosity::RadiositySolution solution;

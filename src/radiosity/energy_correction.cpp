@@ -1,6 +1,6 @@
 // The energy-transfer correction (Myszkowski & Kunii, section 3.3).
 #include <radiosity/cluster_transfer.h>
-#include <radiosity/shooting_solver.h>
+#include <radiosity/shooting_core.h>
 
 namespace rayrad::radiosity {
 
@@ -17,19 +17,23 @@ namespace rayrad::radiosity {
 ///  4. push-pull D.
 /// `totalOfSource[k]` is L_i of C's k-th member. Touches only D's state, so receivers
 /// can be corrected in parallel.
-void ShootingSolver::correct(size_t c, size_t d, const std::vector<Rgb>& totalOfSource, RadiositySolution& s) {
+template <class V>
+void ShootingCore<V>::correct(size_t c, size_t d, const std::vector<V>& totalOfSource) {
     const Cluster& C = m_clustering.clusters[c];
     const Cluster& D = m_clustering.clusters[d];
-    pushPull(d, s);  // anything C sent earlier and still pending is now on D's patches
-    Rgb shotSoFar = m_light[c].total - m_light[c].unshot;
-    Rgb received = shotSoFar * clusterTransfer(m_mesh, C, D, m_vis, m_options.analyticDistance);
-    if (received != Rgb(0.0)) {
+    pushPull(d);  // anything C sent earlier and still pending is now on D's patches
+    V shotSoFar = m_light[c].total - m_light[c].unshot;
+    V received = shotSoFar * clusterTransfer(m_mesh, C, D, m_vis, m_options.analyticDistance);
+    if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
-        for (size_t k = 0; k < D.patches.size(); ++k) receive(D.patches[k], -received * shape[k], s);
+        for (size_t k = 0; k < D.patches.size(); ++k) receive(D.patches[k], -(received * shape[k]));
     }
-    shootPatches(C, totalOfSource, d, s);
-    pull(d, s);
+    shootPatches(C, totalOfSource, d);
+    pull(d);
 }
+
+template void ShootingCore<double>::correct(size_t, size_t, const std::vector<double>&);
+template void ShootingCore<Rgb>::correct(size_t, size_t, const std::vector<Rgb>&);
 
 }  // namespace rayrad::radiosity

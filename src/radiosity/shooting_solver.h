@@ -9,6 +9,7 @@
 #include <scene/settings.h>
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace rayrad::radiosity {
@@ -31,6 +32,8 @@ struct ShootingStatistics {
     int64_t pushPulls = 0;         ///< global push-pulls
 };
 
+class ShootingCoreBase;
+
 /// Shooting (Cohen et al. 1988) over clusters and patches with the energy-transfer
 /// correction of Myszkowski & Kunii. Each step picks the cluster with the largest unshot
 /// power |Y(ΔL_C)|·A_C (pending I_C included), push-pulls it, and shoots ΔL to every
@@ -42,10 +45,14 @@ struct ShootingStatistics {
 /// corrected (see energy_correction.cpp). Receivers are independent, so each shot runs
 /// in parallel over receiver clusters and the result does not depend on thread count.
 /// Without clusters every patch is its own cluster and every transfer patch→patch.
+/// When every reflectance and every light is grey, one channel is solved instead of
+/// three (shooting_core.h); the solution's RGB arrays are filled at push-pulls and at
+/// the end of every public call.
 class ShootingSolver {
   public:
     ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                    const Visibility& vis, const scene::SolverOptions& solver, const scene::ClusterOptions& clusters);
+    ~ShootingSolver();
 
     /// Starts from the direct pass: ΔL_i = ρ_i Ē_direct,i / π, E_indirect = 0.
     void initialize(RadiositySolution& solution);
@@ -57,47 +64,25 @@ class ShootingSolver {
                const std::function<void(const RadiositySolution&)>& onProgress = {});
     /// Pushes every pending I_C down to the patches and pulls ΔL_C, L_C up.
     void pushPullAll(RadiositySolution& solution);
-
     /// Shoots cluster c now; `radius` overrides r_v (tests). Public for tests.
     void shootCluster(size_t c, RadiositySolution& solution, int radius = -1);
 
-    double maxIlluminanceStep() const { return m_maxStep; }
-    const std::vector<ClusterLight>& clusterLight() const { return m_light; }
-    const ShootingStatistics& statistics() const { return m_stats; }
+    bool singleChannel() const { return m_singleChannel; }
+    double maxIlluminanceStep() const;
+    std::vector<ClusterLight> clusterLight() const;
+    const ShootingStatistics& statistics() const;
     /// Unshot flux in lm: Σ π |Y(ΔL_i)| A_i over patches.
     double unshotFlux(const RadiositySolution& solution) const;
 
   private:
-    double clusterPower(size_t c) const;
-    int radiusFor(size_t c) const;
-    void pushPull(size_t c, RadiositySolution& s);
-    void pull(size_t c, const RadiositySolution& s);
-    /// Adds one cluster→cluster shot (illuminance `e` at the receiver's centroid) to the
-    /// receiver's pending illuminance, shared by receiverShape().
-    void addPending(const Cluster& source, size_t receiver, const Rgb& e);
-    /// Adds illuminance ΔE to patch j (and its cluster's pulled values).
-    void receive(size_t j, const Rgb& deltaE, RadiositySolution& s);
-    /// Patch→patch from the members of `source` (luminance per member from `amount`)
-    /// to every member of `receiver`.
-    void shootPatches(const Cluster& source, const std::vector<Rgb>& amount, size_t receiver, RadiositySolution& s);
-    /// The energy-transfer correction for receiver d (energy_correction.cpp).
-    void correct(size_t c, size_t d, const std::vector<Rgb>& totalOfSource, RadiositySolution& s);
-    bool coplanar(const Cluster& a, const Cluster& b) const;
-
-    const scene::Scene& m_scene;
     const PatchMesh& m_mesh;
-    const Clustering& m_clustering;
-    const Visibility& m_vis;
-    scene::SolverOptions m_options;
-    scene::ClusterOptions m_clusterOptions;
-    double m_maxStep = 0;               ///< ΔI_max, lx
-    std::vector<ClusterLight> m_light;
-    std::vector<Rgb> m_pending;         ///< per patch: cluster→cluster illuminance not yet pushed, lx
-    std::vector<Rgb> m_reflectance;     ///< per patch ρ (saves a material lookup in hot loops)
-    double m_shotSincePushPull = 0;     ///< unshot power shot since the last push-pull, cd
-    double m_powerAtPushPull = 0;
-    ShootingStatistics m_stats;
+    bool m_singleChannel = false;
+    std::unique_ptr<ShootingCoreBase> m_core;
 };
+
+/// True when every material's reflectance and every light's colour is grey, so the
+/// light in the scene is grey everywhere and one channel describes it.
+bool isGreyScene(const scene::Scene& scene);
 
 /// Energy accounting in lm: what the lights emit, what surfaces absorbed
 /// Σ (1 − ρ) (Ē_dir + E_ind) A, and what is still unshot. In a closed scene

@@ -320,6 +320,7 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.areaLightSamples = r.integer("area_light_samples", d.solver.areaLightSamples, 1, 4096);
     d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
     d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
+    d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
     if (auto rec = r.string("reconstruction")) {
         if (*rec == "linear") d.solver.linearReconstruction = true;
         else if (*rec == "average") d.solver.linearReconstruction = false;

@@ -72,6 +72,8 @@ struct SolverOptions {
     /// 19 200 triangles); on surfaces that touch without a shared mesh line (the Cornell
     /// blocks standing on the floor) it makes visible artefacts, so it is off by default.
     int edgeGatherLevels = 0;
+    /// Solve one channel instead of three when every reflectance and light is grey.
+    bool oneChannelWhenGrey = true;
 };
 
 /// The ray tracer and the sensor gather.

@@ -170,3 +170,30 @@ TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]
                 Approx(luminance(a.solution.vertexIndirect[v])).epsilon(1e-9));
     }
 }
+
+TEST_CASE("a grey scene solved in one channel matches the three-channel solve", "[clusters]") {
+    app::PipelineOptions o;
+    o.quiet = true;
+    o.overrides = {{"radiosity.max_edge", "0.5"}, {"radiosity.gather_levels", "2"}};
+    std::string path = test::sourcePath("scenes/cube/cube.json");
+    auto one = app::runPipeline(path, o);
+    o.overrides.push_back({"radiosity.one_channel_when_grey", "false"});
+    auto three = app::runPipeline(path, o);
+    REQUIRE(one.singleChannel);
+    REQUIRE_FALSE(three.singleChannel);
+    for (size_t i = 0; i < one.solution.indirect.size(); ++i) {
+        REQUIRE(luminance(one.solution.indirect[i]) == Approx(luminance(three.solution.indirect[i])).epsilon(1e-9));
+        REQUIRE(one.solution.indirect[i].r == one.solution.indirect[i].b);  // grey stays grey
+    }
+    for (size_t k = 0; k < one.sensors.size(); ++k)
+        CHECK(luminance(one.sensors[k].value.indirect) == Approx(luminance(three.sensors[k].value.indirect)).epsilon(1e-9));
+    // A coloured scene is solved in three channels.
+    auto cornell = [] {
+        app::PipelineOptions c;
+        c.quiet = true;
+        c.wantSensors = false;
+        c.overrides = {{"radiosity.max_edge", "0.2"}};
+        return app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), c);
+    }();
+    CHECK_FALSE(cornell.singleChannel);
+}

@@ -1,0 +1,280 @@
+#include <radiosity/shooting_core.h>
+
+#include <radiosity/cluster_transfer.h>
+#include <radiosity/patch_transfer.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <climits>
+#include <cmath>
+
+namespace rayrad::radiosity {
+
+namespace {
+/// Derived ΔI_max: this fraction of the scene's mean illuminance (measured trade-off, see
+/// docs/validation.md).
+constexpr double kDefaultStepFraction = 0.2;
+}  // namespace
+
+template <class V>
+ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+                              const Visibility& vis, const scene::SolverOptions& solver,
+                              const scene::ClusterOptions& clusters)
+    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(solver),
+      m_clusterOptions(clusters) {
+    m_reflectance.reserve(mesh.patches.size());
+    for (const auto& p : mesh.patches) m_reflectance.push_back(fromRgb<V>(scene.materials[p.material].reflectance));
+}
+
+template <class V>
+void ShootingCore<V>::initialize(RadiositySolution& s) {
+    const size_t n = m_mesh.patches.size();
+    m_direct.resize(n);
+    m_indirect.assign(n, V(0.0));
+    m_unshot.resize(n);
+    m_pending.assign(n, V(0.0));
+    double area = 0, meanDirect = 0, meanRho = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const Patch& p = m_mesh.patches[i];
+        m_direct[i] = fromRgb<V>(s.directMean[i]);
+        m_unshot[i] = m_reflectance[i] * m_direct[i] / kPi;  // ΔL = ρ E / π
+        area += p.area;
+        meanDirect += lum(m_direct[i]) * p.area;
+        meanRho += lum(m_reflectance[i]) * p.area;
+    }
+    if (area > 0) meanDirect /= area, meanRho /= area;
+    // Mean illuminance with all bounces, estimated as Ē_dir / (1 − ρ̄).
+    m_maxStep = m_clusterOptions.maxIlluminanceStep > 0
+                    ? m_clusterOptions.maxIlluminanceStep
+                    : kDefaultStepFraction * meanDirect / std::max(1e-6, 1.0 - meanRho);
+    m_light.assign(m_clustering.clusters.size(), Light{});
+    for (size_t c = 0; c < m_light.size(); ++c) pull(c);
+    s.shots = 0;
+    s.initialUnshotFlux = unshotFlux();
+    s.remainingUnshotFlux = s.initialUnshotFlux;
+    s.converged = s.initialUnshotFlux <= 0;
+    m_stats = {};
+    m_shotSincePushPull = 0;
+    m_powerAtPushPull = s.initialUnshotFlux / kPi;
+    sync(s);
+}
+
+template <class V>
+void ShootingCore<V>::sync(RadiositySolution& s) const {
+    const size_t n = m_mesh.patches.size();
+    s.indirect.resize(n);
+    s.unshot.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        s.indirect[i] = toRgb(m_indirect[i]);
+        s.unshot[i] = toRgb(m_unshot[i]);
+    }
+}
+
+template <class V>
+std::vector<ClusterLight> ShootingCore<V>::clusterLight() const {
+    std::vector<ClusterLight> out;
+    for (const auto& l : m_light) out.push_back({toRgb(l.unshot), toRgb(l.total), toRgb(l.pendingReflected), l.radius});
+    return out;
+}
+
+template <class V>
+double ShootingCore<V>::unshotFlux() const {
+    double flux = 0;
+    for (size_t i = 0; i < m_mesh.patches.size(); ++i) flux += kPi * std::abs(lum(m_unshot[i])) * m_mesh.patches[i].area;
+    return flux;
+}
+
+template <class V>
+double ShootingCore<V>::clusterPower(size_t c) const {
+    // Candle power |ΔL|·A, counting what the pending I_C will add once pushed down.
+    const Light& l = m_light[c];
+    return std::abs(lum(l.unshot + l.pendingReflected)) * m_clustering.clusters[c].area;
+}
+
+template <class V>
+int ShootingCore<V>::radiusFor(size_t c) const {
+    if (!m_clustering.enabled) return INT_MAX;
+    const Cluster& C = m_clustering.clusters[c];
+    double power = std::max(0.0, lum(m_light[c].total)) * C.area;  // L_C A_C, cd
+    double R = std::sqrt(power / m_maxStep);                        // m
+    double rv = std::ceil(R / m_clustering.voxelSize);
+    int maxDim = std::max({m_clustering.dims[0], m_clustering.dims[1], m_clustering.dims[2]});
+    return static_cast<int>(std::clamp(rv, 1.0, static_cast<double>(maxDim + 1)));
+}
+
+template <class V>
+void ShootingCore<V>::receive(size_t j, const V& deltaE) {
+    V deltaL = m_reflectance[j] * deltaE / kPi;  // ΔL = ρ ΔE / π
+    m_indirect[j] += deltaE;
+    m_unshot[j] += deltaL;
+    size_t c = m_clustering.clusterOf[j];
+    double w = m_mesh.patches[j].area / m_clustering.clusters[c].area;
+    m_light[c].unshot += deltaL * w;  // pull up incrementally (eq. 1)
+    m_light[c].total += deltaL * w;
+}
+
+template <class V>
+void ShootingCore<V>::pull(size_t c) {
+    const Cluster& C = m_clustering.clusters[c];
+    V unshot(0.0), total(0.0);
+    for (uint32_t j : C.patches) {
+        double a = m_mesh.patches[j].area;
+        unshot += m_unshot[j] * a;
+        total += reflected(j) * a;
+    }
+    m_light[c].unshot = unshot / C.area;  // ΔL_C = Σ ΔL_i A_i / A_C   (eq. 1)
+    m_light[c].total = total / C.area;    // L_C  = Σ L_i A_i / A_C
+}
+
+template <class V>
+void ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e) {
+    const Cluster& D = m_clustering.clusters[receiver];
+    thread_local std::vector<double> shape;
+    receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
+    V reflectedSum(0.0);
+    for (size_t k = 0; k < D.patches.size(); ++k) {
+        uint32_t j = D.patches[k];
+        V ej = e * shape[k];
+        m_pending[j] += ej;
+        reflectedSum += m_reflectance[j] * ej * m_mesh.patches[j].area;
+    }
+    m_light[receiver].pendingReflected += reflectedSum / (kPi * D.area);
+}
+
+template <class V>
+void ShootingCore<V>::pushPull(size_t c) {
+    // Push down (eq. 2): L_i += I ρ_i/π, ΔL_i += I ρ_i/π, I = 0.
+    for (uint32_t j : m_clustering.clusters[c].patches)
+        if (m_pending[j] != V(0.0)) {
+            receive(j, m_pending[j]);
+            m_pending[j] = V(0.0);
+        }
+    m_light[c].pendingReflected = V(0.0);
+    pull(c);  // re-sync exactly, so incremental sums never drift
+}
+
+template <class V>
+void ShootingCore<V>::pushPullAll(RadiositySolution& s) {
+    tbb::parallel_for(size_t(0), m_light.size(), [&](size_t c) { pushPull(c); });
+    ++m_stats.pushPulls;
+    m_shotSincePushPull = 0;
+    m_powerAtPushPull = 0;
+    for (size_t c = 0; c < m_light.size(); ++c) m_powerAtPushPull += clusterPower(c);
+    sync(s);
+}
+
+template <class V>
+bool ShootingCore<V>::coplanar(const Cluster& a, const Cluster& b) const {
+    if (!a.planar || !b.planar || glm::dot(a.normal, b.normal) < 1 - 1e-12) return false;
+    double scale = 1e-9 * (1 + a.diameter + b.diameter);
+    return std::abs(glm::dot(b.centroid - a.centroid, a.normal)) < scale;
+}
+
+template <class V>
+void ShootingCore<V>::shootPatches(const Cluster& source, const std::vector<V>& amount, size_t receiver) {
+    const Cluster& D = m_clustering.clusters[receiver];
+    for (uint32_t j : D.patches) {
+        const Patch& rec = m_mesh.patches[j];
+        V deltaE(0.0);
+        for (size_t k = 0; k < source.patches.size(); ++k) {
+            uint32_t i = source.patches[k];
+            if (i == j || amount[k] == V(0.0)) continue;
+            const Patch& src = m_mesh.patches[i];
+            Vec3 d = src.centroid - rec.centroid;  // both must face each other
+            if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
+            double f = visiblePatchFormFactor(m_mesh, src, rec.centroid, rec.normal, m_options.analyticDistance, m_vis);
+            deltaE += amount[k] * (kPi * f);  // ΔE = π ΔL F
+        }
+        if (deltaE != V(0.0)) receive(j, deltaE);
+    }
+}
+
+template <class V>
+void ShootingCore<V>::shootCluster(size_t c, RadiositySolution& s, int radius) {
+    const Cluster& C = m_clustering.clusters[c];
+    Light& light = m_light[c];
+    int r = radius >= 0 ? radius : radiusFor(c);
+    const size_t n = m_clustering.clusters.size();
+    std::vector<char> corrected(n, 0);
+    const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
+
+    if (correcting && light.radius > 0 && r > light.radius) {
+        // r_v grew: the ring old ≤ d < new switches from cluster→cluster to patch→patch.
+        std::vector<V> total(C.patches.size());
+        for (size_t k = 0; k < C.patches.size(); ++k) total[k] = reflected(C.patches[k]);
+        std::vector<size_t> ring;
+        for (size_t d = 0; d < n; ++d) {
+            int dist = m_clustering.voxelDistance(C, m_clustering.clusters[d]);
+            if (d != c && dist >= light.radius && dist < r && !coplanar(C, m_clustering.clusters[d])) ring.push_back(d);
+        }
+        tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) { correct(c, ring[k], total); });
+        for (size_t d : ring) corrected[d] = 1;
+        m_stats.corrections += static_cast<int64_t>(ring.size());
+    }
+    if (correcting) r = std::max(r, light.radius);  // r_v never shrinks: each receiver switches once
+
+    // The shooter's unshot light leaves now; it may receive some of it back (intra-cluster).
+    V deltaLC = light.unshot;
+    std::vector<V> unshot(C.patches.size());
+    for (size_t k = 0; k < C.patches.size(); ++k) {
+        unshot[k] = m_unshot[C.patches[k]];
+        m_unshot[C.patches[k]] = V(0.0);
+    }
+    light.unshot = V(0.0);
+
+    std::atomic<int64_t> clusterTransfers{0}, patchPairs{0};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
+        int64_t cc = 0, pp = 0;
+        for (size_t d = range.begin(); d != range.end(); ++d) {
+            if (corrected[d]) continue;
+            const Cluster& D = m_clustering.clusters[d];
+            if (d == c ? C.planar : coplanar(C, D)) continue;  // coplanar surfaces exchange no light
+            if (d != c && m_clustering.voxelDistance(C, D) >= r) {
+                double t = clusterTransfer(m_mesh, C, D, m_vis, m_options.analyticDistance);
+                if (t > 0) addPending(C, d, deltaLC * t);  // I_D += ΔL_C π F V
+                ++cc;
+            } else {
+                shootPatches(C, unshot, d);
+                pp += static_cast<int64_t>(C.patches.size() * D.patches.size());
+            }
+        }
+        clusterTransfers += cc;
+        patchPairs += pp;
+    });
+    m_stats.clusterTransfers += clusterTransfers;
+    m_stats.patchPairs += patchPairs;
+    light.radius = r;
+    (void)s;
+}
+
+template <class V>
+bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
+    if (s.converged) return false;
+    if (m_options.maxShots > 0 && s.shots >= m_options.maxShots) return false;
+    size_t best = 0;
+    double bestPower = -1, total = 0;
+    for (size_t c = 0; c < m_light.size(); ++c) {
+        double power = clusterPower(c);
+        total += power;
+        if (power > bestPower) bestPower = power, best = c;
+    }
+    s.remainingUnshotFlux = kPi * total;
+    if (s.remainingUnshotFlux <= m_options.stopUnshot * s.initialUnshotFlux || bestPower <= 0) {
+        s.converged = true;
+        return false;
+    }
+    pushPull(best);  // the shooter's ΔL_C must match its patches' ΔL_i
+    m_shotSincePushPull += clusterPower(best);
+    shootCluster(best, s, -1);
+    ++s.shots;
+    if (syncAfter) sync(s);
+    return true;
+}
+
+template class ShootingCore<double>;
+template class ShootingCore<Rgb>;
+
+}  // namespace rayrad::radiosity

@@ -1,0 +1,75 @@
+// The shooting iteration itself, for one grey channel or three (see shooting_solver.h).
+#pragma once
+
+#include <radiosity/light_value.h>
+#include <radiosity/shooting_solver.h>
+
+namespace rayrad::radiosity {
+
+/// What ShootingSolver forwards to; one implementation per value type.
+class ShootingCoreBase {
+  public:
+    virtual ~ShootingCoreBase() = default;
+    virtual void initialize(RadiositySolution& s) = 0;
+    virtual bool step(RadiositySolution& s, bool sync) = 0;
+    virtual void pushPullAll(RadiositySolution& s) = 0;
+    virtual void shootCluster(size_t c, RadiositySolution& s, int radius) = 0;
+    virtual bool pushPullDue() const = 0;
+    virtual double maxIlluminanceStep() const = 0;
+    virtual std::vector<ClusterLight> clusterLight() const = 0;
+    virtual const ShootingStatistics& statistics() const = 0;
+    /// Writes the working values (indirect, unshot) into the solution's RGB arrays.
+    virtual void sync(RadiositySolution& s) const = 0;
+};
+
+/// The solver's state and steps for light values of type V (double or Rgb). Working
+/// arrays are the solver's own; the solution gets them at sync().
+template <class V>
+class ShootingCore final : public ShootingCoreBase {
+  public:
+    ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering, const Visibility& vis,
+                 const scene::SolverOptions& solver, const scene::ClusterOptions& clusters);
+
+    void initialize(RadiositySolution& s) override;
+    bool step(RadiositySolution& s, bool sync) override;
+    void pushPullAll(RadiositySolution& s) override;
+    void shootCluster(size_t c, RadiositySolution& s, int radius) override;
+    bool pushPullDue() const override { return m_shotSincePushPull > m_clusterOptions.pushPullFraction * m_powerAtPushPull; }
+    double maxIlluminanceStep() const override { return m_maxStep; }
+    std::vector<ClusterLight> clusterLight() const override;
+    const ShootingStatistics& statistics() const override { return m_stats; }
+    void sync(RadiositySolution& s) const override;
+
+  private:
+    struct Light {
+        V unshot{0.0}, total{0.0}, pendingReflected{0.0};
+        int radius = 0;
+    };
+
+    V reflected(size_t j) const { return m_reflectance[j] * (m_direct[j] + m_indirect[j]) / kPi; }  // L = ρ E / π
+    double clusterPower(size_t c) const;
+    double unshotFlux() const;
+    int radiusFor(size_t c) const;
+    void pushPull(size_t c);
+    void pull(size_t c);
+    void addPending(const Cluster& source, size_t receiver, const V& e);
+    void receive(size_t j, const V& deltaE);
+    void shootPatches(const Cluster& source, const std::vector<V>& amount, size_t receiver);
+    void correct(size_t c, size_t d, const std::vector<V>& totalOfSource);  // energy_correction.cpp
+    bool coplanar(const Cluster& a, const Cluster& b) const;
+
+    const scene::Scene& m_scene;
+    const PatchMesh& m_mesh;
+    const Clustering& m_clustering;
+    const Visibility& m_vis;
+    scene::SolverOptions m_options;
+    scene::ClusterOptions m_clusterOptions;
+    double m_maxStep = 0;
+    std::vector<V> m_reflectance, m_direct, m_indirect, m_unshot, m_pending;
+    std::vector<Light> m_light;
+    double m_shotSincePushPull = 0;
+    double m_powerAtPushPull = 0;
+    ShootingStatistics m_stats;
+};
+
+}  // namespace rayrad::radiosity
