@@ -55,7 +55,7 @@ void writeText(const std::string& path, const std::string& text) {
     });
 }
 
-void printSensorsAndEnergy(const app::PipelineRun& run, const std::string& csvPath) {
+void printSensors(const app::PipelineRun& run, const std::string& csvPath) {
     if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors);
     if (!csvPath.empty()) {
         writeText(csvPath, app::sensorCsv(run.sensors));
@@ -104,7 +104,7 @@ int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& repo
     o.quiet = a.quiet;
     o.logConvergence = !reports.convergence.empty();
     auto run = app::runPipeline(a.scene, o);
-    printSensorsAndEnergy(run, csv);
+    printSensors(run, csv);
     writeReports(run, a.scene, reports);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
@@ -148,7 +148,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, cons
     app::writeImages(outputs, *run.image, display, "rayrad rendering of " + a.scene);
     for (const auto& path : outputs) fmt::print(stderr, "wrote {}\n", path);
     run.report.end();
-    printSensorsAndEnergy(run, csv);
+    printSensors(run, csv);
     writeReports(run, a.scene, reports);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();

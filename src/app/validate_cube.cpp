@@ -41,6 +41,7 @@ struct Config {
 
 struct Result {
     Config config;
+    std::string convergencePath;  ///< empty for runs not logged (ablations)
     json report;
     std::map<std::string, double> vertexErr, gatherErr, vertexTotalErr;  ///< per sensor, %
     double solveSeconds = 0, totalSeconds = 0, peakMiB = 0, bytesPerPatch = 0;
@@ -225,7 +226,7 @@ void plotGroup(const std::string& path, const std::vector<Result>& results, cons
             s.label = r.config.label;
             s.color = colors[k++ % colors.size()];
             std::string key = std::string(point) + "_vertex_err_pct";
-            for (const auto& [t, row] : readConvergence(r.config.name.empty() ? "" : r.config.name))
+            for (const auto& [t, row] : readConvergence(r.convergencePath))
                 if (row.count(key) && t > 0) s.points.emplace_back(t, row.at(key));
             panel.series.push_back(s);
         }
@@ -271,7 +272,7 @@ int validateCube(const ValidateOptions& o) {
         }
         Result r;
         r.config = cfg;
-        r.config.name = base + ".convergence.csv";  // where plotGroup finds its series
+        if (cfg.group != "ablation") r.convergencePath = base + ".convergence.csv";
         std::ifstream in(base + ".json");
         r.report = json::parse(in);
         r.patches = r.report["patches"].get<size_t>();

@@ -193,7 +193,7 @@ void ShootingCore<V>::shootPatches(const Cluster& source, const std::vector<V>& 
 }
 
 template <class V>
-void ShootingCore<V>::shootCluster(size_t c, RadiositySolution& s, int radius) {
+void ShootingCore<V>::shootCluster(size_t c, int radius) {
     const Cluster& C = m_clustering.clusters[c];
     Light& light = m_light[c];
     int r = radius >= 0 ? radius : radiusFor(c);
@@ -247,7 +247,6 @@ void ShootingCore<V>::shootCluster(size_t c, RadiositySolution& s, int radius) {
     m_stats.clusterTransfers += clusterTransfers;
     m_stats.patchPairs += patchPairs;
     light.radius = r;
-    (void)s;
 }
 
 template <class V>
@@ -268,7 +267,7 @@ bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
     }
     pushPull(best);  // the shooter's ΔL_C must match its patches' ΔL_i
     m_shotSincePushPull += clusterPower(best);
-    shootCluster(best, s, -1);
+    shootCluster(best, -1);
     ++s.shots;
     if (syncAfter) sync(s);
     return true;

@@ -13,7 +13,9 @@ class ShootingCoreBase {
     virtual void initialize(RadiositySolution& s) = 0;
     virtual bool step(RadiositySolution& s, bool sync) = 0;
     virtual void pushPullAll(RadiositySolution& s) = 0;
-    virtual void shootCluster(size_t c, RadiositySolution& s, int radius) = 0;
+    virtual void shootCluster(size_t c, int radius) = 0;
+    /// Unshot flux in lm: Σ π |Y(ΔL_i)| A_i over patches.
+    virtual double unshotFlux() const = 0;
     virtual bool pushPullDue() const = 0;
     virtual double maxIlluminanceStep() const = 0;
     virtual std::vector<ClusterLight> clusterLight() const = 0;
@@ -33,7 +35,8 @@ class ShootingCore final : public ShootingCoreBase {
     void initialize(RadiositySolution& s) override;
     bool step(RadiositySolution& s, bool sync) override;
     void pushPullAll(RadiositySolution& s) override;
-    void shootCluster(size_t c, RadiositySolution& s, int radius) override;
+    void shootCluster(size_t c, int radius) override;
+    double unshotFlux() const override;
     bool pushPullDue() const override { return m_shotSincePushPull > m_clusterOptions.pushPullFraction * m_powerAtPushPull; }
     double maxIlluminanceStep() const override { return m_maxStep; }
     std::vector<ClusterLight> clusterLight() const override;
@@ -48,7 +51,6 @@ class ShootingCore final : public ShootingCoreBase {
 
     V reflected(size_t j) const { return m_reflectance[j] * (m_direct[j] + m_indirect[j]) / kPi; }  // L = ρ E / π
     double clusterPower(size_t c) const;
-    double unshotFlux() const;
     int radiusFor(size_t c) const;
     void pushPull(size_t c);
     void pull(size_t c);

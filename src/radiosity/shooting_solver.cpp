@@ -19,7 +19,7 @@ bool isGreyScene(const scene::Scene& scene) {
 ShootingSolver::ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                const Visibility& vis, const scene::SolverOptions& solver,
                                const scene::ClusterOptions& clusters)
-    : m_mesh(mesh), m_singleChannel(solver.oneChannelWhenGrey && isGreyScene(scene)) {
+    : m_singleChannel(solver.oneChannelWhenGrey && isGreyScene(scene)) {
     if (m_singleChannel)
         m_core = std::make_unique<ShootingCore<double>>(scene, mesh, clustering, vis, solver, clusters);
     else
@@ -33,7 +33,7 @@ bool ShootingSolver::step(RadiositySolution& s) { return m_core->step(s, /*sync=
 void ShootingSolver::pushPullAll(RadiositySolution& s) { m_core->pushPullAll(s); }
 
 void ShootingSolver::shootCluster(size_t c, RadiositySolution& s, int radius) {
-    m_core->shootCluster(c, s, radius);
+    m_core->shootCluster(c, radius);
     m_core->sync(s);
 }
 
@@ -41,12 +41,7 @@ double ShootingSolver::maxIlluminanceStep() const { return m_core->maxIlluminanc
 std::vector<ClusterLight> ShootingSolver::clusterLight() const { return m_core->clusterLight(); }
 const ShootingStatistics& ShootingSolver::statistics() const { return m_core->statistics(); }
 
-double ShootingSolver::unshotFlux(const RadiositySolution& s) const {
-    double flux = 0;
-    for (size_t i = 0; i < m_mesh.patches.size(); ++i)
-        flux += kPi * std::abs(luminance(s.unshot[i])) * m_mesh.patches[i].area;
-    return flux;
-}
+double ShootingSolver::unshotFlux() const { return m_core->unshotFlux(); }
 
 void ShootingSolver::solve(RadiositySolution& s, const std::function<void(const RadiositySolution&)>& onPushPull,
                            const std::function<void(const RadiositySolution&)>& onProgress) {
@@ -70,7 +65,7 @@ void ShootingSolver::solve(RadiositySolution& s, const std::function<void(const 
         }
     }
     m_core->pushPullAll(s);
-    s.remainingUnshotFlux = unshotFlux(s);
+    s.remainingUnshotFlux = m_core->unshotFlux();
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - paused;
     if (onPushPull) onPushPull(s);
     if (onProgress) onProgress(s);

@@ -72,10 +72,9 @@ class ShootingSolver {
     std::vector<ClusterLight> clusterLight() const;
     const ShootingStatistics& statistics() const;
     /// Unshot flux in lm: Σ π |Y(ΔL_i)| A_i over patches.
-    double unshotFlux(const RadiositySolution& solution) const;
+    double unshotFlux() const;
 
   private:
-    const PatchMesh& m_mesh;
     bool m_singleChannel = false;
     std::unique_ptr<ShootingCoreBase> m_core;
 };
