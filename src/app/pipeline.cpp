@@ -35,9 +35,11 @@ std::optional<double> errorPct(double value, const std::optional<double>& ref) {
 class PushPullObserver {
   public:
     PushPullObserver(PipelineRun& run, const PipelineOptions& options) : m_run(run), m_options(options) {
+        // Where each referenced sensor lies on the mesh does not change during the solve.
         for (const auto& s : run.scene.sensors)
             if (s.refIndirect) {
-                m_sensors.push_back(&s);
+                m_sensors.push_back({&s, radiosity::locateOnMesh(run.mesh, s.position, s.normal,
+                                                                 1e-6 * run.scene.diagonal())});
                 run.convergenceSensors.push_back(s.name);
             }
     }
@@ -70,8 +72,7 @@ class PushPullObserver {
             gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
                              m_run.scene.solver.gatherLevels);
         }
-        for (const auto* s : m_sensors) {
-            auto where = radiosity::locateOnMesh(m_run.mesh, s->position, s->normal, 1e-6 * m_run.scene.diagonal());
+        for (const auto& [s, where] : m_sensors) {
             std::optional<double> vertex;
             if (where) vertex = luminance(radiosity::interpolateIndirect(m_run.mesh, copy, where->patch, where->u, where->v));
             row.vertexErrorPct.push_back(vertex ? errorPct(*vertex, s->refIndirect) : std::nullopt);
@@ -100,7 +101,7 @@ class PushPullObserver {
 
     PipelineRun& m_run;
     const PipelineOptions& m_options;
-    std::vector<const scene::Sensor*> m_sensors;
+    std::vector<std::pair<const scene::Sensor*, std::optional<radiosity::MeshLocation>>> m_sensors;
     double m_lastGatherFraction = 2.0;
     int m_nextSnapshot = 1;
 };
@@ -140,9 +141,12 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.lights = std::make_unique<radiosity::DirectLight>(run.scene);
     radiosity::computeDirect(run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples, run.solution);
 
-    if (run.scene.hasReflectance()) {
+    const bool wantGather = options.wantSensors && !run.scene.sensors.empty();
+    if (run.scene.hasReflectance() || wantGather) {  // both the shooting and the gather use them
         run.report.begin("clusters");
         run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters);
+    }
+    if (run.scene.hasReflectance()) {
         run.report.begin("secondary pass (shooting)");
         solveSecondary(run, options);
         run.report.begin("reconstruct vertices");
@@ -151,13 +155,16 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
             run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
                                                              *run.embree, run.scene.solver.edgeGatherLevels);
     } else {
+        // Nothing reflects: the solution is complete with no indirect light at all.
+        run.solution.indirect.assign(run.mesh.patches.size(), Rgb(0.0));
+        run.solution.unshot.assign(run.mesh.patches.size(), Rgb(0.0));
+        run.solution.converged = true;
+        radiosity::reconstructVertices(run.mesh, run.solution);
         run.skipped.push_back("secondary pass (no surface reflects light)");
     }
 
-    if (options.wantSensors && !run.scene.sensors.empty()) {
+    if (wantGather) {
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
-        if (run.clustering.clusters.empty())  // no secondary pass: the gather finds nothing to gather
-            run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters);
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
                                      run.scene.solver.gatherLevels);
         for (const auto& s : run.scene.sensors)
