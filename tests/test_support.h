@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
 #include <string>
 
 namespace Catch {
@@ -17,5 +18,12 @@ struct StringMaker<rayrad::Vec3> {
 namespace rayrad::test {
 
 inline std::string sourcePath(const std::string& relative) { return std::string(RAYRAD_SOURCE_DIR) + "/" + relative; }
+
+/// Writes a scene for runPipeline, which reads files: /tmp/rayrad_test_<name>.json.
+inline std::string writeTempScene(const std::string& name, const std::string& json) {
+    std::string path = "/tmp/rayrad_test_" + name + ".json";
+    std::ofstream(path) << json;
+    return path;
+}
 
 }  // namespace rayrad::test

@@ -71,7 +71,7 @@ void printSolveSummary(const app::PipelineRun& run) {
                s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
                s.converged ? "converged" : "stopped at max_shots");
     fmt::print(stderr, "{}\n", run.clustering.statistics());
-    if (run.edgeVertices > 0) fmt::print(stderr, "edge and corner vertices from a point gather: {}\n", run.edgeVertices);
+    if (run.edgeVertices > 0) fmt::print(stderr, "seam vertices (concave edges and corners) from a point gather: {}\n", run.edgeVertices);
     if (run.clustering.enabled)
         fmt::print(stderr, "transfers: {} cluster→cluster, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
                    run.shooting.clusterTransfers, run.shooting.patchPairs, run.shooting.corrections,

@@ -163,9 +163,10 @@ std::vector<Config> configurations(bool quick) {
     c.push_back(make("ablation", "ablation_default", "rayrad defaults", base, ""));
     c.push_back(make("ablation", "ablation_no_correction", "energy correction off", with({"clusters.energy_correction=false"}), ""));
     c.push_back(make("ablation", "ablation_uniform_push", "uniform push-down (paper eq. 2)", with({"clusters.receiver_detail=cluster"}), ""));
-    c.push_back(make("ablation", "ablation_average", "average reconstruction (paper)", with({"radiosity.reconstruction=average"}), ""));
-    c.push_back(make("ablation", "ablation_edge_gather", "edge vertices gathered (experimental)",
-                     with({"radiosity.edge_gather_levels=4"}), ""));
+    c.push_back(make("ablation", "ablation_no_seam_gather", "seam vertices reconstructed, not gathered",
+                     with({"radiosity.edge_gather_levels=0"}), ""));
+    c.push_back(make("ablation", "ablation_average", "average reconstruction, no seam gather (paper)",
+                     with({"radiosity.reconstruction=average", "radiosity.edge_gather_levels=0"}), ""));
     // The input surfaces are 1 m strips now: 1 % of the 100 m² wall, as for the others.
     c.push_back(make("ablation", "ablation_slivers", "premeshing off (sliver input)",
                      {"clusters.size_percent=1", "clusters.reference_area=100"}, "SLIVERS"));

@@ -18,6 +18,13 @@ constexpr double kFarClusterDiameters = 3.0;
 /// Sub-triangle refinement toward a vertex: as deep as for sensors (at 6 levels the
 /// Cornell box's floor vertices along the red wall came out 40 % low).
 constexpr int kMaxSplitDepth = 12;
+
+/// Distance (m) from point p to the segment ab.
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+    Vec3 ab = b - a;
+    double t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-300), 0.0, 1.0);
+    return glm::length(p - (a + t * ab));
+}
 }  // namespace
 
 size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
@@ -44,7 +51,13 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
         return v;
     };
 
+    // How many voxels around a vertex can hold the centroid of a patch touching it.
+    double largestDiameter = 0;
+    for (const Patch& p : mesh.patches) largestDiameter = std::max(largestDiameter, p.diameter);
+    const int reach = static_cast<int>(std::ceil(1.5 * largestDiameter / clustering.voxelSize));
+
     const double nudge = 1e-6 * scene.diagonal();
+    const double seamTolerance = 1e-6 * scene.diagonal();
     std::vector<size_t> edge;
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         if (patchOf[v] < 0) continue;
@@ -52,9 +65,9 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
         const Vec3 x = nudgeInside(mesh, patchOf[v], mesh.vertices[v], nudge);
         auto home = voxelOf(x);
         bool isEdge = false;
-        for (int dx = -1; dx <= 1 && !isEdge; ++dx)
-            for (int dy = -1; dy <= 1 && !isEdge; ++dy)
-                for (int dz = -1; dz <= 1 && !isEdge; ++dz) {
+        for (int dx = -reach; dx <= reach && !isEdge; ++dx)
+            for (int dy = -reach; dy <= reach && !isEdge; ++dy)
+                for (int dz = -reach; dz <= reach && !isEdge; ++dz) {
                     auto it = byVoxel.find({home[0] + dx, home[1] + dy, home[2] + dz});
                     if (it == byVoxel.end()) continue;
                     for (uint32_t c : it->second)
@@ -62,7 +75,11 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
                             const Patch& p = mesh.patches[j];
                             if (p.group == own.group || glm::length(p.centroid - x) > 1.5 * p.diameter) continue;
                             Vec3 tri[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
-                            if (formFactorToPolygon(x, own.normal, tri, 3, p.normal) > 0) {
+                            // A seam: the vertex lies on one of the facing patch's edges.
+                            bool onSeam = false;
+                            for (int e = 0; e < 3; ++e)
+                                onSeam |= distanceToSegment(mesh.vertices[v], tri[e], tri[(e + 1) % 3]) <= seamTolerance;
+                            if (onSeam && formFactorToPolygon(x, own.normal, tri, 3, p.normal) > 0) {
                                 isEdge = true;
                                 break;
                             }

@@ -9,12 +9,13 @@
 
 namespace rayrad::radiosity {
 
-/// Vertices where another surface meets theirs within a patch diameter and faces them
-/// (the concave edges and corners of a room): the indirect light falls steeply there,
-/// and no reconstruction from centroid values follows it. Their vertex values are
+/// Vertices on a concave seam: the vertex lies on an edge of a patch of another surface
+/// that faces it (the edges and corners of a room). The indirect light falls steeply
+/// there, and no reconstruction from centroid values follows it. Their vertex values are
 /// replaced by a final gather at the vertex, iterated `levels` rounds (each round uses
 /// the previous round's values at the corners of near patches, as the sensor gather's
-/// levels do). Returns the number of vertices refined.
+/// levels do). Surfaces that touch without a shared mesh line are not seams: their
+/// vertices keep the reconstruction. Returns the number of vertices refined.
 size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                           RadiositySolution& solution, const Visibility& vis, int levels);
 

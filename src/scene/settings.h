@@ -66,12 +66,14 @@ struct SolverOptions {
     /// values of the two rings of triangles around it, evaluated at the vertex (exact for
     /// linear variation, so it does not flatten the fall-off into edges and corners).
     bool linearReconstruction = true;
-    /// Experimental: vertices on concave edges and corners (another surface within a
-    /// patch diameter, facing them) take their value from a point gather, iterated this
-    /// many rounds (0 = off). Exact on conforming meshes such as the cube (C +0.35 % at
-    /// 19 200 triangles); on surfaces that touch without a shared mesh line (the Cornell
-    /// blocks standing on the floor) it makes visible artefacts, so it is off by default.
-    int edgeGatherLevels = 0;
+    /// Vertices on concave seams (the vertex lies on an edge of a patch of another
+    /// surface that faces it: the edges and corners of a room) take their value from a
+    /// point gather, iterated this many rounds (0 = off). The indirect light falls
+    /// steeply into such seams and no reconstruction from centroid values follows it
+    /// (cube C at 19 200 triangles: +5.9 % without, +0.7 % with 3 rounds, +0.6 s).
+    /// Surfaces that touch without a shared mesh line (a box standing on a floor) are
+    /// left to the reconstruction: a floor vertex near the box's foot is not on the seam.
+    int edgeGatherLevels = 3;
     /// Solve one channel instead of three when every reflectance and light is grey.
     bool oneChannelWhenGrey = true;
 };

@@ -14,12 +14,6 @@ using namespace rayrad;
 
 namespace {
 
-std::string writeTemp(const std::string& name, const std::string& text) {
-    std::string path = "/tmp/rayrad_test_" + name + ".json";
-    std::ofstream(path) << text;
-    return path;
-}
-
 app::PipelineOptions quiet(std::vector<scene::Override> o = {}) {
     app::PipelineOptions p;
     p.quiet = true;
@@ -32,7 +26,7 @@ app::PipelineOptions quiet(std::vector<scene::Override> o = {}) {
 TEST_CASE("closed box: emitted = absorbed + unshot within 0.5%", "[solver]") {
     std::string json = test::boxScene(R"({"type": "diffuse", "reflectance": [0.8, 0.5, 0.2]})",
                                       R"({"type": "point", "position": [0.3, 0.6, 0.45], "intensity_cd": 100})");
-    auto run = app::runPipeline(writeTemp("box", json), quiet({{"radiosity.max_edge", "0.125"}}));
+    auto run = app::runPipeline(test::writeTempScene("box", json), quiet({{"radiosity.max_edge", "0.125"}}));
     auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
     INFO("emitted " << b.emitted << " absorbed " << b.absorbed << " unshot " << b.unshot);
     CHECK(run.solution.converged);
@@ -54,7 +48,7 @@ TEST_CASE("closed sphere: the indirect light is rho/(1-rho) Phi / A", "[solver]"
         "sensors": [{"name": "A", "position": [0, 0, 1], "normal": [0, 0, -1]},
                     {"name": "B", "position": [0, -0.70710678, -0.70710678], "normal": [0, 0.70710678, 0.70710678]}],
         "radiosity": {"max_edge": 10, "stop_unshot": 1e-4}})";
-    std::string path = writeTemp("sphere", json);
+    std::string path = test::writeTempScene("sphere", json);
     auto run = app::runPipeline(path, quiet());
     REQUIRE(run.clustering.multiPatchClusters() > 0);
     double area = run.mesh.totalArea();
