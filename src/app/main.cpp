@@ -2,6 +2,7 @@
 #include <app/image_output.h>
 #include <app/pipeline.h>
 #include <app/validate_cube.h>
+#include <app/validate_sphere.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
@@ -234,6 +235,14 @@ int main(int argc, char** argv) {
     auto* validate = cli.add_subcommand("validate", "Reproduce a validation from the paper on this machine");
     auto* validateCube = validate->add_subcommand(
         "cube", "The empty cube: mesh sweep and cluster sweep (paper Tables 2-3), ablations, error-vs-time plots");
+    app::ValidateSphereOptions sphereOptions;
+    auto* validateSphere = validate->add_subcommand(
+        "sphere", "The sphere with mirrors: SPH2 and SPH4, 768 and 12 288 triangles, clusters on and off (paper Table 4)");
+    validateSphere->add_flag("--quick", sphereOptions.quick, "The 768-triangle sphere only (seconds)");
+    validateSphere->add_option("--scenes", sphereOptions.sceneDir, "Directory with sph2.json and sph4.json")
+        ->default_str(sphereOptions.sceneDir);
+    validateSphere->add_option("--out", sphereOptions.outDir, "Output directory")->default_str(sphereOptions.outDir);
+    validateSphere->add_option("--threads", sphereOptions.threads, "Worker threads per run (default: all cores)");
     validate->require_subcommand(1);
     validateCube->add_flag("--quick", validateOptions.quick, "A subset at 1 200 and 4 800 triangles (about a minute)");
     validateCube->add_option("--scene", validateOptions.scene, "The cube scene")->default_str(validateOptions.scene);
@@ -248,6 +257,7 @@ int main(int argc, char** argv) {
     }
 
     try {
+        if (validateSphere->parsed()) return app::validateSphere(sphereOptions);
         if (validate->parsed()) return app::validateCube(validateOptions);
         CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : infoArgs;
         std::unique_ptr<tbb::global_control> threads;

@@ -135,10 +135,16 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.mesh = radiosity::premesh(run.scene, run.scene.meshing);
 
     run.report.begin("visibility (Embree BVH)");
-    run.embree = std::make_unique<raytrace::EmbreeScene>(run.mesh, 1e-5 * run.scene.diagonal());
+    run.embree = std::make_unique<raytrace::EmbreeScene>(run.mesh, 1e-5 * run.scene.diagonal(),
+                                                         raytrace::specularTriangles(run.scene));
 
-    run.report.begin("direct light");
     run.lights = std::make_unique<radiosity::DirectLight>(run.scene);
+    run.mirrorImages = radiosity::mirrorImagesFor(run.scene).size();
+    if (run.scene.mirrors.empty()) run.skipped.push_back("virtual lights and shooters (no mirrors)");
+    else if (!run.scene.solver.mirrorImages) run.skipped.push_back("virtual lights and shooters (mirrors ignored)");
+    run.report.begin(run.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
+                                                        run.lights->virtualLightCount(), run.mirrorImages)
+                                          : std::string("direct light"));
     radiosity::computeDirect(run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples, run.solution);
 
     const bool wantGather = options.wantSensors && !run.scene.sensors.empty();

@@ -51,6 +51,7 @@ struct PipelineRun {
     radiosity::Clustering clustering;
     radiosity::ShootingStatistics shooting;
     double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
+    size_t mirrorImages = 0;        ///< image chains used by the image method
     size_t edgeVertices = 0;        ///< vertices whose value came from a point gather
     bool singleChannel = false;     ///< the scene is grey: one channel was solved
     std::unique_ptr<raytrace::EmbreeScene> embree;

@@ -1,5 +1,7 @@
 #include <app/validate_cube.h>
 
+#include <app/validate_runs.h>
+
 #include <app/plot.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
@@ -14,12 +16,6 @@
 #include <map>
 #include <optional>
 #include <sstream>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-extern char** environ;
 
 namespace rayrad::app {
 
@@ -47,26 +43,6 @@ struct Result {
     double solveSeconds = 0, totalSeconds = 0, peakMiB = 0, bytesPerPatch = 0;
     size_t patches = 0;
 };
-
-/// This very program: /proc/self/exe stays valid even if the file was rebuilt meanwhile.
-std::string selfExe() { return "/proc/self/exe"; }
-
-int runChild(const std::vector<std::string>& args, const std::string& logPath) {
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    pid_t pid;
-    int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) return -1;
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 /// The empty cube with sliver input: each 1 m block of a wall is `strips` thin quads
 /// (1 m × 1/strips m), so premeshing off gives the same triangle and cluster counts.

@@ -12,8 +12,8 @@ namespace {
 constexpr double kFarDiameters = 4.0;
 }
 
-double clusterTransfer(const PatchMesh& mesh, const Cluster& source, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance) {
+double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const PatchMesh& receiverMesh,
+                       const Cluster& receiver, const Visibility& vis, double analyticDistance) {
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
     double f = 0;
@@ -22,7 +22,7 @@ double clusterTransfer(const PatchMesh& mesh, const Cluster& source, const Clust
                                   source.projectedArea);
     } else {
         for (uint32_t i : source.patches)
-            f += patchFormFactor(mesh, mesh.patches[i], receiver.centroid, receiver.normal, analyticDistance);
+            f += patchFormFactor(sourceMesh, sourceMesh.patches[i], receiver.centroid, receiver.normal, analyticDistance);
     }
     if (f <= 0) return 0.0;
     int visible = 0, rays = 0;
@@ -32,7 +32,8 @@ double clusterTransfer(const PatchMesh& mesh, const Cluster& source, const Clust
         for (int m = 0; m < k; ++m) repeat |= source.samples[m] == source.samples[k] && receiver.samples[m] == receiver.samples[k];
         if (repeat) continue;
         ++rays;
-        visible += vis.visible(mesh.patches[source.samples[k]].centroid, mesh.patches[receiver.samples[k]].centroid);
+        visible += vis.visible(sourceMesh.patches[source.samples[k]].centroid,
+                               receiverMesh.patches[receiver.samples[k]].centroid);
     }
     return kPi * f * visible / rays;
 }
@@ -52,6 +53,18 @@ void receiverShape(const PatchMesh& mesh, const Cluster& source, const Cluster& 
     };
     double atCentre = kernel(receiver.centroid, receiver.normal);
     if (atCentre <= 0) return;  // the cluster-level transfer is 0 as well
+    // A receiver whose centroid lies (nearly) in the source's plane, with members on
+    // both sides, has a kernel of rounding size at the centre: dividing by it gave
+    // ratios of 1e13 (a mirror image of a box face level with a wall's centroid). Then
+    // normalise by the area-weighted mean over the members instead.
+    double mean = 0, area = 0;
+    for (uint32_t j : receiver.patches) {
+        const Patch& p = mesh.patches[j];
+        mean += p.area * kernel(p.centroid, receiver.normal);
+        area += p.area;
+    }
+    mean /= area;
+    if (atCentre < 1e-3 * mean) atCentre = mean;
     for (size_t k = 0; k < n; ++k) {
         const Patch& p = mesh.patches[receiver.patches[k]];
         shape[k] = kernel(p.centroid, p.normal) / atCentre;

@@ -16,8 +16,9 @@ namespace rayrad::radiosity {
 /// member patches' form factors (each analytic when close). V is the visible fraction of
 /// up to four rays between the clusters' sample patches. Deterministic: the energy
 /// correction repeats it exactly to reconstruct what earlier shots delivered.
-double clusterTransfer(const PatchMesh& mesh, const Cluster& source, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance);
+/// The source may be a mirror image (its own mesh, and a MirrorPath as `vis`).
+double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const PatchMesh& receiverMesh,
+                       const Cluster& receiver, const Visibility& vis, double analyticDistance);
 
 /// How a cluster→cluster shot from `source` is shared among the receiver's patches:
 /// shape[k] multiplies the illuminance computed at the receiver's centroid for member k.

@@ -3,6 +3,7 @@
 #include <radiosity/form_factor.h>
 #include <scene/polygon.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayrad::radiosity {
@@ -24,6 +25,25 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             }
             m_areaLights.push_back(std::move(light));
         }
+    }
+    m_mirrors = scene.mirrors;
+    m_images = mirrorImagesFor(scene);
+    for (const auto& image : m_images) {
+        std::vector<AreaLight> mirrored;
+        for (const auto& a : m_areaLights) {
+            AreaLight v = a;
+            // An odd number of reflections reverses the winding: reverse it back.
+            for (auto& p : v.vertices) p = image.point(p);
+            if (image.reversesWinding()) std::reverse(v.vertices.begin(), v.vertices.end());
+            for (auto& t : v.triangles) {
+                for (auto& p : t) p = image.point(p);
+                if (image.reversesWinding()) std::swap(t[1], t[2]);
+            }
+            v.normal = glm::normalize(image.direction(a.normal));
+            v.luminance = a.luminance * image.weight;
+            mirrored.push_back(std::move(v));
+        }
+        m_imageAreaLights.push_back(std::move(mirrored));
     }
 }
 
@@ -65,6 +85,21 @@ Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis
         e += intensity * (cosTheta / r2);  // E = I cosθ / d²
     }
     for (const auto& a : m_areaLights) e += fromAreaLight(a, x, n, vis, samples, rng);
+    for (size_t i = 0; i < m_images.size(); ++i) {
+        const MirrorImage& image = m_images[i];
+        MirrorPath path(m_mirrors, image, vis);
+        for (const auto& l : m_pointLights) {
+            Vec3 d = image.point(l.position) - x;  // the unfolded path
+            double r2 = glm::dot(d, d);
+            if (r2 <= 0) continue;
+            double cosTheta = glm::dot(n, d) / std::sqrt(r2);
+            if (cosTheta <= 0) continue;
+            Vec3 leaving;
+            if (!path.trace(image.point(l.position), x, &leaving)) continue;
+            e += l.intensityToward(leaving) * image.weight * (cosTheta / r2);  // E = Ks I cosθ / d²
+        }
+        for (const auto& a : m_imageAreaLights[i]) e += fromAreaLight(a, x, n, path, samples, rng);
+    }
     return e;
 }
 

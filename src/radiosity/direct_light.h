@@ -4,6 +4,7 @@
 #include <core/math.h>
 #include <core/random.h>
 #include <core/visibility.h>
+#include <radiosity/mirror_images.h>
 #include <radiosity/patch_mesh.h>
 #include <scene/scene.h>
 
@@ -21,7 +22,9 @@ struct AreaLight {
     std::vector<double> triangleAreas;
 };
 
-/// Evaluates E_direct(x, n) in lx from every primary light, with shadow rays.
+/// Evaluates E_direct(x, n) in lx from every primary light, with shadow rays, and from
+/// their images in the scene's mirrors (virtual lights: the light mirrored along each
+/// chain, × Π Ks, seen only through the mirror polygons).
 class DirectLight {
   public:
     explicit DirectLight(const scene::Scene& scene);
@@ -36,6 +39,7 @@ class DirectLight {
     const std::vector<scene::PointLight>& pointLights() const { return m_pointLights; }
     /// Total flux in lm emitted by all primary lights (luminance-weighted).
     double emittedFlux() const;
+    size_t virtualLightCount() const { return m_images.size() * (m_pointLights.size() + m_areaLights.size()); }
 
   private:
     Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
@@ -43,6 +47,10 @@ class DirectLight {
 
     std::vector<scene::PointLight> m_pointLights;
     std::vector<AreaLight> m_areaLights;
+    std::vector<scene::Mirror> m_mirrors;
+    std::vector<MirrorImage> m_images;
+    /// m_imageAreaLights[i][k]: area light k mirrored along image i, luminance × Π Ks.
+    std::vector<std::vector<AreaLight>> m_imageAreaLights;
 };
 
 }  // namespace rayrad::radiosity

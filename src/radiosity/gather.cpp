@@ -73,6 +73,11 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         m_clusterLuminance.push_back(L / c.area);
         m_clusterPatchSize.push_back(size);
     }
+    m_images = mirrorImagesFor(scene);
+    for (const auto& image : m_images) {
+        m_mirrored.push_back(mirrorGeometry(mesh, clustering, image));
+        m_paths.push_back(std::make_unique<MirrorPath>(scene.mirrors, image, vis));
+    }
 }
 
 Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
@@ -149,22 +154,27 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     // Sum over clusters: near patches by sub-triangles, other patches with their own rays
     // when close, far clusters with one shared ray (form factors still per member), or
     // as one source beyond m_farClusterDiameters when asked.
-    auto contribution = [&](size_t c) {
-        const Cluster& C = m_clustering.clusters[c];
+    // Source s = 0 is the real scene, s = i + 1 its image i in the mirrors.
+    auto contribution = [&](size_t s, size_t c) {
+        const bool real = s == 0;
+        const PatchMesh& mesh = real ? m_mesh : m_mirrored[s - 1].mesh;
+        const Cluster& C = real ? m_clustering.clusters[c] : m_mirrored[s - 1].clustering.clusters[c];
+        const Visibility& vis = real ? m_vis : *m_paths[s - 1];
+        const Rgb weight = real ? Rgb(1.0) : m_images[s - 1].weight;
         double d2 = glm::dot(C.centroid - x, C.centroid - x);
         double asOne = m_farClusterDiameters * C.diameter;
         if (asOne > 0 && C.patches.size() > 1 && d2 > asOne * asOne) {
             double f = formFactorPointApprox(x, n, C.centroid, C.normal, C.projectedArea);
-            bool seen = f > 0 && m_vis.visible(x, m_mesh.patches[C.samples[0]].centroid);
-            return seen ? Rgb(m_clusterLuminance[c] * (kPi * f)) : Rgb(0.0);  // π L_C F V
+            bool seen = f > 0 && vis.visible(x, mesh.patches[C.samples[0]].centroid);
+            return seen ? Rgb(weight * m_clusterLuminance[c] * (kPi * f)) : Rgb(0.0);  // Ks π L_C F V
         }
-        bool hasNear = std::find(nearClusters.begin(), nearClusters.end(), c) != nearClusters.end();
+        bool hasNear = real && std::find(nearClusters.begin(), nearClusters.end(), c) != nearClusters.end();
         double far = kClusterVisibilityDiameters * C.diameter;
         bool shared = C.patches.size() > 1 && d2 > far * far;
         Rgb sum(0.0), sharedSum(0.0);
         for (uint32_t j : C.patches) {
-            const Patch& p = m_mesh.patches[j];
-            Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+            const Patch& p = mesh.patches[j];
+            Vec3 v[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
             if (hasNear) {
                 auto it = std::find_if(near.begin(), near.end(), [j](const Near& e) { return e.patch == j; });
                 if (it != near.end()) {
@@ -172,29 +182,30 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                     continue;
                 }
             }
-            Rgb L = m_solution.reflectedLuminance(m_scene, m_mesh, j);
+            Rgb L = weight * m_solution.reflectedLuminance(m_scene, m_mesh, j);
             if (L == Rgb(0.0)) continue;
             // Analytic within analyticDistance patch diameters, point approximation beyond.
-            double f = patchFormFactor(m_mesh, p, x, n, m_scene.solver.analyticDistance);
+            double f = patchFormFactor(mesh, p, x, n, m_scene.solver.analyticDistance);
             if (f <= 0) continue;
             if (shared) sharedSum += L * (kPi * f);
-            else if (m_vis.visible(x, p.centroid)) sum += L * (kPi * f);  // E = π L F
+            else if (vis.visible(x, p.centroid)) sum += L * (kPi * f);  // E = π L F
         }
-        if (shared && sharedSum != Rgb(0.0) && m_vis.visible(x, m_mesh.patches[C.samples[0]].centroid))
+        if (shared && sharedSum != Rgb(0.0) && vis.visible(x, mesh.patches[C.samples[0]].centroid))
             sum += sharedSum;
         return sum;
     };
-    const size_t count = m_clustering.clusters.size();
+    const size_t clusters = m_clustering.clusters.size();
+    const size_t count = clusters * (1 + m_images.size());
     if (!parallel) {
         Rgb sum(0.0);
-        for (size_t c = 0; c < count; ++c) sum += contribution(c);
+        for (size_t k = 0; k < count; ++k) sum += contribution(k / clusters, k % clusters);
         return sum;
     }
     // Deterministic for any thread count.
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<size_t>(0, count, 16), Rgb(0.0),
         [&](const tbb::blocked_range<size_t>& r, Rgb sum) {
-            for (size_t c = r.begin(); c != r.end(); ++c) sum += contribution(c);
+            for (size_t k = r.begin(); k != r.end(); ++k) sum += contribution(k / clusters, k % clusters);
             return sum;
         },
         [](const Rgb& a, const Rgb& b) { return a + b; });

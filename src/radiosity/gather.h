@@ -4,12 +4,14 @@
 #include <core/visibility.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
+#include <radiosity/mirror_images.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 
 namespace rayrad::radiosity {
@@ -40,6 +42,8 @@ struct SensorValue {
 /// toward x. Corner values are exact direct light plus indirect light gathered at the
 /// corner itself, recursively `levels` deep (memoised), which removes the bias of
 /// patch-constant luminance at edges and corners.
+/// Mirrors: the patches' images are gathered too (patch-constant luminance × Π Ks,
+/// seen only through the mirror polygons).
 class Gatherer {
   public:
     /// Clusters farther than a few of their diameters from the point share one
@@ -80,6 +84,9 @@ class Gatherer {
     std::vector<Rgb> m_clusterLuminance;    ///< area-weighted mean reflected luminance per cluster
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect
+    std::vector<MirrorImage> m_images;
+    std::vector<MirroredGeometry> m_mirrored;                ///< per image
+    std::vector<std::unique_ptr<MirrorPath>> m_paths;        ///< per image
 };
 
 /// Moves a surface point a hair (metres) toward the centroid of its patch, so points on

@@ -138,6 +138,7 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
     for (size_t gi = 0; gi < scene.groups.size(); ++gi) {
         const SurfaceGroup& g = scene.groups[gi];
         int group = static_cast<int>(gi);
+        if (!scene.isPatchSurface(g)) continue;  // mirrors and glass: no radiosity patches
         if (g.polygons.size() == 1 && g.polygons[0].size() == 4 && options.premesh) {
             std::vector<Vec3> q;
             for (uint32_t i : g.polygons[0]) q.push_back(g.positions[i]);

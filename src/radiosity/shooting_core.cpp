@@ -27,6 +27,15 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
       m_clusterOptions(clusters) {
     m_reflectance.reserve(mesh.patches.size());
     for (const auto& p : mesh.patches) m_reflectance.push_back(fromRgb<V>(scene.materials[p.material].reflectance));
+    m_images = mirrorImagesFor(scene);
+    m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr});
+    for (const auto& image : m_images) {
+        m_mirrored.push_back(mirrorGeometry(mesh, clustering, image));
+        m_paths.push_back(std::make_unique<MirrorPath>(scene.mirrors, image, vis));
+    }
+    for (size_t i = 0; i < m_images.size(); ++i)
+        m_sources.push_back({&m_mirrored[i].mesh, &m_mirrored[i].clustering, m_paths[i].get(),
+                             fromRgb<V>(m_images[i].weight), &m_images[i]});
 }
 
 template <class V>
@@ -174,19 +183,32 @@ bool ShootingCore<V>::coplanar(const Cluster& a, const Cluster& b) const {
 }
 
 template <class V>
-void ShootingCore<V>::shootPatches(const Cluster& source, const std::vector<V>& amount, size_t receiver) {
+bool ShootingCore<V>::canReach(const Source& s, size_t c, size_t d) const {
+    if (!s.image) return true;
+    // Some source patch in front of the first mirror, some receiver patch in front of the last.
+    const scene::Mirror& first = m_scene.mirrors[s.image->chain.front()];
+    const scene::Mirror& last = m_scene.mirrors[s.image->chain.back()];
+    bool from = false, to = false;
+    for (uint32_t i : m_clustering.clusters[c].patches) from |= first.side(m_mesh.patches[i].centroid) > 0;
+    for (uint32_t j : m_clustering.clusters[d].patches) to |= last.side(m_mesh.patches[j].centroid) > 0;
+    return from && to;
+}
+
+template <class V>
+void ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver) {
     const Cluster& D = m_clustering.clusters[receiver];
+    const Cluster& C = s.clustering->clusters[c];
     for (uint32_t j : D.patches) {
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
-        for (size_t k = 0; k < source.patches.size(); ++k) {
-            uint32_t i = source.patches[k];
-            if (i == j || amount[k] == V(0.0)) continue;
-            const Patch& src = m_mesh.patches[i];
+        for (size_t k = 0; k < C.patches.size(); ++k) {
+            uint32_t i = C.patches[k];
+            if ((i == j && !s.image) || amount[k] == V(0.0)) continue;  // a patch may see its own image
+            const Patch& src = s.mesh->patches[i];
             Vec3 d = src.centroid - rec.centroid;  // both must face each other
             if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
-            double f = visiblePatchFormFactor(m_mesh, src, rec.centroid, rec.normal, m_options.analyticDistance, m_vis);
-            deltaE += amount[k] * (kPi * f);  // ΔE = π ΔL F
+            double f = visiblePatchFormFactor(*s.mesh, src, rec.centroid, rec.normal, m_options.analyticDistance, *s.vis);
+            deltaE += amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
         }
         if (deltaE != V(0.0)) receive(j, deltaE);
     }
@@ -194,29 +216,38 @@ void ShootingCore<V>::shootPatches(const Cluster& source, const std::vector<V>& 
 
 template <class V>
 void ShootingCore<V>::shootCluster(size_t c, int radius) {
-    const Cluster& C = m_clustering.clusters[c];
     Light& light = m_light[c];
     int r = radius >= 0 ? radius : radiusFor(c);
     const size_t n = m_clustering.clusters.size();
-    std::vector<char> corrected(n, 0);
+    // corrected[s][d]: receiver d already got source s's total in a correction.
+    std::vector<std::vector<char>> corrected(m_sources.size(), std::vector<char>(n, 0));
     const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
 
     if (correcting && light.radius > 0 && r > light.radius) {
-        // r_v grew: the ring old ≤ d < new switches from cluster→cluster to patch→patch.
+        // r_v grew: the ring old ≤ d < new switches from cluster→cluster to patch→patch,
+        // for the real shooter and for each of its mirror images.
+        const Cluster& C = m_clustering.clusters[c];
         std::vector<V> total(C.patches.size());
         for (size_t k = 0; k < C.patches.size(); ++k) total[k] = reflected(C.patches[k]);
-        std::vector<size_t> ring;
-        for (size_t d = 0; d < n; ++d) {
-            int dist = m_clustering.voxelDistance(C, m_clustering.clusters[d]);
-            if (d != c && dist >= light.radius && dist < r && !coplanar(C, m_clustering.clusters[d])) ring.push_back(d);
+        for (size_t si = 0; si < m_sources.size(); ++si) {
+            const Source& s = m_sources[si];
+            const Cluster& Cs = s.clustering->clusters[c];
+            std::vector<size_t> ring;
+            for (size_t d = 0; d < n; ++d) {
+                if (d == c && !s.image) continue;
+                int dist = m_clustering.voxelDistance(Cs, m_clustering.clusters[d]) - imageMargin(s);
+                if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, c, d))
+                    ring.push_back(d);
+            }
+            tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) { correct(s, c, ring[k], total); });
+            for (size_t d : ring) corrected[si][d] = 1;
+            m_stats.corrections += static_cast<int64_t>(ring.size());
         }
-        tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) { correct(c, ring[k], total); });
-        for (size_t d : ring) corrected[d] = 1;
-        m_stats.corrections += static_cast<int64_t>(ring.size());
     }
     if (correcting) r = std::max(r, light.radius);  // r_v never shrinks: each receiver switches once
 
     // The shooter's unshot light leaves now; it may receive some of it back (intra-cluster).
+    const Cluster& C = m_clustering.clusters[c];
     V deltaLC = light.unshot;
     std::vector<V> unshot(C.patches.size());
     for (size_t k = 0; k < C.patches.size(); ++k) {
@@ -225,27 +256,33 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     }
     light.unshot = V(0.0);
 
-    std::atomic<int64_t> clusterTransfers{0}, patchPairs{0};
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
-        int64_t cc = 0, pp = 0;
-        for (size_t d = range.begin(); d != range.end(); ++d) {
-            if (corrected[d]) continue;
-            const Cluster& D = m_clustering.clusters[d];
-            if (d == c ? C.planar : coplanar(C, D)) continue;  // coplanar surfaces exchange no light
-            if (d != c && m_clustering.voxelDistance(C, D) >= r) {
-                double t = clusterTransfer(m_mesh, C, D, m_vis, m_options.analyticDistance);
-                if (t > 0) addPending(C, d, deltaLC * t);  // I_D += ΔL_C π F V
-                ++cc;
-            } else {
-                shootPatches(C, unshot, d);
-                pp += static_cast<int64_t>(C.patches.size() * D.patches.size());
+    for (size_t si = 0; si < m_sources.size(); ++si) {
+        const Source& s = m_sources[si];
+        const Cluster& Cs = s.clustering->clusters[c];
+        std::atomic<int64_t> clusterTransfers{0}, patchPairs{0};
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
+            int64_t cc = 0, pp = 0;
+            for (size_t d = range.begin(); d != range.end(); ++d) {
+                if (corrected[si][d]) continue;
+                const Cluster& D = m_clustering.clusters[d];
+                bool self = d == c && !s.image;
+                if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
+                if (!canReach(s, c, d)) continue;
+                if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
+                    double t = clusterTransfer(*s.mesh, Cs, m_mesh, D, *s.vis, m_options.analyticDistance);
+                    if (t > 0) addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
+                    ++cc;
+                } else {
+                    shootPatches(s, c, unshot, d);
+                    pp += static_cast<int64_t>(C.patches.size() * D.patches.size());
+                }
             }
-        }
-        clusterTransfers += cc;
-        patchPairs += pp;
-    });
-    m_stats.clusterTransfers += clusterTransfers;
-    m_stats.patchPairs += patchPairs;
+            clusterTransfers += cc;
+            patchPairs += pp;
+        });
+        m_stats.clusterTransfers += clusterTransfers;
+        m_stats.patchPairs += patchPairs;
+    }
     light.radius = r;
 }
 

@@ -2,7 +2,10 @@
 #pragma once
 
 #include <radiosity/light_value.h>
+#include <radiosity/mirror_images.h>
 #include <radiosity/shooting_solver.h>
+
+#include <memory>
 
 namespace rayrad::radiosity {
 
@@ -44,6 +47,17 @@ class ShootingCore final : public ShootingCoreBase {
     void sync(RadiositySolution& s) const override;
 
   private:
+    /// Where a shot comes from: the real scene, or its image in a chain of mirrors
+    /// (virtual shooters: mirrored patches and clusters, weight Π Ks, seen only through
+    /// the mirrors). Receivers are always the real patches.
+    struct Source {
+        const PatchMesh* mesh;
+        const Clustering* clustering;
+        const Visibility* vis;
+        V weight;
+        const MirrorImage* image;  ///< null for the real scene
+    };
+
     struct Light {
         V unshot{0.0}, total{0.0}, pendingReflected{0.0};
         int radius = 0;
@@ -56,9 +70,16 @@ class ShootingCore final : public ShootingCoreBase {
     void pull(size_t c);
     void addPending(const Cluster& source, size_t receiver, const V& e);
     void receive(size_t j, const V& deltaE);
-    void shootPatches(const Cluster& source, const std::vector<V>& amount, size_t receiver);
-    void correct(size_t c, size_t d, const std::vector<V>& totalOfSource);  // energy_correction.cpp
+    void shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver);
+    void correct(const Source& s, size_t c, size_t d, const std::vector<V>& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
+    /// False when no light of cluster c can pass through s's mirrors to cluster d.
+    bool canReach(const Source& s, size_t c, size_t d) const;
+    /// Image voxels are the mirrored centroids' cells on the real grid, which the mirror
+    /// plane need not be aligned with: a receiver touching an image across the mirror can
+    /// be one voxel away. Image distances count one voxel less, so touching clusters
+    /// exchange patch→patch (cluster→cluster there put a point source beside the receiver).
+    static int imageMargin(const Source& s) { return s.image ? 1 : 0; }
 
     const scene::Scene& m_scene;
     const PatchMesh& m_mesh;
@@ -69,6 +90,10 @@ class ShootingCore final : public ShootingCoreBase {
     double m_maxStep = 0;
     std::vector<V> m_reflectance, m_direct, m_indirect, m_unshot, m_pending;
     std::vector<Light> m_light;
+    std::vector<MirrorImage> m_images;
+    std::vector<MirroredGeometry> m_mirrored;
+    std::vector<std::unique_ptr<MirrorPath>> m_paths;
+    std::vector<Source> m_sources;  ///< the real scene first, then one per image
     double m_shotSincePushPull = 0;
     double m_powerAtPushPull = 0;
     ShootingStatistics m_stats;

@@ -10,7 +10,7 @@ namespace rayrad::radiosity {
 bool isGreyScene(const scene::Scene& scene) {
     auto grey = [](const Rgb& c) { return c.r == c.g && c.g == c.b; };
     for (const auto& m : scene.materials)
-        if (!grey(m.reflectance) || !grey(m.emission)) return false;
+        if (!grey(m.reflectance) || !grey(m.emission) || !grey(m.specular)) return false;
     for (const auto& l : scene.lights)
         if (!grey(l.intensity)) return false;
     return true;

@@ -1,6 +1,7 @@
 #include <raytrace/embree_scene.h>
 
 #include <core/check.h>
+#include <scene/polygon.h>
 
 #include <embree3/rtcore.h>
 
@@ -26,36 +27,82 @@ struct EmbreeScene::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::string error;
+    unsigned patchGeometry = RTC_INVALID_GEOMETRY_ID;
+    unsigned mirrorGeometry = RTC_INVALID_GEOMETRY_ID;
+    unsigned glassGeometry = RTC_INVALID_GEOMETRY_ID;
+    std::vector<uint32_t> mirrorIndex, glassIndex;  ///< primitive → specular triangle
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
     }
 };
 
-EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon)
-    : m_impl(std::make_unique<Impl>()), m_epsilon(epsilon) {
+namespace {
+constexpr unsigned kOpaqueMask = 1u;  ///< patches and mirrors: block visibility
+constexpr unsigned kGlassMask = 2u;   ///< glass: only primary and secondary rays see it
+}  // namespace
+
+std::vector<SpecularTriangle> specularTriangles(const scene::Scene& scene) {
+    std::vector<SpecularTriangle> out;
+    for (const auto& g : scene.groups) {
+        if (scene.isPatchSurface(g)) continue;
+        for (const auto& poly : g.polygons) {
+            std::vector<Vec3> v;
+            for (uint32_t i : poly) v.push_back(g.positions[i]);
+            Vec3 n = scene::polygonNormal(v);
+            bool glass = scene.materials[g.material].kind == scene::SurfaceKind::Glass;
+            for (const auto& t : scene::triangulate(v))
+                out.push_back({{v[t[0]], v[t[1]], v[t[2]]}, n, g.material, glass});
+        }
+    }
+    return out;
+}
+
+EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const std::vector<SpecularTriangle>& specular)
+    : m_impl(std::make_unique<Impl>()), m_epsilon(epsilon), m_specular(specular) {
     m_impl->device = rtcNewDevice(nullptr);
     if (!m_impl->device) throw InternalError("cannot create an Embree device");
     rtcSetDeviceErrorFunction(m_impl->device, onEmbreeError, &m_impl->error);
     m_impl->scene = rtcNewScene(m_impl->device);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
 
-    RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    // rtcSetNewGeometryBuffer allocates with the padding Embree's 16-byte loads need.
-    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                           3 * sizeof(float), mesh.vertices.size()));
-    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-        vb[3 * i + 0] = static_cast<float>(mesh.vertices[i].x);
-        vb[3 * i + 1] = static_cast<float>(mesh.vertices[i].y);
-        vb[3 * i + 2] = static_cast<float>(mesh.vertices[i].z);
+    // Geometry 0: the patches; then the specular triangles, split by mask.
+    auto addTriangles = [&](const std::vector<Vec3>& vertices, const std::vector<std::array<uint32_t, 3>>& triangles,
+                            unsigned mask) {
+        RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        // rtcSetNewGeometryBuffer allocates with the padding Embree's 16-byte loads need.
+        auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), vertices.size()));
+        for (size_t i = 0; i < vertices.size(); ++i)
+            for (int a = 0; a < 3; ++a) vb[3 * i + a] = static_cast<float>(vertices[i][a]);
+        auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                  3 * sizeof(unsigned), triangles.size()));
+        for (size_t i = 0; i < triangles.size(); ++i)
+            for (int k = 0; k < 3; ++k) ib[3 * i + k] = triangles[i][k];
+        rtcSetGeometryMask(geom, mask);
+        rtcCommitGeometry(geom);
+        unsigned id = rtcAttachGeometry(m_impl->scene, geom);
+        rtcReleaseGeometry(geom);
+        return id;
+    };
+    std::vector<std::array<uint32_t, 3>> patchTriangles;
+    for (const auto& p : mesh.patches) patchTriangles.push_back({p.v[0], p.v[1], p.v[2]});
+    if (!patchTriangles.empty()) m_impl->patchGeometry = addTriangles(mesh.vertices, patchTriangles, kOpaqueMask);
+    for (bool glass : {false, true}) {
+        std::vector<Vec3> vertices;
+        std::vector<std::array<uint32_t, 3>> triangles;
+        std::vector<uint32_t>& index = glass ? m_impl->glassIndex : m_impl->mirrorIndex;
+        for (uint32_t i = 0; i < specular.size(); ++i) {
+            if (specular[i].glass != glass) continue;
+            auto base = static_cast<uint32_t>(vertices.size());
+            for (const auto& v : specular[i].v) vertices.push_back(v);
+            triangles.push_back({base, base + 1, base + 2});
+            index.push_back(i);
+        }
+        if (triangles.empty()) continue;
+        unsigned id = addTriangles(vertices, triangles, glass ? kGlassMask : kOpaqueMask);
+        (glass ? m_impl->glassGeometry : m_impl->mirrorGeometry) = id;
     }
-    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                              3 * sizeof(unsigned), mesh.patches.size()));
-    for (size_t i = 0; i < mesh.patches.size(); ++i)
-        for (int k = 0; k < 3; ++k) ib[3 * i + k] = mesh.patches[i].v[k];
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(m_impl->scene, geom);
-    rtcReleaseGeometry(geom);
     rtcCommitScene(m_impl->scene);
     if (!m_impl->error.empty()) throw InternalError(m_impl->error);
 }
@@ -77,7 +124,7 @@ bool EmbreeScene::visible(const Vec3& from, const Vec3& to) const {
     ray.dir_z = static_cast<float>(d.z / len);
     ray.tnear = static_cast<float>(m_epsilon);
     ray.tfar = static_cast<float>(len - m_epsilon);
-    ray.mask = 0xFFFFFFFFu;  // Debian's Embree has ray masks on: mask 0 would miss everything
+    ray.mask = kOpaqueMask;  // Debian's Embree has ray masks on: glass (mask 2) lets light through
     ray.flags = 0;
     rtcOccluded1(m_impl->scene, &context, &ray);
     return ray.tfar >= 0;  // an occluder sets tfar to -inf
@@ -101,7 +148,12 @@ Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, do
     Hit h;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
     h.found = true;
-    h.patch = rh.hit.primID;
+    if (rh.hit.geomID == m_impl->patchGeometry) {
+        h.patch = rh.hit.primID;
+    } else {
+        h.specular = true;
+        h.patch = (rh.hit.geomID == m_impl->glassGeometry ? m_impl->glassIndex : m_impl->mirrorIndex)[rh.hit.primID];
+    }
     h.u = rh.hit.u;
     h.v = rh.hit.v;
     h.t = rh.ray.tfar;

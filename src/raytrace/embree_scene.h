@@ -3,24 +3,43 @@
 
 #include <core/visibility.h>
 #include <radiosity/patch_mesh.h>
+#include <scene/scene.h>
 
+#include <array>
 #include <memory>
+#include <vector>
 
 namespace rayrad::raytrace {
 
-/// The nearest surface along a ray: patch index, barycentrics (1-u-v, u, v), distance.
+/// A triangle of a mirror or glass surface: in the ray tracer, not in the radiosity mesh.
+struct SpecularTriangle {
+    std::array<Vec3, 3> v;
+    Vec3 normal{0.0};  ///< unit, front side
+    int material = 0;
+    bool glass = false;  ///< glass (clear to visibility) or mirror (opaque)
+};
+
+/// The triangles of every mirror and glass surface.
+std::vector<SpecularTriangle> specularTriangles(const scene::Scene& scene);
+
+/// The nearest surface along a ray: a patch (index, barycentrics (1-u-v, u, v)) or a
+/// specular triangle (index), and the distance.
 struct Hit {
     bool found = false;
-    uint32_t patch = 0;
+    bool specular = false;   ///< index is into the specular triangles, not the patches
+    uint32_t patch = 0;      ///< patch or specular triangle index
     double u = 0, v = 0, t = 0;
 };
 
-/// One Embree device and scene over the patch triangles (RAII). Thread-safe queries.
+/// One Embree device and scene over the patch triangles and the specular triangles
+/// (RAII). Thread-safe queries. Visibility (shadow rays, radiosity) sees patches and
+/// mirrors but not glass: glass is clear to the radiosity and casts no shadow (a ray
+/// mask, geometry mask 2); intersect() sees everything.
 class EmbreeScene : public Visibility {
   public:
     /// `epsilon` (metres) shrinks visibility segments at both ends; pass about 1e-5 of
     /// the scene diagonal so results do not depend on the scene's scale.
-    EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon);
+    EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const std::vector<SpecularTriangle>& specular = {});
     ~EmbreeScene() override;
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -29,11 +48,13 @@ class EmbreeScene : public Visibility {
     /// Nearest hit along origin + t·dir for t in (tnear, tfar); dir need not be unit.
     Hit intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar) const;
     double epsilon() const { return m_epsilon; }
+    const SpecularTriangle& specular(uint32_t i) const { return m_specular[i]; }
 
   private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;
     double m_epsilon;
+    std::vector<SpecularTriangle> m_specular;
 };
 
 }  // namespace rayrad::raytrace

@@ -9,11 +9,58 @@
 
 namespace rayrad::raytrace {
 
+namespace {
+
+/// Fresnel reflectance of unpolarised light at a dielectric boundary; cosI > 0 on the
+/// incident side, eta = n_incident / n_transmitted. 1 for total internal reflection;
+/// `cosT` gets the transmitted angle's cosine.
+double fresnelDielectric(double cosI, double eta, double& cosT) {
+    double sin2T = eta * eta * std::max(0.0, 1 - cosI * cosI);
+    if (sin2T >= 1) return 1.0;
+    cosT = std::sqrt(1 - sin2T);
+    double rs = (eta * cosI - cosT) / (eta * cosI + cosT);
+    double rp = (cosI - eta * cosT) / (cosI + eta * cosT);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+}  // namespace
+
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
-             int areaLightSamples, Random& rng) {
+             int areaLightSamples, Random& rng, int depth) {
     Hit h = embree.intersect(origin, dir, 0.0, std::numeric_limits<double>::infinity());
     if (!h.found) return Rgb(0.0);
+    const Vec3 unit = glm::normalize(dir);
+    if (h.specular) {
+        // Whitted recursion: mirrors reflect (front side only), glass reflects and refracts.
+        const SpecularTriangle& t = embree.specular(h.patch);
+        const scene::Material& m = scene.materials[t.material];
+        if (depth >= scene.render.maxDepth) return Rgb(0.0);
+        Vec3 x = origin + h.t * dir;
+        const double offset = embree.epsilon();
+        double cosI = -glm::dot(unit, t.normal);
+        Vec3 reflected = unit + 2.0 * cosI * t.normal;
+        if (m.kind == scene::SurfaceKind::Mirror) {
+            if (cosI <= 0) return Rgb(0.0);  // the back of a mirror is black
+            return m.specular * shadeRay(scene, mesh, solution, lights, embree, x + offset * t.normal, reflected,
+                                         areaLightSamples, rng, depth + 1);
+        }
+        // Glass: entering from the front (cosI > 0) or leaving through the back.
+        bool entering = cosI > 0;
+        Vec3 n = entering ? t.normal : -t.normal;  // faces the incoming ray
+        double c = std::abs(cosI);
+        double eta = entering ? 1.0 / m.ior : m.ior;
+        double cosT = 0;
+        double R = fresnelDielectric(c, eta, cosT);
+        Rgb L = R * shadeRay(scene, mesh, solution, lights, embree, x + offset * n, reflected, areaLightSamples, rng,
+                             depth + 1);
+        if (R < 1) {
+            Vec3 refracted = eta * unit + (eta * c - cosT) * n;  // Snell's law
+            L += (1 - R) * shadeRay(scene, mesh, solution, lights, embree, x - offset * n, refracted,
+                                    areaLightSamples, rng, depth + 1);
+        }
+        return L;
+    }
     const radiosity::Patch& p = mesh.patches[h.patch];
     if (glm::dot(p.normal, dir) >= 0) return Rgb(0.0);  // back face: surfaces are one-sided
     const scene::Material& m = scene.materials[p.material];
@@ -21,7 +68,7 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     Vec3 x = mesh.pointAt(p, h.u, h.v);
     Rgb L = m.emission;
     if (m.reflectance == Rgb(0.0)) return L;
-    Rgb direct = lights.illuminance(x, p.normal, embree, areaLightSamples, &rng);
+    Rgb direct = lights.illuminance(x, p.normal, embree, areaLightSamples, &rng);  // with virtual lights
     Rgb indirect = solution.vertexIndirect.empty()
                        ? Rgb(0.0)
                        : radiosity::interpolateIndirect(mesh, solution, h.patch, h.u, h.v);
@@ -52,7 +99,7 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                     }
                     Vec3 dir = camera.direction(x + jx, y + jy);
                     sum += shadeRay(scene, mesh, solution, lights, embree, camera.position(), dir,
-                                    options.areaLightSamples, rng);
+                                    options.areaLightSamples, rng, 0);
                 }
                 image.at(x, y) = sum / static_cast<double>(spp);
             }

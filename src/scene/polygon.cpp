@@ -79,4 +79,16 @@ std::vector<std::array<uint32_t, 3>> triangulate(const std::vector<Vec3>& v) {
     return out;
 }
 
+bool polygonContains(const std::vector<Vec3>& v, const Vec3& normal, const Vec3& p) {
+    Vec3 a = glm::abs(normal);
+    int drop = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    int u = (drop + 1) % 3, w = (drop + 2) % 3;
+    bool inside = false;
+    for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+        double ui = v[i][u], wi = v[i][w], uj = v[j][u], wj = v[j][w];
+        if ((wi > p[w]) != (wj > p[w]) && p[u] < (uj - ui) * (p[w] - wi) / (wj - wi) + ui) inside = !inside;
+    }
+    return inside;
+}
+
 }  // namespace rayrad::scene

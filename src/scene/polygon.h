@@ -18,6 +18,9 @@ double polygonArea(const std::vector<Vec3>& positions, const std::vector<uint32_
 double maxPlaneDistance(const std::vector<Vec3>& v);
 /// True when every corner turns the same way around `normal`.
 bool isConvexAround(const std::vector<Vec3>& v, const Vec3& normal);
+/// True when p (a point in the polygon's plane) lies inside the polygon: the crossing
+/// rule in the projection that drops the normal's largest axis.
+bool polygonContains(const std::vector<Vec3>& v, const Vec3& normal, const Vec3& p);
 /// Ear-clipping triangulation of a simple planar polygon; indices into v.
 std::vector<std::array<uint32_t, 3>> triangulate(const std::vector<Vec3>& v);
 

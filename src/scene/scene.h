@@ -11,12 +11,32 @@
 
 namespace rayrad::scene {
 
-/// A Lambertian material; `emission` is non-zero for area lights.
+/// A Lambertian material (`emission` non-zero for area lights), or a specular one: a
+/// mirror (specular reflectance Ks, front side only) or glass (a clear dielectric).
+/// Specular surfaces get no radiosity patches: mirrors act through the image method,
+/// glass only in the ray tracer.
 struct Material {
     std::string name;
+    SurfaceKind kind = SurfaceKind::Diffuse;
     Rgb reflectance{0.0};   ///< diffuse reflectance per channel, in [0, 1)
     Rgb emission{0.0};      ///< emitted luminance per channel, cd/m² (front side only)
+    Rgb specular{0.0};      ///< mirror: Ks per channel, in [0, 1]
+    double ior = 1.5;       ///< glass: index of refraction
     bool isEmissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
+    bool isDiffuse() const { return kind == SurfaceKind::Diffuse; }
+};
+
+/// One planar mirror polygon: reflects across its plane n·x = offset, front side only.
+struct Mirror {
+    std::vector<Vec3> polygon;  ///< CCW seen from the front
+    Vec3 normal{0.0};           ///< unit, front side
+    double offset = 0;          ///< n·x on the plane, m
+    Rgb specular{0.0};          ///< Ks
+    std::string where;          ///< JSON pointer of the object
+
+    double side(const Vec3& p) const { return glm::dot(normal, p) - offset; }  ///< signed distance, m
+    Vec3 reflectPoint(const Vec3& p) const { return p - 2.0 * side(p) * normal; }
+    Vec3 reflectDirection(const Vec3& d) const { return d - 2.0 * glm::dot(d, normal) * normal; }
 };
 
 /// Polygons that share vertices: one quad, one face of a box, a whole sphere or mesh.
@@ -64,6 +84,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<SurfaceGroup> groups;
     std::vector<PointLight> lights;
+    std::vector<Mirror> mirrors;    ///< every polygon of every mirror surface
     std::optional<Camera> camera;
     std::vector<Sensor> sensors;
     MeshingOptions meshing;
@@ -77,6 +98,7 @@ struct Scene {
     double diagonal() const { return glm::length(boundsMax - boundsMin); }
     size_t polygonCount() const;
     bool hasReflectance() const;
+    bool isPatchSurface(const SurfaceGroup& g) const { return materials[g.material].isDiffuse(); }
 };
 
 /// Builds world-space geometry (transforms, boxes, spheres, meshes through assimp) and

@@ -113,11 +113,15 @@ class Builder {
             materialIndex[m.name] = static_cast<int>(s.materials.size());
             Material mat;
             mat.name = m.name;
+            mat.kind = m.kind;
             mat.reflectance = m.reflectance;
+            mat.specular = m.specular;
+            mat.ior = m.ior;
             if (m.emissive && m.luminance > 0) mat.emission = m.color / luminance(m.color) * m.luminance;
             s.materials.push_back(mat);
         }
         for (const auto& o : m_desc.objects) addObject(s, o, materialIndex.at(o.material));
+        collectMirrors(s);
         resolveFluxes(s);
         for (const auto& l : m_desc.lights) s.lights.push_back(makeLight(l));
         if (m_desc.camera) {
@@ -164,6 +168,10 @@ class Builder {
             if (reverse != mirrored) std::reverse(v.begin(), v.end());
             return v;
         };
+        if (s.materials[material].kind == SurfaceKind::Mirror &&
+            (o.kind == ObjectKind::Sphere || o.kind == ObjectKind::Mesh))
+            fail(o.where + "/material", "a mirror must be a quad, polygon or box (the image method needs a few planes, "
+                                        "not a curved surface)");
         switch (o.kind) {
             case ObjectKind::Quad:
             case ObjectKind::Polygon:
@@ -175,7 +183,7 @@ class Builder {
                 break;
             case ObjectKind::Sphere: {
                 SurfaceGroup g = cubeSphere(o.center, o.radius, o.subdivisions);
-                finishMeshGroup(s, std::move(g), m, o.inward != mirrored, material, o.where);
+                finishMeshGroup(s, std::move(g), m, o.inward != mirrored, material, o.where, o.keepAbove);
                 break;
             }
             case ObjectKind::Mesh: {
@@ -183,19 +191,29 @@ class Builder {
                 SurfaceGroup g;
                 g.positions = std::move(mesh.positions);
                 g.polygons = std::move(mesh.triangles);
-                finishMeshGroup(s, std::move(g), m, mirrored, material, o.where);
+                finishMeshGroup(s, std::move(g), m, mirrored, material, o.where, o.keepAbove);
                 break;
             }
         }
     }
 
-    /// Transforms a triangle mesh, drops zero-area and duplicate triangles (counted).
+    /// Transforms a triangle mesh, keeps the triangles above the clipping planes, drops
+    /// zero-area and duplicate triangles (counted) and vertices no triangle uses.
     void finishMeshGroup(Scene& s, SurfaceGroup g, const glm::dmat4& m, bool reverse, int material,
-                         const std::string& where) {
+                         const std::string& where, const std::vector<std::pair<Vec3, double>>& keepAbove) {
         for (auto& p : g.positions) p = transformPoint(m, p);
+        double size = 0;
+        for (const auto& p : g.positions) size = std::max(size, glm::length(p - g.positions[0]));
+        auto above = [&](const std::vector<uint32_t>& t) {
+            for (const auto& [n, offset] : keepAbove)
+                for (uint32_t i : t)
+                    if (glm::dot(n, g.positions[i]) - offset < -1e-9 * size) return false;
+            return true;
+        };
         std::vector<std::vector<uint32_t>> kept;
         std::map<std::array<uint32_t, 3>, int> seen;
         for (auto t : g.polygons) {
+            if (!above(t)) continue;
             if (reverse) std::reverse(t.begin(), t.end());
             const Vec3 &a = g.positions[t[0]], &b = g.positions[t[1]], &c = g.positions[t[2]];
             double scale = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
@@ -208,11 +226,39 @@ class Builder {
             }
             kept.push_back(t);
         }
-        if (kept.empty()) fail(where, "every triangle of the mesh has zero area");
+        if (kept.empty())
+            fail(where, keepAbove.empty() ? "every triangle of the mesh has zero area"
+                                          : "no triangle of the mesh is above the \"keep_above\" planes");
+        // Renumber the vertices the kept triangles use.
+        std::vector<int64_t> renumber(g.positions.size(), -1);
+        std::vector<Vec3> used;
+        for (auto& t : kept)
+            for (auto& i : t) {
+                if (renumber[i] < 0) renumber[i] = static_cast<int64_t>(used.size()), used.push_back(g.positions[i]);
+                i = static_cast<uint32_t>(renumber[i]);
+            }
+        g.positions = std::move(used);
         g.polygons = std::move(kept);
         g.material = material;
         g.where = where;
         s.groups.push_back(std::move(g));
+    }
+
+    /// Every polygon of every mirror surface becomes a Mirror (its plane and outline).
+    static void collectMirrors(Scene& s) {
+        for (const auto& g : s.groups) {
+            const Material& mat = s.materials[g.material];
+            if (mat.kind != SurfaceKind::Mirror) continue;
+            for (const auto& poly : g.polygons) {
+                Mirror m;
+                for (uint32_t i : poly) m.polygon.push_back(g.positions[i]);
+                m.normal = polygonNormal(m.polygon);
+                m.offset = glm::dot(m.normal, m.polygon[0]);
+                m.specular = mat.specular;
+                m.where = g.where;
+                s.mirrors.push_back(std::move(m));
+            }
+        }
     }
 
     /// flux_lm → luminance: a one-sided Lambertian emitter of area A and luminance L

@@ -12,11 +12,17 @@
 
 namespace rayrad::scene {
 
-/// A Lambertian material, optionally emissive (an area light).
+enum class SurfaceKind { Diffuse, Mirror, Glass };
+
+/// A Lambertian material, optionally emissive (an area light); or a planar mirror or
+/// glass (specular, for the image method and the ray tracer).
 struct MaterialDesc {
     std::string name;
     std::string where;               ///< JSON pointer, for messages
+    SurfaceKind kind = SurfaceKind::Diffuse;
     Rgb reflectance{0.0};            ///< diffuse reflectance per channel, in [0, 1)
+    Rgb specular{0.0};               ///< mirror: specular reflectance Ks per channel, in [0, 1]
+    double ior = 1.5;                ///< glass: index of refraction
     bool emissive = false;
     Rgb color{1.0};                  ///< emission colour (scaled to the given luminance)
     double luminance = 0.0;          ///< emitted luminance Y in cd/m² (if given)
@@ -35,6 +41,9 @@ struct ObjectDesc {
     double radius = 1.0;
     int subdivisions = 8;            ///< sphere: 12·n² triangles (a projected cube)
     bool inward = false;             ///< box/sphere: normals face the inside
+    /// sphere/mesh: keep only triangles with every vertex on the side n·x ≥ offset of
+    /// each plane (n, offset), world space; cuts a hemisphere or a quarter sphere.
+    std::vector<std::pair<Vec3, double>> keepAbove;
     std::string file;                ///< mesh: path as written in the scene file
     std::string resolvedFile;        ///< mesh: path relative to the working directory
     glm::dmat4 transform{1.0};       ///< object → world

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -58,8 +59,26 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name) {
     d.name = name;
     d.where = m.path();
     std::string type = m.string("type").value_or("diffuse");
-    if (type != "diffuse" && type != "emissive") {
-        m.error("type", fmt::format("unknown material type \"{}\" (expected \"diffuse\" or \"emissive\")", type));
+    static const std::vector<std::string> kTypes = {"diffuse", "emissive", "mirror", "glass"};
+    if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end()) {
+        std::string hint = closestMatch(type, kTypes);
+        m.error("type", fmt::format("unknown material type \"{}\" ({})", type,
+                                    hint.empty() ? "expected diffuse, emissive, mirror or glass"
+                                                 : fmt::format("did you mean \"{}\"?", hint)));
+    }
+    if (type == "mirror") {
+        d.kind = SurfaceKind::Mirror;
+        m.required("specular_reflectance");
+        d.specular = m.rgb("specular_reflectance", 0.0, 1.0, /*hiInclusive=*/true).value_or(Rgb(1.0));
+        m.finish();
+        return d;
+    }
+    if (type == "glass") {
+        d.kind = SurfaceKind::Glass;
+        d.ior = m.number("ior", 1.5);
+        if (!(d.ior >= 1.0 && d.ior <= 4.0)) m.error("ior", fmt::format("expected an index of refraction in [1, 4], got {}", d.ior));
+        m.finish();
+        return d;
     }
     d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/false).value_or(Rgb(0.0));
     if (type == "emissive") {
@@ -114,6 +133,26 @@ bool parseFacing(JsonObject& o, bool defaultInward) {
     if (*f == "outward") return false;
     o.error("facing", fmt::format("expected \"inward\" or \"outward\", got \"{}\"", *f));
     return defaultInward;
+}
+
+/// "keep_above": [[nx, ny, nz, offset], ...]: keep triangles with n·x ≥ offset.
+std::vector<std::pair<Vec3, double>> parseKeepAbove(JsonObject& o) {
+    std::vector<std::pair<Vec3, double>> planes;
+    const json* a = o.array("keep_above");
+    if (!a) return planes;
+    for (size_t i = 0; i < a->size(); ++i) {
+        const json& p = (*a)[i];
+        bool ok = p.is_array() && p.size() == 4;
+        for (size_t k = 0; ok && k < 4; ++k) ok = p[k].is_number() && std::isfinite(p[k].get<double>());
+        Vec3 n = ok ? Vec3(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()) : Vec3(0.0);
+        if (!ok || glm::length(n) == 0) {
+            o.error("keep_above", fmt::format("entry {}: expected [nx, ny, nz, offset] with a non-zero normal", i));
+            continue;
+        }
+        double len = glm::length(n);
+        planes.emplace_back(n / len, p[3].get<double>() / len);
+    }
+    return planes;
 }
 
 ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials, const std::string& sceneDir) {
@@ -171,6 +210,7 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
             d.radius = o.positive("radius", 1.0);
             d.subdivisions = o.integer("subdivisions", 8, 1, 512);
             d.inward = parseFacing(o, false);
+            d.keepAbove = parseKeepAbove(o);
             break;
         }
         case ObjectKind::Mesh: {
@@ -178,6 +218,7 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
             d.file = o.string("file").value_or("");
             std::filesystem::path p(d.file);
             d.resolvedFile = p.is_absolute() ? p.string() : (std::filesystem::path(sceneDir) / p).string();
+            d.keepAbove = parseKeepAbove(o);
             break;
         }
     }
@@ -321,6 +362,15 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
     d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
     d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
+    if (auto mode = r.string("mirrors")) {
+        if (*mode == "image") d.solver.mirrorImages = true;
+        else if (*mode == "ignore") d.solver.mirrorImages = false;
+        else r.error("mirrors", fmt::format("expected \"image\" or \"ignore\", got \"{}\"", *mode));
+    }
+    d.solver.mirrorDepth = r.integer("mirror_depth", d.solver.mirrorDepth, 1, 64);
+    d.solver.mirrorMinWeight = r.number("mirror_min_weight", d.solver.mirrorMinWeight);
+    if (!(d.solver.mirrorMinWeight > 0 && d.solver.mirrorMinWeight < 1))
+        r.error("mirror_min_weight", "expected a number in (0, 1)");
     if (auto rec = r.string("reconstruction")) {
         if (*rec == "linear") d.solver.linearReconstruction = true;
         else if (*rec == "average") d.solver.linearReconstruction = false;
@@ -357,6 +407,7 @@ void parseRender(JsonObject r, SceneDesc& d) {
     d.render.areaLightSamples = r.integer("area_light_samples", d.render.areaLightSamples, 1, 4096);
     d.render.sensorAreaLightSamples =
         r.integer("sensor_area_light_samples", d.render.sensorAreaLightSamples, 1, 1 << 20);
+    d.render.maxDepth = r.integer("max_depth", d.render.maxDepth, 0, 64);
     r.finish();
 }
 

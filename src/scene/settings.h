@@ -74,6 +74,11 @@ struct SolverOptions {
     /// Surfaces that touch without a shared mesh line (a box standing on a floor) are
     /// left to the reconstruction: a floor vertex near the box's foot is not on the seam.
     int edgeGatherLevels = 3;
+    /// Planar mirrors in the radiosity by the image method (virtual lights and virtual
+    /// shooters); false ignores them there (the ray tracer still shows reflections).
+    bool mirrorImages = true;
+    int mirrorDepth = 4;             ///< reflections per image chain
+    double mirrorMinWeight = 1e-3;   ///< drop chains whose Π Ks falls below this
     /// Solve one channel instead of three when every reflectance and light is grey.
     bool oneChannelWhenGrey = true;
 };
@@ -84,6 +89,7 @@ struct RenderOptions {
     uint64_t seed = 1;            ///< the same seed gives the same image
     int areaLightSamples = 16;    ///< shadow rays per area light per hit
     int sensorAreaLightSamples = 256;  ///< shadow rays per area light at a sensor
+    int maxDepth = 8;             ///< Whitted recursion through mirrors and glass
 };
 
 }  // namespace rayrad::scene

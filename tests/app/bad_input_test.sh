@@ -52,6 +52,14 @@ expect "reflectance >= 1" "reflectance.json: /materials/white/reflectance: expec
 scene mesh "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"missing.obj\", \"material\": \"white\"}], $good_light}"
 expect "missing mesh" "mesh.json: /objects/0/file: mesh file" -- solve "$work/mesh.json"
 
+mirror_materials='"materials": {"white": {"reflectance": 0.5}, "m": {"type": "mirror", "specular_reflectance": 0.9}}'
+scene curved_mirror "{$mirror_materials, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\"}], $good_light}"
+expect "curved mirror" "curved_mirror.json: /objects/0/material: a mirror must be a quad, polygon or box" -- solve "$work/curved_mirror.json"
+scene mirror_type "{\"materials\": {\"white\": {\"type\": \"mirorr\"}}, $good_box, $good_light}"
+expect "material type typo" "mirror_type.json: /materials/white/type: unknown material type \"mirorr\" (did you mean \"mirror\"?)" -- solve "$work/mirror_type.json"
+scene mirror_ks "{\"materials\": {\"white\": {\"reflectance\": 0.5}, \"m\": {\"type\": \"mirror\", \"specular_reflectance\": 1.5}}, $good_box, $good_light}"
+expect "mirror Ks > 1" "mirror_ks.json: /materials/m/specular_reflectance: expected values in [0, 1]" -- solve "$work/mirror_ks.json"
+
 expect "missing scene" "$work/nothere.json: no such file" -- solve "$work/nothere.json"
 
 scene good "{$good_materials, $good_box, $good_light, $good_camera}"

@@ -25,33 +25,48 @@ app::PipelineRun renderCornell(int size, int spp, const std::string& maxEdge) {
     return app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), o);
 }
 
-}  // namespace
-
 // Threshold (documented in docs/validation.md): a pixel fails when its luminance differs
 // from the reference by more than 2% + 0.5 cd/m² (tiny absolute floor for black pixels);
 // at most 0.5% of the pixels may fail. The render is deterministic for a given seed, so
 // on the machine that made the reference no pixel fails; the margin absorbs differences
-// in floating-point libraries between machines.
-TEST_CASE("Cornell box 64x64 matches the golden image", "[image]") {
-    auto run = renderCornell(64, 4, "0.1");
-    REQUIRE(run.image);
-    std::string refPath = test::sourcePath("tests/data/cornell_64.exr");
-    if (std::getenv("RAYRAD_UPDATE_GOLDEN")) tonemap::writeExr(refPath, *run.image, "golden image for golden_image_test");
+// in floating-point libraries between machines. RAYRAD_UPDATE_GOLDEN=1 rewrites it.
+void checkAgainstGolden(const HdrImage& image, const std::string& relativePath) {
+    std::string refPath = test::sourcePath(relativePath);
+    if (std::getenv("RAYRAD_UPDATE_GOLDEN")) tonemap::writeExr(refPath, image, "golden image for golden_image_test");
     REQUIRE(std::filesystem::exists(refPath));
     HdrImage ref = tonemap::readImage(refPath);
-    REQUIRE(ref.width == run.image->width);
-    REQUIRE(ref.height == run.image->height);
+    REQUIRE(ref.width == image.width);
+    REQUIRE(ref.height == image.height);
     int fails = 0, worstX = 0, worstY = 0;
     double worst = 0;
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
-            double a = luminance(run.image->at(x, y)), b = luminance(ref.at(x, y));
+            double a = luminance(image.at(x, y)), b = luminance(ref.at(x, y));
             double excess = std::abs(a - b) - (0.02 * b + 0.5);
             if (excess > 0) ++fails;
             if (std::abs(a - b) > worst) worst = std::abs(a - b), worstX = x, worstY = y;
         }
     INFO("failing pixels " << fails << ", worst difference " << worst << " cd/m² at (" << worstX << ", " << worstY << ")");
     CHECK(fails <= ref.width * ref.height / 200);
+}
+
+}  // namespace
+
+TEST_CASE("Cornell box 64x64 matches the golden image", "[image]") {
+    auto run = renderCornell(64, 4, "0.1");
+    REQUIRE(run.image);
+    checkAgainstGolden(*run.image, "tests/data/cornell_64.exr");
+}
+
+TEST_CASE("mirror room 64x48 matches the golden image", "[image][mirrors]") {
+    app::PipelineOptions o;
+    o.quiet = true;
+    o.wantImage = true;
+    o.wantSensors = false;
+    o.overrides = {{"camera.resolution", "[64, 48]"}, {"render.spp", "4"}, {"radiosity.max_edge", "0.4"}};
+    auto run = app::runPipeline(test::sourcePath("scenes/mirror_room/mirror_room.json"), o);
+    REQUIRE(run.image);
+    checkAgainstGolden(*run.image, "tests/data/mirror_room_64x48.exr");
 }
 
 TEST_CASE("the same seed gives a bit-identical image", "[image]") {

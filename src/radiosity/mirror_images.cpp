@@ -1,0 +1,105 @@
+#include <radiosity/mirror_images.h>
+
+#include <scene/polygon.h>
+
+#include <cmath>
+
+namespace rayrad::radiosity {
+
+namespace {
+
+/// The reflection across the plane n·x = offset as a 4×4 matrix: x − 2 (n·x − offset) n.
+glm::dmat4 reflection(const scene::Mirror& m) {
+    glm::dmat4 r(1.0);
+    for (int c = 0; c < 3; ++c)
+        for (int row = 0; row < 3; ++row) r[c][row] -= 2.0 * m.normal[row] * m.normal[c];
+    for (int row = 0; row < 3; ++row) r[3][row] = 2.0 * m.offset * m.normal[row];
+    return r;
+}
+
+/// True when some vertex of b lies strictly in front of a's plane.
+bool partlyInFront(const scene::Mirror& a, const scene::Mirror& b) {
+    double scale = 0;
+    for (const auto& p : a.polygon) scale = std::max(scale, glm::length(p - a.polygon[0]));
+    for (const auto& p : b.polygon)
+        if (a.side(p) > 1e-9 * scale) return true;
+    return false;
+}
+
+void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits, const MirrorImage& image,
+            std::vector<MirrorImage>& out) {
+    if (static_cast<int>(image.chain.size()) >= limits.maxDepth) return;
+    for (int k = 0; k < static_cast<int>(mirrors.size()); ++k) {
+        if (!image.chain.empty()) {
+            const scene::Mirror& last = mirrors[image.chain.back()];
+            if (image.chain.back() == k || !partlyInFront(last, mirrors[k]) || !partlyInFront(mirrors[k], last)) continue;
+        }
+        MirrorImage next = image;
+        next.chain.push_back(k);
+        next.transform = reflection(mirrors[k]) * image.transform;
+        next.weight = image.weight * mirrors[k].specular;
+        if (luminance(next.weight) < limits.minWeight) continue;
+        out.push_back(next);
+        extend(mirrors, limits, next, out);
+    }
+}
+
+}  // namespace
+
+std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits) {
+    std::vector<MirrorImage> out;
+    extend(mirrors, limits, MirrorImage{}, out);
+    return out;
+}
+
+std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene) {
+    if (!scene.solver.mirrorImages) return {};
+    return enumerateMirrorImages(scene.mirrors, {scene.solver.mirrorDepth, scene.solver.mirrorMinWeight});
+}
+
+MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& clustering, const MirrorImage& image) {
+    MirroredGeometry g{mesh, clustering};
+    for (auto& v : g.mesh.vertices) v = image.point(v);
+    for (auto& p : g.mesh.patches) {
+        if (image.reversesWinding()) std::swap(p.v[1], p.v[2]);
+        computeGeometry(g.mesh, p);
+    }
+    for (auto& c : g.clustering.clusters) {
+        c.centroid = image.point(c.centroid);
+        c.normal = image.direction(c.normal);
+        for (int a = 0; a < 3 && clustering.voxelSize > 0; ++a)
+            c.voxel[a] = static_cast<int>(std::floor((c.centroid[a] - clustering.origin[a]) / clustering.voxelSize));
+    }
+    return g;
+}
+
+bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving) const {
+    // Walk back from the receiver: the segment toward the current image must cross the
+    // chain's last mirror inside its polygon; the crossing becomes the next start, and
+    // the image steps back by that reflection.
+    Vec3 from = receiver;
+    Vec3 image = imagePoint;
+    for (size_t k = m_image.chain.size(); k-- > 0;) {
+        const scene::Mirror& m = m_mirrors[m_image.chain[k]];
+        double a = m.side(from), b = m.side(image);
+        if (!(a > 0 && b < 0)) return false;  // light arrives on the mirror's front side only
+        Vec3 hit = from + (a / (a - b)) * (image - from);
+        if (!scene::polygonContains(m.polygon, m.normal, hit)) return false;
+        if (!m_scene.visible(from, hit)) return false;
+        from = hit;
+        image = m.reflectPoint(image);
+    }
+    if (!m_scene.visible(from, image)) return false;  // the first leg, from the real source
+    if (leaving) *leaving = glm::normalize(from - image);
+    return true;
+}
+
+bool MirrorPath::visible(const Vec3& from, const Vec3& to) const {
+    // The image end is the one behind the last mirror of the chain.
+    const scene::Mirror& last = m_mirrors[m_image.chain.back()];
+    if (last.side(from) < 0 && last.side(to) > 0) return trace(from, to);
+    if (last.side(to) < 0 && last.side(from) > 0) return trace(to, from);
+    return false;
+}
+
+}  // namespace rayrad::radiosity
