@@ -4,6 +4,7 @@
 #include <radiosity/mirror_images.h>
 #include <raytrace/camera.h>
 
+#include "pipeline_test_util.h"
 #include "test_support.h"
 
 #include <fmt/format.h>
@@ -12,16 +13,7 @@
 
 using namespace rayrad;
 
-namespace {
-
-app::PipelineOptions quiet(std::vector<scene::Override> o = {}) {
-    app::PipelineOptions p;
-    p.quiet = true;
-    p.overrides = std::move(o);
-    return p;
-}
-
-}  // namespace
+using test::quiet;
 
 TEST_CASE("closed diffuse sphere: uniform indirect rho/(1-rho) Phi/A for rho 0.3 0.7 0.9", "[solver][mirrors]") {
     double rho = GENERATE(0.3, 0.7, 0.9);
@@ -61,9 +53,7 @@ TEST_CASE("SPH2 and SPH4: total illuminance at the paper's points within the pap
 
 TEST_CASE("two facing mirrors: images of images stop at the depth and weight limits", "[mirrors]") {
     auto mirror = [](double x, double nx, double ks) {
-        scene::Mirror m;
-        double s = nx > 0 ? 1 : -1;  // CCW seen from the side the normal points to
-        m.polygon = {{x, 0, 0}, {x, s * 1.0, 0}, {x, s * 1.0, 1}, {x, 0, 1}};
+        scene::Mirror m;  // CCW seen from the side the normal points to
         if (nx < 0) m.polygon = {{x, 0, 0}, {x, 0, 1}, {x, 1, 1}, {x, 1, 0}};
         else m.polygon = {{x, 0, 0}, {x, 1, 0}, {x, 1, 1}, {x, 0, 1}};
         m.normal = {nx, 0, 0};

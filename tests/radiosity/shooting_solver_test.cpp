@@ -3,6 +3,7 @@
 #include <radiosity/shooting_solver.h>
 
 #include "scene/scene_test_util.h"
+#include "pipeline_test_util.h"
 #include "test_support.h"
 
 #include <tbb/global_control.h>
@@ -14,12 +15,7 @@ using namespace rayrad;
 
 namespace {
 
-app::PipelineOptions quiet(std::vector<scene::Override> o = {}) {
-    app::PipelineOptions p;
-    p.quiet = true;
-    p.overrides = std::move(o);
-    return p;
-}
+using test::quiet;
 
 }  // namespace
 
