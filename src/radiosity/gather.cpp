@@ -73,11 +73,7 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         m_clusterLuminance.push_back(L / c.area);
         m_clusterPatchSize.push_back(size);
     }
-    m_images = mirrorImagesFor(scene);
-    for (const auto& image : m_images) {
-        m_mirrored.push_back(mirrorGeometry(mesh, clustering, image));
-        m_paths.push_back(std::make_unique<MirrorPath>(scene.mirrors, image, vis));
-    }
+    m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
 }
 
 Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
@@ -157,10 +153,11 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     // Source s = 0 is the real scene, s = i + 1 its image i in the mirrors.
     auto contribution = [&](size_t s, size_t c) {
         const bool real = s == 0;
-        const PatchMesh& mesh = real ? m_mesh : m_mirrored[s - 1].mesh;
-        const Cluster& C = real ? m_clustering.clusters[c] : m_mirrored[s - 1].clustering.clusters[c];
-        const Visibility& vis = real ? m_vis : *m_paths[s - 1];
-        const Rgb weight = real ? Rgb(1.0) : m_images[s - 1].weight;
+        const MirrorView* view = real ? nullptr : m_mirrorViews[s - 1].get();
+        const PatchMesh& mesh = real ? m_mesh : view->geometry.mesh;
+        const Cluster& C = real ? m_clustering.clusters[c] : view->geometry.clustering.clusters[c];
+        const Visibility& vis = real ? m_vis : *view->path;
+        const Rgb weight = real ? Rgb(1.0) : view->image.weight;
         double d2 = glm::dot(C.centroid - x, C.centroid - x);
         double asOne = m_farClusterDiameters * C.diameter;
         if (asOne > 0 && C.patches.size() > 1 && d2 > asOne * asOne) {
@@ -195,7 +192,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         return sum;
     };
     const size_t clusters = m_clustering.clusters.size();
-    const size_t count = clusters * (1 + m_images.size());
+    const size_t count = clusters * (1 + m_mirrorViews.size());
     if (!parallel) {
         Rgb sum(0.0);
         for (size_t k = 0; k < count; ++k) sum += contribution(k / clusters, k % clusters);

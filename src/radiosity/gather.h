@@ -84,9 +84,7 @@ class Gatherer {
     std::vector<Rgb> m_clusterLuminance;    ///< area-weighted mean reflected luminance per cluster
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect
-    std::vector<MirrorImage> m_images;
-    std::vector<MirroredGeometry> m_mirrored;                ///< per image
-    std::vector<std::unique_ptr<MirrorPath>> m_paths;        ///< per image
+    std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
 };
 
 /// Moves a surface point a hair (metres) toward the centroid of its patch, so points on

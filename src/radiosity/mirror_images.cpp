@@ -102,4 +102,17 @@ bool MirrorPath::visible(const Vec3& from, const Vec3& to) const {
     return false;
 }
 
+std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const PatchMesh& mesh,
+                                                        const Clustering& clustering, const Visibility& vis) {
+    std::vector<std::unique_ptr<MirrorView>> views;
+    for (auto& image : mirrorImagesFor(scene)) {
+        auto view = std::make_unique<MirrorView>();
+        view->image = std::move(image);
+        view->geometry = mirrorGeometry(mesh, clustering, view->image);
+        view->path = std::make_unique<MirrorPath>(scene.mirrors, view->image, vis);
+        views.push_back(std::move(view));
+    }
+    return views;
+}
+
 }  // namespace rayrad::radiosity

@@ -8,6 +8,8 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <memory>
+
 #include <vector>
 
 namespace rayrad::radiosity {
@@ -50,6 +52,19 @@ struct MirroredGeometry {
     Clustering clustering;
 };
 MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& clustering, const MirrorImage& image);
+
+class MirrorPath;
+
+/// One image of the scene ready for transfers: the chain, the mirrored patches and
+/// clusters, and visibility through the chain (which refers to `image`, so views are
+/// held by pointer and never move).
+struct MirrorView {
+    MirrorImage image;
+    MirroredGeometry geometry;
+    std::unique_ptr<MirrorPath> path;
+};
+std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const PatchMesh& mesh,
+                                                        const Clustering& clustering, const Visibility& vis);
 
 /// Visibility through a mirror chain, as an adaptor of the scene's: `visible(a, b)` is
 /// true when one end is an image point (behind the last mirror) and the other a real

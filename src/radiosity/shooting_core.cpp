@@ -27,15 +27,24 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
       m_clusterOptions(clusters) {
     m_reflectance.reserve(mesh.patches.size());
     for (const auto& p : mesh.patches) m_reflectance.push_back(fromRgb<V>(scene.materials[p.material].reflectance));
-    m_images = mirrorImagesFor(scene);
-    m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr});
-    for (const auto& image : m_images) {
-        m_mirrored.push_back(mirrorGeometry(mesh, clustering, image));
-        m_paths.push_back(std::make_unique<MirrorPath>(scene.mirrors, image, vis));
+    m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
+    m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
+    for (const auto& view : m_mirrorViews) {
+        Source s{&view->geometry.mesh, &view->geometry.clustering, view->path.get(), fromRgb<V>(view->image.weight),
+                 &view->image, {}, {}};
+        const scene::Mirror& first = scene.mirrors[view->image.chain.front()];
+        const scene::Mirror& last = scene.mirrors[view->image.chain.back()];
+        for (const Cluster& C : clustering.clusters) {
+            bool sends = false, receives = false;
+            for (uint32_t i : C.patches) {
+                sends |= first.side(mesh.patches[i].centroid) > 0;
+                receives |= last.side(mesh.patches[i].centroid) > 0;
+            }
+            s.sends.push_back(sends);
+            s.receives.push_back(receives);
+        }
+        m_sources.push_back(std::move(s));
     }
-    for (size_t i = 0; i < m_images.size(); ++i)
-        m_sources.push_back({&m_mirrored[i].mesh, &m_mirrored[i].clustering, m_paths[i].get(),
-                             fromRgb<V>(m_images[i].weight), &m_images[i]});
 }
 
 template <class V>
@@ -180,18 +189,6 @@ bool ShootingCore<V>::coplanar(const Cluster& a, const Cluster& b) const {
     if (!a.planar || !b.planar || glm::dot(a.normal, b.normal) < 1 - 1e-12) return false;
     double scale = 1e-9 * (1 + a.diameter + b.diameter);
     return std::abs(glm::dot(b.centroid - a.centroid, a.normal)) < scale;
-}
-
-template <class V>
-bool ShootingCore<V>::canReach(const Source& s, size_t c, size_t d) const {
-    if (!s.image) return true;
-    // Some source patch in front of the first mirror, some receiver patch in front of the last.
-    const scene::Mirror& first = m_scene.mirrors[s.image->chain.front()];
-    const scene::Mirror& last = m_scene.mirrors[s.image->chain.back()];
-    bool from = false, to = false;
-    for (uint32_t i : m_clustering.clusters[c].patches) from |= first.side(m_mesh.patches[i].centroid) > 0;
-    for (uint32_t j : m_clustering.clusters[d].patches) to |= last.side(m_mesh.patches[j].centroid) > 0;
-    return from && to;
 }
 
 template <class V>

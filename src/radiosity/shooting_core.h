@@ -56,6 +56,9 @@ class ShootingCore final : public ShootingCoreBase {
         const Visibility* vis;
         V weight;
         const MirrorImage* image;  ///< null for the real scene
+        /// Images only, per cluster: some patch in front of the chain's first mirror (it
+        /// can send through the chain) / of its last mirror (it can receive). Static.
+        std::vector<char> sends, receives;
     };
 
     struct Light {
@@ -74,7 +77,7 @@ class ShootingCore final : public ShootingCoreBase {
     void correct(const Source& s, size_t c, size_t d, const std::vector<V>& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
     /// False when no light of cluster c can pass through s's mirrors to cluster d.
-    bool canReach(const Source& s, size_t c, size_t d) const;
+    static bool canReach(const Source& s, size_t c, size_t d) { return !s.image || (s.sends[c] && s.receives[d]); }
     /// Image voxels are the mirrored centroids' cells on the real grid, which the mirror
     /// plane need not be aligned with: a receiver touching an image across the mirror can
     /// be one voxel away. Image distances count one voxel less, so touching clusters
@@ -90,9 +93,7 @@ class ShootingCore final : public ShootingCoreBase {
     double m_maxStep = 0;
     std::vector<V> m_reflectance, m_direct, m_indirect, m_unshot, m_pending;
     std::vector<Light> m_light;
-    std::vector<MirrorImage> m_images;
-    std::vector<MirroredGeometry> m_mirrored;
-    std::vector<std::unique_ptr<MirrorPath>> m_paths;
+    std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
     std::vector<Source> m_sources;  ///< the real scene first, then one per image
     double m_shotSincePushPull = 0;
     double m_powerAtPushPull = 0;
