@@ -12,8 +12,9 @@ namespace {
 constexpr double kFarDiameters = 4.0;
 }
 
-double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const PatchMesh& receiverMesh,
-                       const Cluster& receiver, const Visibility& vis, double analyticDistance) {
+double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
+                       const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
+                       double analyticDistance) {
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
     double f = 0;
@@ -29,10 +30,10 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
     for (int k = 0; k < 4; ++k) {
         // Skip repeated pairs (small clusters list the same member several times).
         bool repeat = false;
-        for (int m = 0; m < k; ++m) repeat |= source.samples[m] == source.samples[k] && receiver.samples[m] == receiver.samples[k];
+        for (int m = 0; m < k; ++m) repeat |= sourceSamples[m] == sourceSamples[k] && receiver.samples[m] == receiver.samples[k];
         if (repeat) continue;
         ++rays;
-        visible += vis.visible(sourceMesh.patches[source.samples[k]].centroid,
+        visible += vis.visible(sourceMesh.patches[sourceSamples[k]].centroid,
                                receiverMesh.patches[receiver.samples[k]].centroid);
     }
     return kPi * f * visible / rays;

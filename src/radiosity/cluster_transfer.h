@@ -14,11 +14,12 @@ namespace rayrad::radiosity {
 /// Adaptive accuracy instead of a deeper hierarchy: far away (beyond 4 source
 /// diameters) the point approximation A_C cosθ_C cosθ_D / (π r²); nearer, the sum of the
 /// member patches' form factors (each analytic when close). V is the visible fraction of
-/// up to four rays between the clusters' sample patches. Deterministic: the energy
-/// correction repeats it exactly to reconstruct what earlier shots delivered.
+/// up to four rays from `sourceSamples` (member patches of the source, see
+/// powerSamples) to the receiver's sample patches.
 /// The source may be a mirror image (its own mesh, and a MirrorPath as `vis`).
-double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const PatchMesh& receiverMesh,
-                       const Cluster& receiver, const Visibility& vis, double analyticDistance);
+double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
+                       const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
+                       double analyticDistance);
 
 /// How a cluster→cluster shot from `source` is shared among the receiver's patches:
 /// shape[k] multiplies the illuminance computed at the receiver's centroid for member k.

@@ -11,6 +11,22 @@
 
 namespace rayrad::radiosity {
 
+ClusterSamples powerSamples(const Cluster& c, const std::vector<double>& power) {
+    double total = 0;
+    for (double p : power) total += std::abs(p);
+    if (!(total > 0)) return c.samples;
+    // Stratified: sample k is the member where the running sum first passes (k + ½)/4 of it.
+    ClusterSamples out{};
+    double sum = 0;
+    size_t m = 0;
+    for (int k = 0; k < 4; ++k) {
+        double target = (k + 0.5) / 4 * total;
+        while (m + 1 < power.size() && sum + std::abs(power[m]) < target) sum += std::abs(power[m++]);
+        out[k] = c.patches[m];
+    }
+    return out;
+}
+
 int Clustering::voxelDistance(const Cluster& a, const Cluster& b) const {
     return std::max({std::abs(a.voxel[0] - b.voxel[0]), std::abs(a.voxel[1] - b.voxel[1]),
                      std::abs(a.voxel[2] - b.voxel[2])});

@@ -11,6 +11,9 @@
 
 namespace rayrad::radiosity {
 
+/// Four member patches (indices into PatchMesh::patches) whose centroids carry visibility rays.
+using ClusterSamples = std::array<uint32_t, 4>;
+
 /// A group of patches that shoots and receives as one far away (the upper of the two
 /// hierarchy levels). Geometry only; the solver keeps the light.
 struct Cluster {
@@ -24,7 +27,7 @@ struct Cluster {
     double projectedArea = 0;
     double diameter = 0;                 ///< twice the largest centroid-to-vertex distance, m
     Rgb meanReflectance{0.0};            ///< area-weighted ρ
-    std::array<uint32_t, 4> samples{};   ///< member patches whose centroids carry visibility rays
+    ClusterSamples samples{};            ///< spread over the members (receiving; see powerSamples)
     bool planar = false;                 ///< all members in one plane
 };
 
@@ -43,6 +46,14 @@ struct Clustering {
     size_t multiPatchClusters() const;
     std::string statistics() const;
 };
+
+/// Visibility samples for a cluster sending light: four members stratified by their
+/// share of `power` (one value per member, e.g. the unshot flux ΔL_i A_i), so the rays
+/// leave from where the light is. A cluster on a wall partly hidden behind a mirror
+/// 1 cm away has its lit members beside the mirror and its dark ones behind it; the
+/// fixed samples could all lie behind it and lose the lit members' light. Falls back
+/// to `samples` when no member has power.
+ClusterSamples powerSamples(const Cluster& c, const std::vector<double>& power);
 
 /// The voxel edge the options ask for (resolves the derived defaults).
 double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options);

@@ -20,12 +20,14 @@ namespace rayrad::radiosity {
 /// A mirror image of C (source s) is corrected the same way, with its own geometry,
 /// its path visibility and its weight Π Ks.
 template <class V>
-void ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const std::vector<V>& totalOfSource) {
+void ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
+                              const std::vector<V>& totalOfSource) {
     const Cluster& C = s.clustering->clusters[c];
     const Cluster& D = m_clustering.clusters[d];
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
     V shotSoFar = m_light[c].total - m_light[c].unshot;
-    V received = shotSoFar * s.weight * clusterTransfer(*s.mesh, C, m_mesh, D, *s.vis, m_options.analyticDistance);
+    V received = shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis,
+                                                                   m_options.analyticDistance);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
@@ -35,7 +37,9 @@ void ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const std::ve
     pull(d);
 }
 
-template void ShootingCore<double>::correct(const Source&, size_t, size_t, const std::vector<double>&);
-template void ShootingCore<Rgb>::correct(const Source&, size_t, size_t, const std::vector<Rgb>&);
+template void ShootingCore<double>::correct(const Source&, size_t, size_t, const ClusterSamples&,
+                                           const std::vector<double>&);
+template void ShootingCore<Rgb>::correct(const Source&, size_t, size_t, const ClusterSamples&,
+                                        const std::vector<Rgb>&);
 
 }  // namespace rayrad::radiosity

@@ -65,13 +65,17 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
       m_maxSplitDepth(maxSplitDepth) {
     for (const auto& c : clustering.clusters) {
         Rgb L(0.0);
-        double size = 0;
+        double size = 0, brightestPower = -1;
+        uint32_t brightest = c.samples[0];
         for (uint32_t j : c.patches) {
-            L += solution.reflectedLuminance(scene, mesh, j) * mesh.patches[j].area;
+            Rgb power = solution.reflectedLuminance(scene, mesh, j) * mesh.patches[j].area;  // cd
+            L += power;
             size = std::max(size, mesh.patches[j].diameter);
+            if (luminance(power) > brightestPower) brightestPower = luminance(power), brightest = j;
         }
         m_clusterLuminance.push_back(L / c.area);
         m_clusterPatchSize.push_back(size);
+        m_brightestPatch.push_back(brightest);
     }
     m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
 }
@@ -162,13 +166,15 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         double asOne = m_farClusterDiameters * C.diameter;
         if (asOne > 0 && C.patches.size() > 1 && d2 > asOne * asOne) {
             double f = formFactorPointApprox(x, n, C.centroid, C.normal, C.projectedArea);
-            bool seen = f > 0 && vis.visible(x, mesh.patches[C.samples[0]].centroid);
+            bool seen = f > 0 && vis.visible(x, mesh.patches[m_brightestPatch[c]].centroid);
             return seen ? Rgb(weight * m_clusterLuminance[c] * (kPi * f)) : Rgb(0.0);  // Ks π L_C F V
         }
         bool hasNear = real && std::find(nearClusters.begin(), nearClusters.end(), c) != nearClusters.end();
         double far = kClusterVisibilityDiameters * C.diameter;
         bool shared = C.patches.size() > 1 && d2 > far * far;
         Rgb sum(0.0), sharedSum(0.0);
+        uint32_t strongest = C.samples[0];  // the shared ray leaves from the largest contribution
+        double strongestE = -1;
         for (uint32_t j : C.patches) {
             const Patch& p = mesh.patches[j];
             Vec3 v[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
@@ -184,10 +190,15 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             // Analytic within analyticDistance patch diameters, point approximation beyond.
             double f = patchFormFactor(mesh, p, x, n, m_scene.solver.analyticDistance);
             if (f <= 0) continue;
-            if (shared) sharedSum += L * (kPi * f);
-            else if (vis.visible(x, p.centroid)) sum += L * (kPi * f);  // E = π L F
+            Rgb e = L * (kPi * f);  // E = π L F
+            if (!shared) {
+                if (vis.visible(x, p.centroid)) sum += e;
+            } else {
+                sharedSum += e;
+                if (luminance(e) > strongestE) strongestE = luminance(e), strongest = j;
+            }
         }
-        if (shared && sharedSum != Rgb(0.0) && vis.visible(x, mesh.patches[C.samples[0]].centroid))
+        if (shared && sharedSum != Rgb(0.0) && vis.visible(x, mesh.patches[strongest].centroid))
             sum += sharedSum;
         return sum;
     };

@@ -83,6 +83,9 @@ class Gatherer {
     int m_maxSplitDepth;  ///< sub-triangle refinement toward the point
     std::vector<Rgb> m_clusterLuminance;    ///< area-weighted mean reflected luminance per cluster
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
+    /// Per cluster, the member with the most reflected power: a far cluster's one
+    /// visibility ray leaves from it (the centre member may be hidden, e.g. behind a mirror).
+    std::vector<uint32_t> m_brightestPatch;
     std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
 };

@@ -225,7 +225,13 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         // for the real shooter and for each of its mirror images.
         const Cluster& C = m_clustering.clusters[c];
         std::vector<V> total(C.patches.size());
-        for (size_t k = 0; k < C.patches.size(); ++k) total[k] = reflected(C.patches[k]);
+        std::vector<double> shotPower(C.patches.size());  // what earlier shots carried, ≈ (L_i − ΔL_i) A_i
+        for (size_t k = 0; k < C.patches.size(); ++k) {
+            uint32_t i = C.patches[k];
+            total[k] = reflected(i);
+            shotPower[k] = lum(total[k] - m_unshot[i]) * m_mesh.patches[i].area;
+        }
+        const ClusterSamples shotSamples = powerSamples(C, shotPower);
         for (size_t si = 0; si < m_sources.size(); ++si) {
             const Source& s = m_sources[si];
             const Cluster& Cs = s.clustering->clusters[c];
@@ -236,7 +242,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, c, d))
                     ring.push_back(d);
             }
-            tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) { correct(s, c, ring[k], total); });
+            tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) { correct(s, c, ring[k], shotSamples, total); });
             for (size_t d : ring) corrected[si][d] = 1;
             m_stats.corrections += static_cast<int64_t>(ring.size());
         }
@@ -247,11 +253,15 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     const Cluster& C = m_clustering.clusters[c];
     V deltaLC = light.unshot;
     std::vector<V> unshot(C.patches.size());
+    std::vector<double> unshotPower(C.patches.size());  // ΔL_i A_i, where the rays leave from
     for (size_t k = 0; k < C.patches.size(); ++k) {
-        unshot[k] = m_unshot[C.patches[k]];
-        m_unshot[C.patches[k]] = V(0.0);
+        uint32_t i = C.patches[k];
+        unshot[k] = m_unshot[i];
+        unshotPower[k] = lum(unshot[k]) * m_mesh.patches[i].area;
+        m_unshot[i] = V(0.0);
     }
     light.unshot = V(0.0);
+    const ClusterSamples samples = powerSamples(C, unshotPower);
 
     for (size_t si = 0; si < m_sources.size(); ++si) {
         const Source& s = m_sources[si];
@@ -266,7 +276,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, c, d)) continue;
                 if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
-                    double t = clusterTransfer(*s.mesh, Cs, m_mesh, D, *s.vis, m_options.analyticDistance);
+                    double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance);
                     if (t > 0) addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
                     ++cc;
                 } else {

@@ -74,7 +74,8 @@ class ShootingCore final : public ShootingCoreBase {
     void addPending(const Cluster& source, size_t receiver, const V& e);
     void receive(size_t j, const V& deltaE);
     void shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver);
-    void correct(const Source& s, size_t c, size_t d, const std::vector<V>& totalOfSource);  // energy_correction.cpp
+    void correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
+                 const std::vector<V>& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
     /// False when no light of cluster c can pass through s's mirrors to cluster d.
     static bool canReach(const Source& s, size_t c, size_t d) { return !s.image || (s.sends[c] && s.receives[d]); }
