@@ -77,8 +77,16 @@ void printSolveSummary(const app::PipelineRun& run) {
         fmt::print(stderr, "transfers: {} cluster→cluster, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
                    run.shooting.clusterTransfers, run.shooting.patchPairs, run.shooting.corrections,
                    run.shooting.pushPulls, run.maxIlluminanceStep);
-    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm, unshot {:.6g} lm, not accounted {:+.4f}%\n",
-               balance.emitted, balance.absorbed, balance.unshot, 100 * balance.relativeError());
+    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm, unshot {:.6g} lm, not accounted {:+.4f}% "
+                       "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
+               balance.emitted, balance.absorbed, balance.unshot, 100 * balance.relativeError(),
+               100 * balance.directError(), 100 * balance.secondaryError());
+    const auto& st = run.shooting;
+    fmt::print(stderr, "closure: {:.3g}% of reflected light escapes; per-shot energy conservation {}{}; overshooting {}\n",
+               100 * st.escapeFraction,
+               st.conserving ? "on" : (run.scene.mirrors.empty() ? "off (open scene or switched off)" : "off (mirrors)"),
+               st.conserving ? fmt::format(" (largest adjustment {:.3g}%)", 100 * st.largestRescale) : "",
+               st.overshooting ? "on" : "off");
 }
 
 struct ReportArgs {

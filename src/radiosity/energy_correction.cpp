@@ -33,7 +33,11 @@ void ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const Cluster
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
         for (size_t k = 0; k < D.patches.size(); ++k) receive(D.patches[k], -(received * shape[k]));
     }
-    shootPatches(s, c, totalOfSource, d);
+    shootPatches(s, c, totalOfSource, d, m_shotE);
+    for (uint32_t j : D.patches) {
+        receive(j, m_shotE[j]);
+        m_shotE[j] = V(0.0);
+    }
     pull(d);
 }
 

@@ -5,6 +5,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <atomic>
@@ -26,7 +27,13 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(solver),
       m_clusterOptions(clusters) {
     m_reflectance.reserve(mesh.patches.size());
-    for (const auto& p : mesh.patches) m_reflectance.push_back(fromRgb<V>(scene.materials[p.material].reflectance));
+    for (const auto& p : mesh.patches) {
+        m_reflectance.push_back(fromRgb<V>(scene.materials[p.material].reflectance));
+        m_meanReflectance += m_reflectance.back() * p.area;
+        m_area += p.area;
+    }
+    if (m_area > 0) m_meanReflectance = m_meanReflectance / m_area;
+    m_shotE.assign(mesh.patches.size(), V(0.0));
     m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
     for (const auto& view : m_mirrorViews) {
@@ -68,13 +75,19 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     m_maxStep = m_clusterOptions.maxIlluminanceStep > 0
                     ? m_clusterOptions.maxIlluminanceStep
                     : kDefaultStepFraction * meanDirect / std::max(1e-6, 1.0 - meanRho);
+    // Is the scene closed for the light that is in it? Rays leave from the patches in
+    // proportion to their first reflected flux ρ E A.
+    std::vector<double> firstFlux(n);
+    for (size_t i = 0; i < n; ++i) firstFlux[i] = lum(m_unshot[i]) * m_mesh.patches[i].area;
+    m_stats.escapeFraction = escapeFraction(m_mesh, m_vis, 4 * m_scene.diagonal() + 1.0, firstFlux);
+    m_conserve = m_options.conserveEnergy && m_scene.mirrors.empty() && m_stats.escapeFraction == 0;
     m_light.assign(m_clustering.clusters.size(), Light{});
     for (size_t c = 0; c < m_light.size(); ++c) pull(c);
     s.shots = 0;
     s.initialUnshotFlux = unshotFlux();
     s.remainingUnshotFlux = s.initialUnshotFlux;
     s.converged = s.initialUnshotFlux <= 0;
-    m_stats = {};
+    m_stats = {0, 0, 0, 0, m_stats.escapeFraction, m_conserve, 0.0, m_options.overshoot};
     m_shotSincePushPull = 0;
     m_powerAtPushPull = s.initialUnshotFlux / kPi;
     sync(s);
@@ -113,6 +126,12 @@ double ShootingCore<V>::clusterPower(size_t c) const {
 }
 
 template <class V>
+double ShootingCore<V>::clusterResidual(size_t c) const {
+    const Light& l = m_light[c];
+    return (std::max(0.0, l.absUnshot) + std::abs(lum(l.pendingReflected))) * m_clustering.clusters[c].area;
+}
+
+template <class V>
 int ShootingCore<V>::radiusFor(size_t c) const {
     if (!m_clustering.enabled) return INT_MAX;
     const Cluster& C = m_clustering.clusters[c];
@@ -127,24 +146,29 @@ template <class V>
 void ShootingCore<V>::receive(size_t j, const V& deltaE) {
     V deltaL = m_reflectance[j] * deltaE / kPi;  // ΔL = ρ ΔE / π
     m_indirect[j] += deltaE;
+    double before = std::abs(lum(m_unshot[j]));
     m_unshot[j] += deltaL;
     size_t c = m_clustering.clusterOf[j];
     double w = m_mesh.patches[j].area / m_clustering.clusters[c].area;
     m_light[c].unshot += deltaL * w;  // pull up incrementally (eq. 1)
     m_light[c].total += deltaL * w;
+    m_light[c].absUnshot += (std::abs(lum(m_unshot[j])) - before) * w;
 }
 
 template <class V>
 void ShootingCore<V>::pull(size_t c) {
     const Cluster& C = m_clustering.clusters[c];
     V unshot(0.0), total(0.0);
+    double absUnshot = 0;
     for (uint32_t j : C.patches) {
         double a = m_mesh.patches[j].area;
         unshot += m_unshot[j] * a;
         total += reflected(j) * a;
+        absUnshot += std::abs(lum(m_unshot[j])) * a;
     }
     m_light[c].unshot = unshot / C.area;  // ΔL_C = Σ ΔL_i A_i / A_C   (eq. 1)
     m_light[c].total = total / C.area;    // L_C  = Σ L_i A_i / A_C
+    m_light[c].absUnshot = absUnshot / C.area;
 }
 
 template <class V>
@@ -180,7 +204,7 @@ void ShootingCore<V>::pushPullAll(RadiositySolution& s) {
     ++m_stats.pushPulls;
     m_shotSincePushPull = 0;
     m_powerAtPushPull = 0;
-    for (size_t c = 0; c < m_light.size(); ++c) m_powerAtPushPull += clusterPower(c);
+    for (size_t c = 0; c < m_light.size(); ++c) m_powerAtPushPull += clusterResidual(c);
     sync(s);
 }
 
@@ -192,7 +216,17 @@ bool ShootingCore<V>::coplanar(const Cluster& a, const Cluster& b) const {
 }
 
 template <class V>
-void ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver) {
+V ShootingCore<V>::ambientIlluminance() const {
+    // E_amb = π ΔΦ (1 − e) / (A (1 − ρ̄ (1 − e))): the unshot power lands on the fraction
+    // 1 − e of the surfaces, is reflected by ρ̄ each bounce, spread over the area A.
+    double stays = 1.0 - m_stats.escapeFraction;
+    V bounce = V(1.0) - m_meanReflectance * stays;
+    return m_area > 0 ? kPi * m_signedUnshot * stays / (m_area * bounce) : V(0.0);
+}
+
+template <class V>
+void ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver,
+                                   std::vector<V>& into) {
     const Cluster& D = m_clustering.clusters[receiver];
     const Cluster& C = s.clustering->clusters[c];
     for (uint32_t j : D.patches) {
@@ -207,7 +241,7 @@ void ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<
             double f = visiblePatchFormFactor(*s.mesh, src, rec.centroid, rec.normal, m_options.analyticDistance, *s.vis);
             deltaE += amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
         }
-        if (deltaE != V(0.0)) receive(j, deltaE);
+        into[j] += deltaE;
     }
 }
 
@@ -250,18 +284,35 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     if (correcting) r = std::max(r, light.radius);  // r_v never shrinks: each receiver switches once
 
     // The shooter's unshot light leaves now; it may receive some of it back (intra-cluster).
+    // With overshooting each member also ships what it will receive later, ρ_i E_amb / π,
+    // and keeps minus that as unshot light.
     const Cluster& C = m_clustering.clusters[c];
-    V deltaLC = light.unshot;
+    const V ambient = m_options.overshoot ? ambientIlluminance() : V(0.0);
     std::vector<V> unshot(C.patches.size());
     std::vector<double> unshotPower(C.patches.size());  // ΔL_i A_i, where the rays leave from
+    V deltaLC(0.0), keptLC(0.0);
+    double shotFlux = 0;  // lm
     for (size_t k = 0; k < C.patches.size(); ++k) {
         uint32_t i = C.patches[k];
-        unshot[k] = m_unshot[i];
-        unshotPower[k] = lum(unshot[k]) * m_mesh.patches[i].area;
-        m_unshot[i] = V(0.0);
+        // A patch that has received no light so far (the underside of a box on the floor)
+        // is taken to receive none later: it gets no overshoot it could not ship.
+        bool lit = lum(m_direct[i]) != 0 || lum(m_indirect[i]) != 0;
+        V overshoot = lit ? m_reflectance[i] * ambient / kPi : V(0.0);
+        unshot[k] = m_unshot[i] + overshoot;
+        m_unshot[i] = -overshoot;
+        double a = m_mesh.patches[i].area;
+        unshotPower[k] = lum(unshot[k]) * a;
+        shotFlux += kPi * unshotPower[k];
+        deltaLC += unshot[k] * a;
+        keptLC -= overshoot * a;
     }
-    light.unshot = V(0.0);
+    deltaLC = deltaLC / C.area;
+    light.unshot = keptLC / C.area;
+    light.absUnshot = std::abs(lum(keptLC)) / C.area;  // every member keeps −ρ_i E_amb/π: one sign
     const ClusterSamples samples = powerSamples(C, unshotPower);
+    // Deliveries are collected first (patch→patch in m_shotE, cluster→cluster per
+    // receiver) so that a closed scene can scale them to the flux shot.
+    std::vector<V> clusterE(n, V(0.0));
 
     for (size_t si = 0; si < m_sources.size(); ++si) {
         const Source& s = m_sources[si];
@@ -277,10 +328,13 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (!canReach(s, c, d)) continue;
                 if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
                     double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance);
-                    if (t > 0) addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
+                    if (t > 0) {
+                        if (s.image) addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
+                        else clusterE[d] = deltaLC * t;                          // I_D += ΔL_C π F V, below
+                    }
                     ++cc;
                 } else {
-                    shootPatches(s, c, unshot, d);
+                    shootPatches(s, c, unshot, d, m_shotE);
                     pp += static_cast<int64_t>(C.patches.size() * D.patches.size());
                 }
             }
@@ -290,18 +344,76 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         m_stats.clusterTransfers += clusterTransfers;
         m_stats.patchPairs += patchPairs;
     }
+    deliver(c, shotFlux, clusterE);
     light.radius = r;
+}
+
+template <class V>
+void ShootingCore<V>::deliver(size_t c, double shotFlux, const std::vector<V>& clusterE) {
+    const Cluster& C = m_clustering.clusters[c];
+    const size_t n = m_clustering.clusters.size();
+    // Closed scene, no mirrors: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1). The
+    // deficit δ is shared in proportion to |ΔE_j| A_j: ΔE_j (1 + sgn(ΔE_j) δ / Σ|ΔE_k| A_k),
+    // which is a plain rescale when every delivery has one sign and stays exact when an
+    // overshooting cluster ships light of both signs.
+    double adjust = 0;  // δ / Σ|ΔE_k| A_k
+    if (m_conserve) {
+        using Sums = std::pair<double, double>;  // signed and absolute received flux, lm
+        Sums received = tbb::parallel_deterministic_reduce(
+            tbb::blocked_range<size_t>(0, n, 16), Sums{0.0, 0.0},
+            [&](const tbb::blocked_range<size_t>& range, Sums sum) {
+                thread_local std::vector<double> shape;
+                auto add = [&](double flux) { sum.first += flux, sum.second += std::abs(flux); };
+                for (size_t d = range.begin(); d != range.end(); ++d) {
+                    const Cluster& D = m_clustering.clusters[d];
+                    if (clusterE[d] != V(0.0)) {
+                        receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
+                        for (size_t k = 0; k < D.patches.size(); ++k)
+                            add(lum(clusterE[d]) * shape[k] * m_mesh.patches[D.patches[k]].area);
+                    }
+                    for (uint32_t j : D.patches) add(lum(m_shotE[j]) * m_mesh.patches[j].area);
+                }
+                return sum;
+            },
+            [](const Sums& a, const Sums& b) { return Sums{a.first + b.first, a.second + b.second}; });
+        double deficit = shotFlux - received.first;
+        // A deficit beyond a quarter of the delivery is not a closed-scene rounding: leave it.
+        if (received.second > 0 && std::abs(deficit) <= 0.25 * received.second) {
+            adjust = deficit / received.second;
+            m_stats.largestRescale = std::max(m_stats.largestRescale, std::abs(adjust));
+        }
+    }
+    auto adjusted = [adjust](const V& e) { return e * (1.0 + (lum(e) < 0 ? -adjust : adjust)); };
+    tbb::parallel_for(size_t(0), n, [&](size_t d) {
+        if (clusterE[d] != V(0.0)) addPending(C, d, adjusted(clusterE[d]));
+        for (uint32_t j : m_clustering.clusters[d].patches)
+            if (m_shotE[j] != V(0.0)) {
+                receive(j, adjusted(m_shotE[j]));
+                m_shotE[j] = V(0.0);
+            }
+    });
 }
 
 template <class V>
 bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
     if (s.converged) return false;
     if (m_options.maxShots > 0 && s.shots >= m_options.maxShots) return false;
-    size_t best = 0;
-    double bestPower = -1, total = 0;
+    // The residual is Σ |ΔL_C| A_C; with overshooting the shooter is the cluster that
+    // would ship the most, |ΔL_C + ρ_C E_amb / π| A_C (a cluster that already shipped its
+    // future light holds minus that and has nothing to ship).
+    double total = 0;
+    m_signedUnshot = V(0.0);
     for (size_t c = 0; c < m_light.size(); ++c) {
-        double power = clusterPower(c);
-        total += power;
+        total += clusterResidual(c);
+        m_signedUnshot += (m_light[c].unshot + m_light[c].pendingReflected) * m_clustering.clusters[c].area;
+    }
+    const V ambient = m_options.overshoot ? ambientIlluminance() : V(0.0);
+    size_t best = 0;
+    double bestPower = -1;
+    for (size_t c = 0; c < m_light.size(); ++c) {
+        const Cluster& C = m_clustering.clusters[c];
+        const Light& l = m_light[c];
+        double power = std::abs(lum(l.unshot + l.pendingReflected + fromRgb<V>(C.meanReflectance) * ambient / kPi)) * C.area;
         if (power > bestPower) bestPower = power, best = c;
     }
     s.remainingUnshotFlux = kPi * total;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <radiosity/light_value.h>
+#include <radiosity/closure.h>
 #include <radiosity/mirror_images.h>
 #include <radiosity/shooting_solver.h>
 
@@ -63,17 +64,28 @@ class ShootingCore final : public ShootingCoreBase {
 
     struct Light {
         V unshot{0.0}, total{0.0}, pendingReflected{0.0};
+        /// Σ |Y(ΔL_i)| A_i / A_C: members' unshot light may differ in sign (overshooting,
+        /// corrections), and the residual must not let them cancel.
+        double absUnshot = 0;
         int radius = 0;
     };
 
     V reflected(size_t j) const { return m_reflectance[j] * (m_direct[j] + m_indirect[j]) / kPi; }  // L = ρ E / π
+    /// |ΔL_C + pending| A_C in cd: what a shot of cluster c ships (net over its members).
     double clusterPower(size_t c) const;
+    /// (Σ |ΔL_i| A_i + |pending| A_C) in cd: cluster c's share of the residual.
+    double clusterResidual(size_t c) const;
     int radiusFor(size_t c) const;
     void pushPull(size_t c);
     void pull(size_t c);
     void addPending(const Cluster& source, size_t receiver, const V& e);
     void receive(size_t j, const V& deltaE);
-    void shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver);
+    /// Patch→patch from cluster c of source s to the receiver's patches: adds ΔE_j to into[j].
+    void shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver, std::vector<V>& into);
+    /// Receives this shot's collected deliveries, scaled to the flux shot when conserving.
+    void deliver(size_t c, double shotFlux, const std::vector<V>& clusterE);
+    /// E_amb in lx: the illuminance the unshot power will still add everywhere (overshooting).
+    V ambientIlluminance() const;
     void correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
                  const std::vector<V>& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
@@ -96,6 +108,11 @@ class ShootingCore final : public ShootingCoreBase {
     std::vector<Light> m_light;
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
     std::vector<Source> m_sources;  ///< the real scene first, then one per image
+    std::vector<V> m_shotE;  ///< per patch, this shot's patch→patch deliveries (lx) before they are received
+    bool m_conserve = false;
+    V m_meanReflectance{0.0};  ///< area-weighted ρ̄
+    double m_area = 0;         ///< Σ A_i, m²
+    V m_signedUnshot{0.0};     ///< Σ_C (ΔL_C + pending) A_C in cd, signed; set by step()
     double m_shotSincePushPull = 0;
     double m_powerAtPushPull = 0;
     ShootingStatistics m_stats;

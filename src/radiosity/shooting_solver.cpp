@@ -80,6 +80,7 @@ EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, co
         const Rgb& rho = scene.materials[p.material].reflectance;
         Rgb e = s.directMean[i] + (s.indirect.empty() ? Rgb(0.0) : s.indirect[i]);
         b.absorbed += luminance((Rgb(1.0) - rho) * e) * p.area;
+        b.directReceived += luminance(s.directMean[i]) * p.area;
         if (!s.unshot.empty()) b.unshot += kPi * luminance(s.unshot[i]) * p.area;
     }
     return b;

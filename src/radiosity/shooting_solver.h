@@ -30,6 +30,10 @@ struct ShootingStatistics {
     int64_t patchPairs = 0;        ///< patch→patch source/receiver pairs evaluated
     int64_t corrections = 0;       ///< receiver clusters corrected
     int64_t pushPulls = 0;         ///< global push-pulls
+    double escapeFraction = 0;     ///< of rays leaving the surfaces (0: a closed scene)
+    bool conserving = false;       ///< per-shot energy conservation applied (closed, no mirrors)
+    double largestRescale = 0;     ///< max |scale − 1| applied to a shot by the conservation
+    bool overshooting = false;
 };
 
 class ShootingCoreBase;
@@ -86,9 +90,14 @@ bool isGreyScene(const scene::Scene& scene);
 /// Energy accounting in lm: what the lights emit, what surfaces absorbed
 /// Σ (1 − ρ) (Ē_dir + E_ind) A, and what is still unshot. In a closed scene
 /// emitted = absorbed + unshot.
+/// The direct pass's own share: what the patches received first, Σ Ē_dir A, against the
+/// emitted flux (its patch-mean quadrature; light escaping or absorbed by mirrors).
 struct EnergyBalance {
-    double emitted = 0, absorbed = 0, unshot = 0;
+    double emitted = 0, absorbed = 0, unshot = 0, directReceived = 0;
     double relativeError() const { return emitted > 0 ? (absorbed + unshot - emitted) / emitted : 0.0; }
+    double directError() const { return emitted > 0 ? (directReceived - emitted) / emitted : 0.0; }
+    /// What the secondary pass lost or made: (absorbed + unshot − direct received) / emitted.
+    double secondaryError() const { return emitted > 0 ? (absorbed + unshot - directReceived) / emitted : 0.0; }
 };
 EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
                             double emittedFlux);

@@ -362,6 +362,8 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
     d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
     d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
+    d.solver.conserveEnergy = r.boolean("conserve_energy").value_or(d.solver.conserveEnergy);
+    d.solver.overshoot = r.boolean("overshoot").value_or(d.solver.overshoot);
     if (auto mode = r.string("mirrors")) {
         if (*mode == "image") d.solver.mirrorImages = true;
         else if (*mode == "ignore") d.solver.mirrorImages = false;

@@ -72,6 +72,53 @@ scene nocamera "{$good_materials, $good_box, $good_light}"
 expect "render without camera" "nocamera.json: /camera: rendering needs a camera" -- render "$work/nocamera.json" -o "$work/out.png"
 
 # An existing output survives a failed run untouched.
+
+# The catalogue (issue 5): one line each naming the file (and the place), exit 2.
+cat_case() {  # cat_case NAME WANT JSON
+    scene "$1" "$3"
+    expect "$1" "$1.json: $2" -- solve "$work/$1.json"
+}
+cat_case empty_file "" ''
+cat_case not_object "" '[1, 2, 3]'
+cat_case truncated "line 2" '{"materials": {'
+cat_case trailing_garbage "" '{} xyz'
+cat_case empty_scene "" '{}'
+cat_case no_objects "" "{$good_materials, $good_light}"
+cat_case objects_not_array "/objects" "{$good_materials, \"objects\": 5, $good_light}"
+cat_case unknown_top_key "/lihgts" "{$good_materials, $good_box, $good_light, \"lihgts\": []}"
+cat_case unknown_object_key "/objects/0" "{$good_materials, \"objects\": [{\"type\": \"box\", \"mni\": [0,0,0], \"max\": [1,1,1], \"material\": \"white\"}], $good_light}"
+cat_case unknown_object_type "/objects/0/type" "{$good_materials, \"objects\": [{\"type\": \"bx\", \"material\": \"white\"}], $good_light}"
+cat_case unknown_light_type "/lights/0/type" "{$good_materials, $good_box, \"lights\": [{\"type\": \"pont\", \"position\": [0.5,0.5,0.5], \"intensity_cd\": 10}]}"
+cat_case string_for_number "/lights/0/intensity_cd" "{$good_materials, $good_box, \"lights\": [{\"type\": \"point\", \"position\": [0.5,0.5,0.5], \"intensity_cd\": \"ten\"}]}"
+cat_case nan_value "" "{$good_materials, $good_box, \"lights\": [{\"type\": \"point\", \"position\": [0.5,NaN,0.5], \"intensity_cd\": 10}]}"
+cat_case huge_value "line 1, column" "{$good_materials, $good_box, \"lights\": [{\"type\": \"point\", \"position\": [0.5,1e999,0.5], \"intensity_cd\": 10}]}"
+cat_case short_vector "/lights/0/position" "{$good_materials, $good_box, \"lights\": [{\"type\": \"point\", \"position\": [0.5,0.5], \"intensity_cd\": 10}]}"
+cat_case negative_reflectance "/materials/white/reflectance" "{\"materials\": {\"white\": {\"reflectance\": -0.1}}, $good_box, $good_light}"
+cat_case rgb_reflectance_one "/materials/white/reflectance" "{\"materials\": {\"white\": {\"reflectance\": [0.5, 1.0, 0.2]}}, $good_box, $good_light}"
+cat_case zero_intensity "/lights/0/intensity_cd" "{$good_materials, $good_box, \"lights\": [{\"type\": \"point\", \"position\": [0.5,0.5,0.5], \"intensity_cd\": 0}]}"
+cat_case spot_angles "/lights/0" "{$good_materials, $good_box, \"lights\": [{\"type\": \"spot\", \"position\": [0.5,0.5,0.5], \"look_at\": [0.5,0,0.5], \"intensity_cd\": 10, \"inner_angle_deg\": 40, \"outer_angle_deg\": 20}]}"
+cat_case degenerate_box "/objects/0" "{$good_materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,0,1], \"material\": \"white\"}], $good_light}"
+cat_case degenerate_quad "/objects/0" "{$good_materials, \"objects\": [{\"type\": \"quad\", \"vertices\": [[0,0,0],[1,0,0],[2,0,0],[3,0,0]], \"material\": \"white\"}], $good_light}"
+cat_case zero_radius "/objects/0/radius" "{$good_materials, \"objects\": [{\"type\": \"sphere\", \"radius\": 0, \"material\": \"white\"}], $good_light}"
+cat_case zero_scale "/objects/0/transform/scale" "{$good_materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,1,1], \"material\": \"white\", \"transform\": {\"scale\": [1,0,1]}}], $good_light}"
+cat_case absurd_resolution "/camera/resolution" "{$good_materials, $good_box, $good_light, \"camera\": {\"position\": [0.5,0.5,0.1], \"look_at\": [0.5,0.5,1], \"resolution\": [100000000, 100000000]}}"
+cat_case zero_resolution "/camera/resolution" "{$good_materials, $good_box, $good_light, \"camera\": {\"position\": [0.5,0.5,0.1], \"look_at\": [0.5,0.5,1], \"resolution\": [0, 8]}}"
+cat_case camera_look_at_self "/camera" "{$good_materials, $good_box, $good_light, \"camera\": {\"position\": [0.5,0.5,0.5], \"look_at\": [0.5,0.5,0.5], \"resolution\": [8, 8]}}"
+cat_case sensor_zero_normal "/sensors/0/normal" "{$good_materials, $good_box, $good_light, \"sensors\": [{\"name\": \"s\", \"position\": [0.5,0,0.5], \"normal\": [0,0,0]}]}"
+cat_case bad_stop_unshot "/radiosity/stop_unshot" "{$good_materials, $good_box, $good_light, \"radiosity\": {\"stop_unshot\": 2}}"
+cat_case bad_spp "/render/spp" "{$good_materials, $good_box, $good_light, \"render\": {\"spp\": -1}}"
+cat_case bad_ior "/materials/g/ior" "{\"materials\": {\"white\": {\"reflectance\": 0.5}, \"g\": {\"type\": \"glass\", \"ior\": 0.5}}, $good_box, $good_light}"
+printf 'v 0 0 0\nv 1 0 0\nf 1 2 7\n' > "$work/broken.obj"
+cat_case broken_mesh "/objects/0" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"broken.obj\", \"material\": \"white\"}], $good_light}"
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n' > "$work/flat.obj"
+cat_case zero_area_mesh "/objects/0" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"flat.obj\", \"material\": \"white\"}], $good_light}"
+printf 'v 0 0 0\n' > "$work/unreadable.obj"; chmod 000 "$work/unreadable.obj"
+if [ "$(id -u)" -ne 0 ]; then
+    cat_case unreadable_mesh "/objects/0/file" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"unreadable.obj\", \"material\": \"white\"}], $good_light}"
+fi
+mkdir -p "$work/adir.json"
+expect "scene is a directory" "adir.json" -- solve "$work/adir.json"
+
 echo keep > "$work/keep.png"
 "$rayrad" render "$work/negative.json" -o "$work/keep.png" >/dev/null 2>&1
 if [ "$(cat "$work/keep.png")" != keep ]; then echo "FAIL existing output was overwritten"; failures=$((failures + 1)); else passed=$((passed + 1)); fi
