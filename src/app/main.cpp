@@ -84,7 +84,10 @@ void printSolveSummary(const app::PipelineRun& run) {
     const auto& st = run.shooting;
     fmt::print(stderr, "closure: {:.3g}% of reflected light escapes; per-shot energy conservation {}{}; overshooting {}\n",
                100 * st.escapeFraction,
-               st.conserving ? "on" : (run.scene.mirrors.empty() ? "off (open scene or switched off)" : "off (mirrors)"),
+               st.conserving                          ? "on"
+               : !run.scene.solver.conserveEnergy     ? "off (radiosity.conserve_energy)"
+               : !run.scene.mirrors.empty()           ? "off (mirrors)"
+                                                      : "off (open scene)",
                st.conserving ? fmt::format(" (largest adjustment {:.3g}%)", 100 * st.largestRescale) : "",
                st.overshooting ? "on" : "off");
 }

@@ -34,6 +34,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     }
     if (m_area > 0) m_meanReflectance = m_meanReflectance / m_area;
     m_shotE.assign(mesh.patches.size(), V(0.0));
+    m_shotPending.assign(mesh.patches.size(), V(0.0));
     m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
     for (const auto& view : m_mirrorViews) {
@@ -61,20 +62,17 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     m_indirect.assign(n, V(0.0));
     m_unshot.resize(n);
     m_pending.assign(n, V(0.0));
-    double area = 0, meanDirect = 0, meanRho = 0;
+    double meanDirect = 0;
     for (size_t i = 0; i < n; ++i) {
-        const Patch& p = m_mesh.patches[i];
         m_direct[i] = fromRgb<V>(s.directMean[i]);
         m_unshot[i] = m_reflectance[i] * m_direct[i] / kPi;  // ΔL = ρ E / π
-        area += p.area;
-        meanDirect += lum(m_direct[i]) * p.area;
-        meanRho += lum(m_reflectance[i]) * p.area;
+        meanDirect += lum(m_direct[i]) * m_mesh.patches[i].area;
     }
-    if (area > 0) meanDirect /= area, meanRho /= area;
+    if (m_area > 0) meanDirect /= m_area;
     // Mean illuminance with all bounces, estimated as Ē_dir / (1 − ρ̄).
     m_maxStep = m_clusterOptions.maxIlluminanceStep > 0
                     ? m_clusterOptions.maxIlluminanceStep
-                    : kDefaultStepFraction * meanDirect / std::max(1e-6, 1.0 - meanRho);
+                    : kDefaultStepFraction * meanDirect / std::max(1e-6, 1.0 - lum(m_meanReflectance));
     // Is the scene closed for the light that is in it? Rays leave from the patches in
     // proportion to their first reflected flux ρ E A.
     std::vector<double> firstFlux(n);
@@ -87,7 +85,11 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     s.initialUnshotFlux = unshotFlux();
     s.remainingUnshotFlux = s.initialUnshotFlux;
     s.converged = s.initialUnshotFlux <= 0;
-    m_stats = {0, 0, 0, 0, m_stats.escapeFraction, m_conserve, 0.0, m_options.overshoot};
+    const double escape = m_stats.escapeFraction;
+    m_stats = {};
+    m_stats.escapeFraction = escape;
+    m_stats.conserving = m_conserve;
+    m_stats.overshooting = m_options.overshoot;
     m_shotSincePushPull = 0;
     m_powerAtPushPull = s.initialUnshotFlux / kPi;
     sync(s);
@@ -176,14 +178,7 @@ void ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V
     const Cluster& D = m_clustering.clusters[receiver];
     thread_local std::vector<double> shape;
     receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
-    V reflectedSum(0.0);
-    for (size_t k = 0; k < D.patches.size(); ++k) {
-        uint32_t j = D.patches[k];
-        V ej = e * shape[k];
-        m_pending[j] += ej;
-        reflectedSum += m_reflectance[j] * ej * m_mesh.patches[j].area;
-    }
-    m_light[receiver].pendingReflected += reflectedSum / (kPi * D.area);
+    for (size_t k = 0; k < D.patches.size(); ++k) m_shotPending[D.patches[k]] += e * shape[k];
 }
 
 template <class V>
@@ -310,9 +305,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     light.unshot = keptLC / C.area;
     light.absUnshot = std::abs(lum(keptLC)) / C.area;  // every member keeps −ρ_i E_amb/π: one sign
     const ClusterSamples samples = powerSamples(C, unshotPower);
-    // Deliveries are collected first (patch→patch in m_shotE, cluster→cluster per
-    // receiver) so that a closed scene can scale them to the flux shot.
-    std::vector<V> clusterE(n, V(0.0));
+    // Deliveries are collected first (patch→patch in m_shotE, cluster→cluster in
+    // m_shotPending) so that a closed scene can scale them to the flux shot.
 
     for (size_t si = 0; si < m_sources.size(); ++si) {
         const Source& s = m_sources[si];
@@ -328,10 +322,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (!canReach(s, c, d)) continue;
                 if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
                     double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance);
-                    if (t > 0) {
-                        if (s.image) addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
-                        else clusterE[d] = deltaLC * t;                          // I_D += ΔL_C π F V, below
-                    }
+                    if (t > 0) addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
                     ++cc;
                 } else {
                     shootPatches(s, c, unshot, d, m_shotE);
@@ -344,13 +335,12 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         m_stats.clusterTransfers += clusterTransfers;
         m_stats.patchPairs += patchPairs;
     }
-    deliver(c, shotFlux, clusterE);
+    deliver(shotFlux);
     light.radius = r;
 }
 
 template <class V>
-void ShootingCore<V>::deliver(size_t c, double shotFlux, const std::vector<V>& clusterE) {
-    const Cluster& C = m_clustering.clusters[c];
+void ShootingCore<V>::deliver(double shotFlux) {
     const size_t n = m_clustering.clusters.size();
     // Closed scene, no mirrors: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1). The
     // deficit δ is shared in proportion to |ΔE_j| A_j: ΔE_j (1 + sgn(ΔE_j) δ / Σ|ΔE_k| A_k),
@@ -360,19 +350,13 @@ void ShootingCore<V>::deliver(size_t c, double shotFlux, const std::vector<V>& c
     if (m_conserve) {
         using Sums = std::pair<double, double>;  // signed and absolute received flux, lm
         Sums received = tbb::parallel_deterministic_reduce(
-            tbb::blocked_range<size_t>(0, n, 16), Sums{0.0, 0.0},
+            tbb::blocked_range<size_t>(0, m_mesh.patches.size(), 1024), Sums{0.0, 0.0},
             [&](const tbb::blocked_range<size_t>& range, Sums sum) {
-                thread_local std::vector<double> shape;
-                auto add = [&](double flux) { sum.first += flux, sum.second += std::abs(flux); };
-                for (size_t d = range.begin(); d != range.end(); ++d) {
-                    const Cluster& D = m_clustering.clusters[d];
-                    if (clusterE[d] != V(0.0)) {
-                        receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
-                        for (size_t k = 0; k < D.patches.size(); ++k)
-                            add(lum(clusterE[d]) * shape[k] * m_mesh.patches[D.patches[k]].area);
+                for (size_t j = range.begin(); j != range.end(); ++j)
+                    for (const V& e : {m_shotE[j], m_shotPending[j]}) {
+                        double flux = lum(e) * m_mesh.patches[j].area;
+                        sum.first += flux, sum.second += std::abs(flux);
                     }
-                    for (uint32_t j : D.patches) add(lum(m_shotE[j]) * m_mesh.patches[j].area);
-                }
                 return sum;
             },
             [](const Sums& a, const Sums& b) { return Sums{a.first + b.first, a.second + b.second}; });
@@ -385,12 +369,21 @@ void ShootingCore<V>::deliver(size_t c, double shotFlux, const std::vector<V>& c
     }
     auto adjusted = [adjust](const V& e) { return e * (1.0 + (lum(e) < 0 ? -adjust : adjust)); };
     tbb::parallel_for(size_t(0), n, [&](size_t d) {
-        if (clusterE[d] != V(0.0)) addPending(C, d, adjusted(clusterE[d]));
-        for (uint32_t j : m_clustering.clusters[d].patches)
+        const Cluster& D = m_clustering.clusters[d];
+        V reflectedSum(0.0);
+        for (uint32_t j : D.patches) {
             if (m_shotE[j] != V(0.0)) {
                 receive(j, adjusted(m_shotE[j]));
                 m_shotE[j] = V(0.0);
             }
+            if (m_shotPending[j] != V(0.0)) {  // I_D joins the pending light, pushed down later
+                V e = adjusted(m_shotPending[j]);
+                m_pending[j] += e;
+                reflectedSum += m_reflectance[j] * e * m_mesh.patches[j].area;
+                m_shotPending[j] = V(0.0);
+            }
+        }
+        m_light[d].pendingReflected += reflectedSum / (kPi * D.area);
     });
 }
 

@@ -78,12 +78,15 @@ class ShootingCore final : public ShootingCoreBase {
     int radiusFor(size_t c) const;
     void pushPull(size_t c);
     void pull(size_t c);
+    /// A cluster→cluster shot: adds e · shape_k (see receiverShape) to this shot's
+    /// pending illuminance of the receiver's members (m_shotPending).
     void addPending(const Cluster& source, size_t receiver, const V& e);
     void receive(size_t j, const V& deltaE);
     /// Patch→patch from cluster c of source s to the receiver's patches: adds ΔE_j to into[j].
     void shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver, std::vector<V>& into);
-    /// Receives this shot's collected deliveries, scaled to the flux shot when conserving.
-    void deliver(size_t c, double shotFlux, const std::vector<V>& clusterE);
+    /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
+    /// the flux shot when conserving.
+    void deliver(double shotFlux);
     /// E_amb in lx: the illuminance the unshot power will still add everywhere (overshooting).
     V ambientIlluminance() const;
     void correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
@@ -108,7 +111,9 @@ class ShootingCore final : public ShootingCoreBase {
     std::vector<Light> m_light;
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
     std::vector<Source> m_sources;  ///< the real scene first, then one per image
-    std::vector<V> m_shotE;  ///< per patch, this shot's patch→patch deliveries (lx) before they are received
+    /// Per patch, this shot's deliveries in lx before they are received: patch→patch
+    /// (m_shotE) and cluster→cluster (m_shotPending, joins m_pending).
+    std::vector<V> m_shotE, m_shotPending;
     bool m_conserve = false;
     V m_meanReflectance{0.0};  ///< area-weighted ρ̄
     double m_area = 0;         ///< Σ A_i, m²

@@ -88,10 +88,10 @@ class ShootingSolver {
 bool isGreyScene(const scene::Scene& scene);
 
 /// Energy accounting in lm: what the lights emit, what surfaces absorbed
-/// Σ (1 − ρ) (Ē_dir + E_ind) A, and what is still unshot. In a closed scene
-/// emitted = absorbed + unshot.
-/// The direct pass's own share: what the patches received first, Σ Ē_dir A, against the
-/// emitted flux (its patch-mean quadrature; light escaping or absorbed by mirrors).
+/// Σ (1 − ρ) (Ē_dir + E_ind) A, what is still unshot, and what the direct pass delivered
+/// first, Σ Ē_dir A. In a closed scene emitted = absorbed + unshot; the direct pass's
+/// share of any difference is its patch-mean quadrature (or light escaping, or absorbed
+/// by mirrors), the rest is the secondary pass's.
 struct EnergyBalance {
     double emitted = 0, absorbed = 0, unshot = 0, directReceived = 0;
     double relativeError() const { return emitted > 0 ? (absorbed + unshot - emitted) / emitted : 0.0; }

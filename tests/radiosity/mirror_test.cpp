@@ -19,12 +19,7 @@ TEST_CASE("closed diffuse sphere: uniform indirect rho/(1-rho) Phi/A for rho 0.3
     double rho = GENERATE(0.3, 0.7, 0.9);
     // A true sphere gives every point E_ind = ρ/(1−ρ) Φ / A. On the tessellation the
     // point values at the sensors agree within 1.5 % with A the polyhedron's area.
-    std::string json = fmt::format(R"({{"materials": {{"m": {{"reflectance": {}}}}},
-        "objects": [{{"type": "sphere", "material": "m", "radius": 1, "subdivisions": 12, "facing": "inward"}}],
-        "lights": [{{"type": "point", "position": [0.2, 0.4, 0.6], "intensity_cd": 100}}],
-        "sensors": [{{"name": "A", "position": [0, 0, 1], "normal": [0, 0, -1]}},
-                    {{"name": "C", "position": [0.57735027, 0.57735027, 0.57735027], "normal": [-0.57735027, -0.57735027, -0.57735027]}}],
-        "radiosity": {{"max_edge": 10, "stop_unshot": 1e-5}}}})", rho);
+    std::string json = test::closedSphereScene(rho, 12, R"("max_edge": 10, "stop_unshot": 1e-5)");
     auto run = app::runPipeline(test::writeTempScene(fmt::format("sphere_rho_{}", rho), json), quiet());
     REQUIRE(run.clustering.multiPatchClusters() > 0);
     double expected = rho / (1 - rho) * 4 * kPi * 100 / run.mesh.totalArea();

@@ -47,21 +47,19 @@ std::string boxRoom(double s, double rho, double intensity, const std::string& e
 }
 
 /// Overshooting and per-shot energy conservation on (both opt-in for now).
-app::PipelineOptions stiff() { return quiet({{"radiosity.overshoot", "true"}, {"radiosity.conserve_energy", "true"}}); }
+app::PipelineOptions stiff(std::vector<scene::Override> more = {}) {
+    more.push_back({"radiosity.overshoot", "true"});
+    more.push_back({"radiosity.conserve_energy", "true"});
+    return quiet(std::move(more));
+}
 
 }  // namespace
 
 TEST_CASE("stiff closed sphere: rho 0.9 / 0.99 / 0.999 within 1 % at three points, energy to 0.1 %", "[stability]") {
     double rho = GENERATE(0.9, 0.99, 0.999);
-    // E_ind = ρ/(1−ρ) Φ / A everywhere (method.md), A the polyhedron's area; 10 800 patches.
-    std::string json = fmt::format(R"({{"materials": {{"m": {{"reflectance": {}}}}},
-        "objects": [{{"type": "sphere", "material": "m", "radius": 1, "subdivisions": 30, "facing": "inward"}}],
-        "lights": [{{"type": "point", "position": [0.2, 0.4, 0.6], "intensity_cd": 100}}],
-        "sensors": [{{"name": "A", "position": [0, 0, 1], "normal": [0, 0, -1]}},
-                    {{"name": "B", "position": [0, -1, 0], "normal": [0, 1, 0]}},
-                    {{"name": "C", "position": [0.57735027, 0.57735027, 0.57735027], "normal": [-0.57735027, -0.57735027, -0.57735027]}}],
-        "radiosity": {{"max_edge": 10, "overshoot": true, "conserve_energy": true}}}})", rho);
-    auto run = app::runPipeline(test::writeTempScene(fmt::format("stiff_sphere_{}", rho), json), quiet());
+    // E_ind = ρ/(1−ρ) Φ / A everywhere, A the polyhedron's area; 10 800 patches.
+    std::string json = test::closedSphereScene(rho, 30, R"("max_edge": 10)");
+    auto run = app::runPipeline(test::writeTempScene(fmt::format("stiff_sphere_{}", rho), json), stiff());
     REQUIRE(run.mesh.patches.size() >= 5000);
     REQUIRE(run.clustering.multiPatchClusters() > 0);
     REQUIRE(allFinite(run));
@@ -79,7 +77,7 @@ TEST_CASE("stiff closed sphere: rho 0.9 / 0.99 / 0.999 within 1 % at three point
 TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot within 0.1 %", "[stability]") {
     SECTION("the cube, clusters and corrections on") {
         auto run = app::runPipeline(test::sourcePath("scenes/cube/cube.json"),
-                                    quiet({{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}, {"radiosity.overshoot", "true"}, {"radiosity.conserve_energy", "true"}}));
+                                    stiff({{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}}));
         REQUIRE(run.shooting.corrections > 0);
         CHECK(run.shooting.conserving);
         CHECK(std::abs(notAccounted(run)) < 1e-3);
