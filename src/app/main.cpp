@@ -88,7 +88,9 @@ void printSolveSummary(const app::PipelineRun& run) {
                : !run.scene.solver.conserveEnergy     ? "off (radiosity.conserve_energy)"
                : !run.scene.mirrors.empty()           ? "off (mirrors)"
                                                       : "off (open scene)",
-               st.conserving ? fmt::format(" (largest adjustment {:.3g}%)", 100 * st.largestRescale) : "",
+               st.conserving ? fmt::format(" (largest adjustment {:.3g}%, {} shots beyond the {:.0f}% bound left alone)",
+                                           100 * st.largestRescale, st.unbalancedShots, 100 * radiosity::kConservationBound)
+                             : "",
                st.overshooting ? "on" : "off");
 }
 

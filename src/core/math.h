@@ -18,8 +18,13 @@ using Rgb = glm::dvec3;
 constexpr double kPi = 3.14159265358979323846;
 
 /// Rec.709 luminance weights: Y of a linear Rec.709 triple (lx for illuminance RGB,
-/// cd/m² for luminance RGB).
-inline double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+/// cd/m² for luminance RGB). A grey triple's Y is its value, exactly (the weighted sum
+/// can be an ulp off): a grey scene solved in three channels then makes the same
+/// choices, tie for tie, as in one.
+inline double luminance(const Rgb& c) {
+    if (c.r == c.g && c.g == c.b) return c.g;
+    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
 
 inline bool isFinite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -70,34 +70,58 @@ double DirectLight::emittedFlux() const {
     return flux;
 }
 
-Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng) const {
+Vec3 DirectLight::pointSourcePosition(size_t s) const {
+    const size_t lights = m_pointLights.size();
+    const Vec3& p = m_pointLights[s % lights].position;
+    return s < lights ? p : m_images[s / lights - 1].point(p);
+}
+
+Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) {
+    Vec3 d = l.position - x;
+    double r2 = glm::dot(d, d);
+    if (r2 <= 0) return Rgb(0.0);
+    double r = std::sqrt(r2);
+    double cosTheta = glm::dot(n, d) / r;
+    if (cosTheta <= 0) return Rgb(0.0);
+    Rgb intensity = l.intensityToward(-d / r);
+    if (intensity == Rgb(0.0) || !vis.visible(x, l.position)) return Rgb(0.0);
+    return intensity * (cosTheta / r2);  // E = I cosθ / d²
+}
+
+Rgb DirectLight::fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,
+                                const Vec3& x, const Vec3& n) {
+    Vec3 d = image.point(l.position) - x;  // the unfolded path
+    double r2 = glm::dot(d, d);
+    if (r2 <= 0) return Rgb(0.0);
+    double cosTheta = glm::dot(n, d) / std::sqrt(r2);
+    if (cosTheta <= 0) return Rgb(0.0);
+    Vec3 leaving;
+    if (!path.trace(image.point(l.position), x, &leaving)) return Rgb(0.0);
+    return l.intensityToward(leaving) * image.weight * (cosTheta / r2);  // E = Ks I cosθ / d²
+}
+
+Rgb DirectLight::fromPointSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis) const {
+    const size_t lights = m_pointLights.size();
+    if (s < lights) return fromPointLight(m_pointLights[s], x, n, vis);
+    const MirrorImage& image = m_images[s / lights - 1];
+    return fromPointImage(m_pointLights[s % lights], image, MirrorPath(m_mirrors, image, vis), x, n);
+}
+
+Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
+                             std::vector<Rgb>* perPointSource) const {
+    const size_t lights = m_pointLights.size();
+    if (perPointSource) perPointSource->assign(pointSourceCount(), Rgb(0.0));
     Rgb e(0.0);
-    for (const auto& l : m_pointLights) {
-        Vec3 d = l.position - x;
-        double r2 = glm::dot(d, d);
-        if (r2 <= 0) continue;
-        double r = std::sqrt(r2);
-        double cosTheta = glm::dot(n, d) / r;
-        if (cosTheta <= 0) continue;
-        Rgb intensity = l.intensityToward(-d / r);
-        if (intensity == Rgb(0.0)) continue;
-        if (!vis.visible(x, l.position)) continue;
-        e += intensity * (cosTheta / r2);  // E = I cosθ / d²
-    }
+    auto add = [&](size_t s, const Rgb& value) {
+        if (perPointSource) (*perPointSource)[s] = value;
+        e += value;
+    };
+    for (size_t k = 0; k < lights; ++k) add(k, fromPointLight(m_pointLights[k], x, n, vis));
     for (const auto& a : m_areaLights) e += fromAreaLight(a, x, n, vis, samples, rng);
     for (size_t i = 0; i < m_images.size(); ++i) {
-        const MirrorImage& image = m_images[i];
-        MirrorPath path(m_mirrors, image, vis);
-        for (const auto& l : m_pointLights) {
-            Vec3 d = image.point(l.position) - x;  // the unfolded path
-            double r2 = glm::dot(d, d);
-            if (r2 <= 0) continue;
-            double cosTheta = glm::dot(n, d) / std::sqrt(r2);
-            if (cosTheta <= 0) continue;
-            Vec3 leaving;
-            if (!path.trace(image.point(l.position), x, &leaving)) continue;
-            e += l.intensityToward(leaving) * image.weight * (cosTheta / r2);  // E = Ks I cosθ / d²
-        }
+        MirrorPath path(m_mirrors, m_images[i], vis);
+        for (size_t k = 0; k < lights; ++k)
+            add((i + 1) * lights + k, fromPointImage(m_pointLights[k], m_images[i], path, x, n));
         for (const auto& a : m_imageAreaLights[i]) e += fromAreaLight(a, x, n, path, samples, rng);
     }
     return e;

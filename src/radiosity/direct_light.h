@@ -33,7 +33,18 @@ class DirectLight {
     /// Point/spot: E = I(ω) cosθ / d² · V. Area: E = π L F_analytic · (visible fraction),
     /// the fraction estimated from `samples` stratified shadow rays per light, weighted by
     /// cosθ_x cosθ_y / r²; `rng` jitters them (nullptr: cell centres, deterministic).
-    Rgb illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng) const;
+    /// `perPointSource` (if given, size pointSourceCount()) also gets each point source's
+    /// share of the result.
+    Rgb illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
+                    std::vector<Rgb>* perPointSource = nullptr) const;
+
+    /// Point sources: the point lights, then for each mirror image the point lights'
+    /// images (weight Π Ks, seen through the mirrors), in that order.
+    size_t pointSourceCount() const { return m_pointLights.size() * (1 + m_images.size()); }
+    /// Where point source s is (for an image, the mirrored position), m.
+    Vec3 pointSourcePosition(size_t s) const;
+    /// Illuminance (lx) at x, normal n, from point source s alone, with its shadow ray.
+    Rgb fromPointSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis) const;
 
     const std::vector<AreaLight>& areaLights() const { return m_areaLights; }
     const std::vector<scene::PointLight>& pointLights() const { return m_pointLights; }
@@ -42,6 +53,9 @@ class DirectLight {
     size_t virtualLightCount() const { return m_images.size() * (m_pointLights.size() + m_areaLights.size()); }
 
   private:
+    static Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis);
+    static Rgb fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,
+                              const Vec3& x, const Vec3& n);
     Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
                       Random* rng) const;
 

@@ -8,9 +8,11 @@
 
 namespace rayrad::radiosity {
 
-/// Fills solution.directCorner (E at each corner) and solution.directMean: the mean direct illuminance over each patch from its
-/// centroid and its three corners, (3/4) E(c) + (1/12) Σ E(v_k) — exact for quadratic
-/// variation. Evaluation points are pulled a hair toward the centroid so shadow rays
+/// Fills solution.directCorner (E at each corner) and solution.directMean: the mean
+/// direct illuminance over each patch from its centroid and its three corners,
+/// (3/4) E(c) + (1/12) Σ E(v_k) — exact for quadratic variation — with each point
+/// source's share rescaled so that, unshadowed, it is exact (I Ω / A, Ω the solid angle
+/// of the patch). Evaluation points are pulled a hair toward the centroid so shadow rays
 /// from corners do not start inside a neighbouring wall. Deterministic; parallel.
 void computeDirect(const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis, int areaSamples,
                    RadiositySolution& solution);

@@ -14,36 +14,42 @@ namespace rayrad::radiosity {
 ///     negative: that is legitimate unshot energy and is shot later like any other);
 ///  3. shoot C's *total* luminance L_i of every member patch→patch to D's patches
 ///     (this includes the current ΔL_i, so D takes no part in this step's regular shot);
+///     like the regular shot's, these deliveries wait in m_shotE for deliver();
 ///  4. push-pull D.
-/// `totalOfSource[k]` is L_i of C's k-th member. Touches only D's state, so receivers
-/// can be corrected in parallel.
+/// `totalOfSource[k]` is what C's k-th member will have shipped after this shot: L_i,
+/// plus its overshoot. Touches only D's state, so receivers can be corrected in
+/// parallel. Returns the flux taken away in step 2, in lm: it was delivered by earlier
+/// shots, and a conserving shot must deliver it again (step 3 re-estimates it together
+/// with this shot's share, and deliver() scales the two as one).
 /// A mirror image of C (source s) is corrected the same way, with its own geometry,
 /// its path visibility and its weight Π Ks.
 template <class V>
-void ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
+double ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
                               const std::vector<V>& totalOfSource) {
     const Cluster& C = s.clustering->clusters[c];
     const Cluster& D = m_clustering.clusters[d];
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
     V shotSoFar = m_light[c].total - m_light[c].unshot;
+    double removed = 0;  // lm
     V received = shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis,
                                                                    m_options.analyticDistance);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
-        for (size_t k = 0; k < D.patches.size(); ++k) receive(D.patches[k], -(received * shape[k]));
+        for (size_t k = 0; k < D.patches.size(); ++k) {
+            uint32_t j = D.patches[k];
+            receive(j, -(received * shape[k]));
+            removed += lum(received * shape[k]) * m_mesh.patches[j].area;
+        }
     }
     shootPatches(s, c, totalOfSource, d, m_shotE);
-    for (uint32_t j : D.patches) {
-        receive(j, m_shotE[j]);
-        m_shotE[j] = V(0.0);
-    }
     pull(d);
+    return removed;
 }
 
-template void ShootingCore<double>::correct(const Source&, size_t, size_t, const ClusterSamples&,
+template double ShootingCore<double>::correct(const Source&, size_t, size_t, const ClusterSamples&,
                                            const std::vector<double>&);
-template void ShootingCore<Rgb>::correct(const Source&, size_t, size_t, const ClusterSamples&,
+template double ShootingCore<Rgb>::correct(const Source&, size_t, size_t, const ClusterSamples&,
                                         const std::vector<Rgb>&);
 
 }  // namespace rayrad::radiosity

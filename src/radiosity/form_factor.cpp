@@ -64,4 +64,12 @@ double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, c
     return area * cosX * cosS / (kPi * r2);
 }
 
+double triangleSolidAngle(const Vec3& p, const Vec3& v0, const Vec3& v1, const Vec3& v2) {
+    Vec3 a = v0 - p, b = v1 - p, c = v2 - p;
+    double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+    double numerator = std::abs(glm::dot(a, glm::cross(b, c)));
+    double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
+    return 2 * std::atan2(numerator, denominator);  // atan2 keeps Ω > π when the denominator is negative
+}
+
 }  // namespace rayrad::radiosity

@@ -16,4 +16,10 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
 ///   F ≈ A cosθ_x cosθ_s / (π r²), valid when r ≫ the source size.
 double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal, double area);
 
+/// Solid angle (sr) a triangle subtends at p (Van Oosterom & Strackee 1983): with
+/// a, b, c the vectors from p to the corners,
+///   tan(Ω/2) = |a·(b×c)| / (|a||b||c| + (a·b)|c| + (a·c)|b| + (b·c)|a|).
+/// An isotropic point source of intensity I sends I Ω lumens onto the triangle.
+double triangleSolidAngle(const Vec3& p, const Vec3& v0, const Vec3& v1, const Vec3& v2);
+
 }  // namespace rayrad::radiosity

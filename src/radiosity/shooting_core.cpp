@@ -245,20 +245,32 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     Light& light = m_light[c];
     int r = radius >= 0 ? radius : radiusFor(c);
     const size_t n = m_clustering.clusters.size();
+    const Cluster& C = m_clustering.clusters[c];
+    // With overshooting each member also ships what it will receive later, ρ_i E_amb / π,
+    // and keeps minus that as unshot light. A patch that has received no light so far
+    // (the underside of a box on the floor) is taken to receive none later: it gets no
+    // overshoot it could not ship.
+    const V ambient = m_options.overshoot ? ambientIlluminance() : V(0.0);
+    std::vector<V> overshoot(C.patches.size(), V(0.0));
+    for (size_t k = 0; k < C.patches.size(); ++k) {
+        uint32_t i = C.patches[k];
+        bool lit = lum(m_direct[i]) != 0 || lum(m_indirect[i]) != 0;
+        if (lit) overshoot[k] = m_reflectance[i] * ambient / kPi;
+    }
     // corrected[s][d]: receiver d already got source s's total in a correction.
     std::vector<std::vector<char>> corrected(m_sources.size(), std::vector<char>(n, 0));
     const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
+    double redelivered = 0;  // lm of earlier shots the corrections took away, delivered again now
 
     if (correcting && light.radius > 0 && r > light.radius) {
         // r_v grew: the ring old ≤ d < new switches from cluster→cluster to patch→patch,
         // for the real shooter and for each of its mirror images.
-        const Cluster& C = m_clustering.clusters[c];
-        std::vector<V> total(C.patches.size());
+        std::vector<V> total(C.patches.size());  // what member i will have shipped after this shot
         std::vector<double> shotPower(C.patches.size());  // what earlier shots carried, ≈ (L_i − ΔL_i) A_i
         for (size_t k = 0; k < C.patches.size(); ++k) {
             uint32_t i = C.patches[k];
-            total[k] = reflected(i);
-            shotPower[k] = lum(total[k] - m_unshot[i]) * m_mesh.patches[i].area;
+            total[k] = reflected(i) + overshoot[k];
+            shotPower[k] = lum(reflected(i) - m_unshot[i]) * m_mesh.patches[i].area;
         }
         const ClusterSamples shotSamples = powerSamples(C, shotPower);
         for (size_t si = 0; si < m_sources.size(); ++si) {
@@ -271,35 +283,31 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, c, d))
                     ring.push_back(d);
             }
-            tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) { correct(s, c, ring[k], shotSamples, total); });
+            std::vector<double> removed(ring.size());
+            tbb::parallel_for(size_t(0), ring.size(),
+                              [&](size_t k) { removed[k] = correct(s, c, ring[k], shotSamples, total); });
+            for (double f : removed) redelivered += f;
             for (size_t d : ring) corrected[si][d] = 1;
             m_stats.corrections += static_cast<int64_t>(ring.size());
         }
     }
     if (correcting) r = std::max(r, light.radius);  // r_v never shrinks: each receiver switches once
 
-    // The shooter's unshot light leaves now; it may receive some of it back (intra-cluster).
-    // With overshooting each member also ships what it will receive later, ρ_i E_amb / π,
-    // and keeps minus that as unshot light.
-    const Cluster& C = m_clustering.clusters[c];
-    const V ambient = m_options.overshoot ? ambientIlluminance() : V(0.0);
+    // The shooter's unshot light (plus the overshoot) leaves now; it may receive some of
+    // it back (intra-cluster).
     std::vector<V> unshot(C.patches.size());
     std::vector<double> unshotPower(C.patches.size());  // ΔL_i A_i, where the rays leave from
     V deltaLC(0.0), keptLC(0.0);
     double shotFlux = 0;  // lm
     for (size_t k = 0; k < C.patches.size(); ++k) {
         uint32_t i = C.patches[k];
-        // A patch that has received no light so far (the underside of a box on the floor)
-        // is taken to receive none later: it gets no overshoot it could not ship.
-        bool lit = lum(m_direct[i]) != 0 || lum(m_indirect[i]) != 0;
-        V overshoot = lit ? m_reflectance[i] * ambient / kPi : V(0.0);
-        unshot[k] = m_unshot[i] + overshoot;
-        m_unshot[i] = -overshoot;
+        unshot[k] = m_unshot[i] + overshoot[k];
+        m_unshot[i] = -overshoot[k];
         double a = m_mesh.patches[i].area;
         unshotPower[k] = lum(unshot[k]) * a;
         shotFlux += kPi * unshotPower[k];
         deltaLC += unshot[k] * a;
-        keptLC -= overshoot * a;
+        keptLC -= overshoot[k] * a;
     }
     deltaLC = deltaLC / C.area;
     light.unshot = keptLC / C.area;
@@ -335,15 +343,15 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         m_stats.clusterTransfers += clusterTransfers;
         m_stats.patchPairs += patchPairs;
     }
-    deliver(shotFlux);
+    deliver(shotFlux, redelivered);
     light.radius = r;
 }
 
 template <class V>
-void ShootingCore<V>::deliver(double shotFlux) {
+void ShootingCore<V>::deliver(double shotFlux, double redelivered) {
     const size_t n = m_clustering.clusters.size();
-    // Closed scene, no mirrors: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1). The
-    // deficit δ is shared in proportion to |ΔE_j| A_j: ΔE_j (1 + sgn(ΔE_j) δ / Σ|ΔE_k| A_k),
+    // Closed scene, no mirrors: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1), plus
+    // what the corrections took away to deliver again. The deficit δ is shared in proportion to |ΔE_j| A_j: ΔE_j (1 + sgn(ΔE_j) δ / Σ|ΔE_k| A_k),
     // which is a plain rescale when every delivery has one sign and stays exact when an
     // overshooting cluster ships light of both signs.
     double adjust = 0;  // δ / Σ|ΔE_k| A_k
@@ -360,11 +368,12 @@ void ShootingCore<V>::deliver(double shotFlux) {
                 return sum;
             },
             [](const Sums& a, const Sums& b) { return Sums{a.first + b.first, a.second + b.second}; });
-        double deficit = shotFlux - received.first;
-        // A deficit beyond a quarter of the delivery is not a closed-scene rounding: leave it.
-        if (received.second > 0 && std::abs(deficit) <= 0.25 * received.second) {
+        double deficit = shotFlux + redelivered - received.first;
+        if (received.second > 0 && std::abs(deficit) <= kConservationBound * received.second) {
             adjust = deficit / received.second;
             m_stats.largestRescale = std::max(m_stats.largestRescale, std::abs(adjust));
+        } else if (shotFlux != 0) {
+            ++m_stats.unbalancedShots;
         }
     }
     auto adjusted = [adjust](const V& e) { return e * (1.0 + (lum(e) < 0 ? -adjust : adjust)); };

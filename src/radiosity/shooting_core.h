@@ -86,11 +86,12 @@ class ShootingCore final : public ShootingCoreBase {
     void shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver, std::vector<V>& into);
     /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
     /// the flux shot when conserving.
-    void deliver(double shotFlux);
+    /// `redelivered`: the flux (lm) this shot's corrections took away to deliver again.
+    void deliver(double shotFlux, double redelivered);
     /// E_amb in lx: the illuminance the unshot power will still add everywhere (overshooting).
     V ambientIlluminance() const;
-    void correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
-                 const std::vector<V>& totalOfSource);  // energy_correction.cpp
+    double correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
+                   const std::vector<V>& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
     /// False when no light of cluster c can pass through s's mirrors to cluster d.
     static bool canReach(const Source& s, size_t c, size_t d) { return !s.image || (s.sends[c] && s.receives[d]); }

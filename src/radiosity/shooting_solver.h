@@ -24,6 +24,10 @@ struct ClusterLight {
     int radius = 0;     ///< r_v of the last shot, in voxels (0 = never shot)
 };
 
+/// Per-shot conservation adjusts a shot's deliveries by at most this fraction: a larger
+/// deficit is not a closed scene's rounding, and the shot is left as it is (counted).
+constexpr double kConservationBound = 3.0;
+
 /// Counters of what the solve did.
 struct ShootingStatistics {
     int64_t clusterTransfers = 0;  ///< cluster→cluster receivers
@@ -33,6 +37,7 @@ struct ShootingStatistics {
     double escapeFraction = 0;     ///< of rays leaving the surfaces (0: a closed scene)
     bool conserving = false;       ///< per-shot energy conservation applied (closed, no mirrors)
     double largestRescale = 0;     ///< max |scale − 1| applied to a shot by the conservation
+    int64_t unbalancedShots = 0;   ///< shots the conservation left alone (deficit beyond its bound)
     bool overshooting = false;
 };
 

@@ -83,14 +83,14 @@ struct SolverOptions {
     /// deliveries are scaled so the flux received equals the flux shot (the form factors
     /// of a closed scene sum to 1; the point approximations and the cluster visibility
     /// estimate do not quite). Without it a sphere at ρ = 0.99 lost 8 % of its light.
-    bool conserveEnergy = false;  // opt-in until the open problems in docs/validation.md are solved
+    bool conserveEnergy = true;
     /// Overshooting (Feda & Purgathofer 1992): a shooter also ships the light it will
     /// receive later, estimated by the ambient term ρ_i E_amb / π with
     /// E_amb = π ΔΦ (1 − e) / (A (1 − ρ̄ (1 − e))) (ΔΦ the unshot power, A the surface area,
     /// ρ̄ the mean reflectance, e the escape fraction), and keeps the negative difference
     /// as unshot light. Speeds up near-white (stiff) scenes many times. Off by default:
     /// it moved the open Cornell box's image beyond its golden tolerance (not understood).
-    bool overshoot = false;
+    bool overshoot = true;
     /// Solve one channel instead of three when every reflectance and light is grey.
     bool oneChannelWhenGrey = true;
 };

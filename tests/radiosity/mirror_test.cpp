@@ -68,7 +68,7 @@ TEST_CASE("two facing mirrors: images of images stop at the depth and weight lim
     CHECK(radiosity::enumerateMirrorImages(backToBack, {8, 1e-3}).size() == 2);
 }
 
-TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors]") {
+TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors][stability]") {
     std::string json = R"({"materials": {"w": {"reflectance": 0.5}, "m": {"type": "mirror", "specular_reflectance": 0.95}},
         "objects": [{"type": "box", "min": [0, 0, 0], "max": [3, 2, 2], "facing": "inward", "material": "w"},
                     {"type": "quad", "material": "m", "vertices": [[0.01, 0.5, 0.5], [0.01, 1.5, 0.5], [0.01, 1.5, 1.5], [0.01, 0.5, 1.5]]},

@@ -46,12 +46,6 @@ std::string boxRoom(double s, double rho, double intensity, const std::string& e
                        fmt::arg("w2", 2.6 * s), fmt::arg("e", 0.5 * s));
 }
 
-/// Overshooting and per-shot energy conservation on (both opt-in for now).
-app::PipelineOptions stiff(std::vector<scene::Override> more = {}) {
-    more.push_back({"radiosity.overshoot", "true"});
-    more.push_back({"radiosity.conserve_energy", "true"});
-    return quiet(std::move(more));
-}
 
 }  // namespace
 
@@ -59,7 +53,7 @@ TEST_CASE("stiff closed sphere: rho 0.9 / 0.99 / 0.999 within 1 % at three point
     double rho = GENERATE(0.9, 0.99, 0.999);
     // E_ind = ρ/(1−ρ) Φ / A everywhere, A the polyhedron's area; 10 800 patches.
     std::string json = test::closedSphereScene(rho, 30, R"("max_edge": 10)");
-    auto run = app::runPipeline(test::writeTempScene(fmt::format("stiff_sphere_{}", rho), json), stiff());
+    auto run = app::runPipeline(test::writeTempScene(fmt::format("stiff_sphere_{}", rho), json), quiet());
     REQUIRE(run.mesh.patches.size() >= 5000);
     REQUIRE(run.clustering.multiPatchClusters() > 0);
     REQUIRE(allFinite(run));
@@ -77,7 +71,7 @@ TEST_CASE("stiff closed sphere: rho 0.9 / 0.99 / 0.999 within 1 % at three point
 TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot within 0.1 %", "[stability]") {
     SECTION("the cube, clusters and corrections on") {
         auto run = app::runPipeline(test::sourcePath("scenes/cube/cube.json"),
-                                    stiff({{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}}));
+                                    quiet({{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}}));
         REQUIRE(run.shooting.corrections > 0);
         CHECK(run.shooting.conserving);
         CHECK(std::abs(notAccounted(run)) < 1e-3);
@@ -86,17 +80,17 @@ TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot withi
         std::string json = boxRoom(1, 0.6, 100,
                                    R"(, {"type": "box", "material": "red", "min": [1, 0, 1], "max": [2, 1, 2]})");
         json.replace(json.find("\"m\": {"), 0, R"("red": {"reflectance": [0.7, 0.2, 0.1]}, )");
-        auto run = app::runPipeline(test::writeTempScene("energy_room", json), stiff());
+        auto run = app::runPipeline(test::writeTempScene("energy_room", json), quiet());
         REQUIRE_FALSE(run.singleChannel);
         CHECK(run.shooting.conserving);
-        // Known problems, measured and bounded here (docs/validation.md): the light is
-        // 0.9 m from the ceiling and the patches 0.5 m, and the direct pass's 4-point
-        // patch means are +0.46 % off; the clustered secondary pass loses −0.22 % around
-        // the block (unclustered −0.006 %), not yet found. Issue 5 asks for 0.1 %.
+        // The block's shadow crosses 0.5 m floor patches (the direct pass samples those
+        // more densely), and floor patches run under the block (their shots lose half
+        // their light into it, and conservation puts it back).
         auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
         INFO("direct pass " << 100 * b.directError() << " %, secondary " << 100 * b.secondaryError() << " %");
-        CHECK(std::abs(b.secondaryError()) < 3e-3);
-        CHECK(std::abs(b.directError()) < 1e-2);
+        CHECK(std::abs(b.directError()) < 1e-3);
+        CHECK(std::abs(b.secondaryError()) < 1e-3);
+        CHECK(std::abs(b.relativeError()) < 1e-3);
     }
 }
 
@@ -122,12 +116,13 @@ TEST_CASE("a point light 1 mm from a wall: exact direct light at its foot, finit
     std::string json = boxRoom(1, 0.5, 10, "", "");
     // Move the light to 1 mm in front of the wall x = 0 and put a sensor at its foot.
     json.replace(json.find("[1.3, 2.1, 1.7]"), std::string("[1.3, 2.1, 1.7]").size(), "[0.001, 1.4, 2.6]");
-    auto run = app::runPipeline(test::writeTempScene("light_at_wall", json), stiff());
+    auto run = app::runPipeline(test::writeTempScene("light_at_wall", json), quiet());
     REQUIRE(allFinite(run));
     const auto& wall = run.sensors[1];  // at (0, 1.4, 2.6), facing +x
     CHECK(luminance(wall.value.direct) == Approx(10 / (0.001 * 0.001)).epsilon(1e-6));  // E = I / d²
-    // Not checked here: the energy account. A patch's mean direct light is a 4-point
-    // rule, which misses most of a peak 1 mm wide (docs/validation.md, known problems).
+    // The patch under the light gets almost half the flux, in a peak 1 mm wide: the
+    // direct pass takes its mean from the solid angle, so nothing is lost.
+    CHECK(std::abs(notAccounted(run)) < 1e-3);
 }
 
 TEST_CASE("touching, overlapping and broken geometry: no NaN, no crash, degenerate triangles dropped", "[stability]") {
@@ -158,14 +153,14 @@ TEST_CASE("10 000 point lights, and lights 10^6 apart in one scene", "[stability
                                   0.2 + 3.6 * ((k * 37) % 100) / 100.0, 1.0 + 1.0 * (k % 7) / 7.0,
                                   0.2 + 4.6 * ((k * 13) % 97) / 97.0);
         auto run = app::runPipeline(test::writeTempScene("many_lights", boxRoom(1, 0.5, 1, "", lights)),
-                                    stiff());
+                                    quiet());
         REQUIRE(run.scene.lights.size() == 10001);
         REQUIRE(allFinite(run));
         CHECK(std::abs(notAccounted(run)) < 1e-3);
     }
     SECTION("1e6 and 1 cd") {
         auto json = boxRoom(1, 0.5, 1e6, "", R"(, {"type": "point", "position": [3, 1, 4], "intensity_cd": 1})");
-        auto run = app::runPipeline(test::writeTempScene("wide_range", json), stiff());
+        auto run = app::runPipeline(test::writeTempScene("wide_range", json), quiet());
         REQUIRE(allFinite(run));
         CHECK(std::abs(notAccounted(run)) < 1e-3);
     }
