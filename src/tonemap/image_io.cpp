@@ -52,6 +52,9 @@ void writeExr(const std::string& path, const HdrImage& image, const std::string&
     // OpenEXR's standard attribute: luminance in cd/m² of RGB (1, 1, 1).
     spec.attribute("whiteLuminance", 1.0f);
     spec.attribute("compression", "zip");
+    // No DateTime (OIIO would stamp the wall clock): the same scene, seed and options
+    // give a bit-identical file. The file's own time says when it was written.
+    spec.attribute("DateTime", "");
     writeAtomically(path, [&](const std::string& tmp) { writePixels(path, tmp, spec, OIIO::TypeDesc::FLOAT, buf.data()); });
 }
 
@@ -59,6 +62,7 @@ void writeDisplayImage(const std::string& path, int width, int height, const std
     OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("Software", "rayrad");
+    spec.attribute("DateTime", "");  // bit-identical files, as for EXR
     writeAtomically(path, [&](const std::string& tmp) { writePixels(path, tmp, spec, OIIO::TypeDesc::UINT8, rgb8.data()); });
 }
 

@@ -15,7 +15,8 @@ bool isHdrFormat(const std::string& path);
 void checkImageFormat(const std::string& path);
 
 /// Writes linear Rec.709 in absolute luminance (cd/m²), 32-bit floats (half floats overflow at 65504 cd/m²), with metadata
-/// saying so. Temp file + rename: never leaves a partial file.
+/// saying so, and no time stamp (the same input gives the same bytes). Temp file +
+/// rename: never leaves a partial file.
 void writeExr(const std::string& path, const HdrImage& image, const std::string& description);
 
 /// Writes display-encoded 8-bit RGB (already tone mapped and encoded).
