@@ -60,8 +60,33 @@ const json* JsonObject::get(const std::string& key) {
     return it == m_json.end() ? nullptr : &*it;
 }
 
+/// True when `word` looks like `key` mistyped: one letter off, two neighbours swapped,
+/// or (keys of 6 letters or more) two letters off. Stricter than closestMatch(), because
+/// the other keys of the object are not known yet ("max" is not a typo of "min").
+static bool likelyTypo(const std::string& word, const std::string& key) {
+    size_t d = editDistance(word, key);
+    if (d <= 1 || (key.size() >= 6 && d <= 2)) return true;
+    if (word.size() != key.size()) return false;
+    std::vector<size_t> differ;
+    for (size_t i = 0; i < key.size(); ++i)
+        if (word[i] != key[i]) differ.push_back(i);
+    return differ.size() == 2 && differ[1] == differ[0] + 1 && word[differ[0]] == key[differ[1]] &&
+           word[differ[1]] == key[differ[0]];
+}
+
 void JsonObject::required(const std::string& key) {
-    if (!has(key)) m_ctx.error(m_path.empty() ? "/" : m_path, fmt::format("missing required key \"{}\"", key));
+    if (has(key)) return;
+    // A misspelt required key ("mni" for "min") is named as such, once (finish() then
+    // takes it as read).
+    for (auto it = m_json.begin(); it != m_json.end(); ++it) {
+        const std::string& candidate = it.key();
+        if (!m_read.count(candidate) && likelyTypo(candidate, key)) {
+            m_read.insert(candidate);
+            error(candidate, fmt::format("unknown key (did you mean \"{}\"? it is required)", key));
+            return;
+        }
+    }
+    m_ctx.error(m_path.empty() ? "/" : m_path, fmt::format("missing required key \"{}\"", key));
 }
 
 static bool isNumber(const json& v) { return v.is_number(); }
