@@ -80,16 +80,17 @@ struct SolverOptions {
     int mirrorDepth = 4;             ///< reflections per image chain
     double mirrorMinWeight = 1e-3;   ///< drop chains whose Π Ks falls below this
     /// Per-shot energy conservation in closed scenes without mirrors: each shot's
-    /// deliveries are scaled so the flux received equals the flux shot (the form factors
-    /// of a closed scene sum to 1; the point approximations and the cluster visibility
-    /// estimate do not quite). Without it a sphere at ρ = 0.99 lost 8 % of its light.
+    /// deliveries (and what the energy corrections redeliver) are scaled so the flux
+    /// received equals the flux shot (the form factors of a closed scene sum to 1; the
+    /// point approximations and the cluster visibility estimate do not quite). Without
+    /// it a sphere at ρ = 0.99 lost 8 % of its light. A shot off by more than
+    /// kConservationBound is left alone and counted.
     bool conserveEnergy = true;
     /// Overshooting (Feda & Purgathofer 1992): a shooter also ships the light it will
     /// receive later, estimated by the ambient term ρ_i E_amb / π with
     /// E_amb = π ΔΦ (1 − e) / (A (1 − ρ̄ (1 − e))) (ΔΦ the unshot power, A the surface area,
     /// ρ̄ the mean reflectance, e the escape fraction), and keeps the negative difference
-    /// as unshot light. Speeds up near-white (stiff) scenes many times. Off by default:
-    /// it moved the open Cornell box's image beyond its golden tolerance (not understood).
+    /// as unshot light. Speeds up near-white (stiff) scenes many times.
     bool overshoot = true;
     /// Solve one channel instead of three when every reflectance and light is grey.
     bool oneChannelWhenGrey = true;
