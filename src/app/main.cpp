@@ -77,17 +77,16 @@ void printSolveSummary(const app::PipelineRun& run) {
         fmt::print(stderr, "transfers: {} cluster→cluster, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
                    run.shooting.clusterTransfers, run.shooting.patchPairs, run.shooting.corrections,
                    run.shooting.pushPulls, run.maxIlluminanceStep);
-    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm, unshot {:.6g} lm, not accounted {:+.4f}% "
+    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm{}, unshot {:.6g} lm, not accounted {:+.4f}% "
                        "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
-               balance.emitted, balance.absorbed, balance.unshot, 100 * balance.relativeError(),
+               balance.emitted, balance.absorbed,
+               run.scene.mirrors.empty() ? "" : fmt::format(" (+ {:.6g} lm by mirrors)", balance.mirrorAbsorbed),
+               balance.unshot, 100 * balance.relativeError(),
                100 * balance.directError(), 100 * balance.secondaryError());
     const auto& st = run.shooting;
     fmt::print(stderr, "closure: {:.3g}% of reflected light escapes; per-shot energy conservation {}{}; overshooting {}\n",
                100 * st.escapeFraction,
-               st.conserving                          ? "on"
-               : !run.scene.solver.conserveEnergy     ? "off (radiosity.conserve_energy)"
-               : !run.scene.mirrors.empty()           ? "off (mirrors)"
-                                                      : "off (open scene)",
+               st.conserving ? "on" : "off (" + st.conservationOff + ")",
                st.conserving ? fmt::format(" (largest adjustment {:.3g}%, {} shots beyond the {:.0f}% bound left alone)",
                                            100 * st.largestRescale, st.unbalancedShots, 100 * radiosity::kConservationBound)
                              : "",

@@ -247,7 +247,8 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) 
                   {"channels", run.singleChannel ? 1 : 3}};
     if (run.lights) {
         auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
-        j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"unshot", b.unshot},
+        j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"absorbed_by_mirrors", b.mirrorAbsorbed},
+                          {"unshot", b.unshot},
                           {"not_accounted_pct", 100 * b.relativeError()}};
     }
     j["stages"] = json::array();

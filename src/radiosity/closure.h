@@ -15,4 +15,9 @@ namespace rayrad::radiosity {
 double escapeFraction(const PatchMesh& mesh, const Visibility& vis, double farAway, const std::vector<double>& weight,
                       int rays = 4096);
 
+/// A scene counts as closed (per-shot conservation applies) when less than this fraction
+/// escapes: the closed mirror room lets 1 ray in 4 096 through a crack where two quads
+/// meet in single precision. What conservation then puts back is below 0.1 %.
+constexpr double kClosedEscapeFraction = 1e-3;
+
 }  // namespace rayrad::radiosity

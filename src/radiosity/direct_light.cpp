@@ -71,9 +71,8 @@ double DirectLight::emittedFlux() const {
 }
 
 Vec3 DirectLight::pointSourcePosition(size_t s) const {
-    const size_t lights = m_pointLights.size();
-    const Vec3& p = m_pointLights[s % lights].position;
-    return s < lights ? p : m_images[s / lights - 1].point(p);
+    const Vec3& p = m_pointLights[s % perChain()].position;
+    return s < perChain() ? p : m_images[s / perChain() - 1].point(p);
 }
 
 Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) {
@@ -101,28 +100,30 @@ Rgb DirectLight::fromPointImage(const scene::PointLight& l, const MirrorImage& i
 }
 
 Rgb DirectLight::fromPointSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis) const {
-    const size_t lights = m_pointLights.size();
-    if (s < lights) return fromPointLight(m_pointLights[s], x, n, vis);
-    const MirrorImage& image = m_images[s / lights - 1];
-    return fromPointImage(m_pointLights[s % lights], image, MirrorPath(m_mirrors, image, vis), x, n);
+    const scene::PointLight& light = m_pointLights[s % perChain()];
+    if (s < perChain()) return fromPointLight(light, x, n, vis);
+    const MirrorImage& image = m_images[s / perChain() - 1];
+    return fromPointImage(light, image, MirrorPath(m_mirrors, image, vis), x, n);
 }
 
 Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                             std::vector<Rgb>* perPointSource) const {
-    const size_t lights = m_pointLights.size();
-    if (perPointSource) perPointSource->assign(pointSourceCount(), Rgb(0.0));
+                             std::vector<Rgb>* perSource) const {
+    const size_t points = m_pointLights.size();
+    if (perSource) perSource->assign(sourceCount(), Rgb(0.0));
     Rgb e(0.0);
     auto add = [&](size_t s, const Rgb& value) {
-        if (perPointSource) (*perPointSource)[s] = value;
+        if (perSource) (*perSource)[s] = value;
         e += value;
     };
-    for (size_t k = 0; k < lights; ++k) add(k, fromPointLight(m_pointLights[k], x, n, vis));
-    for (const auto& a : m_areaLights) e += fromAreaLight(a, x, n, vis, samples, rng);
+    for (size_t k = 0; k < points; ++k) add(k, fromPointLight(m_pointLights[k], x, n, vis));
+    for (size_t k = 0; k < m_areaLights.size(); ++k)
+        add(points + k, fromAreaLight(m_areaLights[k], x, n, vis, samples, rng));
     for (size_t i = 0; i < m_images.size(); ++i) {
         MirrorPath path(m_mirrors, m_images[i], vis);
-        for (size_t k = 0; k < lights; ++k)
-            add((i + 1) * lights + k, fromPointImage(m_pointLights[k], m_images[i], path, x, n));
-        for (const auto& a : m_imageAreaLights[i]) e += fromAreaLight(a, x, n, path, samples, rng);
+        const size_t chain = (i + 1) * perChain();
+        for (size_t k = 0; k < points; ++k) add(chain + k, fromPointImage(m_pointLights[k], m_images[i], path, x, n));
+        for (size_t k = 0; k < m_areaLights.size(); ++k)
+            add(chain + points + k, fromAreaLight(m_imageAreaLights[i][k], x, n, path, samples, rng));
     }
     return e;
 }

@@ -33,16 +33,20 @@ class DirectLight {
     /// Point/spot: E = I(ω) cosθ / d² · V. Area: E = π L F_analytic · (visible fraction),
     /// the fraction estimated from `samples` stratified shadow rays per light, weighted by
     /// cosθ_x cosθ_y / r²; `rng` jitters them (nullptr: cell centres, deterministic).
-    /// `perPointSource` (if given, size pointSourceCount()) also gets each point source's
-    /// share of the result.
+    /// `perSource` (if given, size sourceCount()) also gets each source's share of the
+    /// result.
     Rgb illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                    std::vector<Rgb>* perPointSource = nullptr) const;
+                    std::vector<Rgb>* perSource = nullptr) const;
 
-    /// Point sources: the point lights, then for each mirror image the point lights'
-    /// images (weight Π Ks, seen through the mirrors), in that order.
-    size_t pointSourceCount() const { return m_pointLights.size() * (1 + m_images.size()); }
+    /// Sources: for the real scene and then each mirror image, the point lights and then
+    /// the area lights: s = chain · (points + areas) + k, chain 0 the real scene.
+    size_t sourceCount() const { return perChain() * (1 + m_images.size()); }
+    bool isPointSource(size_t s) const { return s % perChain() < m_pointLights.size(); }
     /// Where point source s is (for an image, the mirrored position), m.
     Vec3 pointSourcePosition(size_t s) const;
+    /// Π Ks of the mirrors on source s's path (1 for a real light): of the light it
+    /// delivers, a fraction 1/weight − 1 more was absorbed by the mirrors on the way.
+    Rgb sourceWeight(size_t s) const { return s < perChain() ? Rgb(1.0) : m_images[s / perChain() - 1].weight; }
     /// Illuminance (lx) at x, normal n, from point source s alone, with its shadow ray.
     Rgb fromPointSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis) const;
 
@@ -53,6 +57,7 @@ class DirectLight {
     size_t virtualLightCount() const { return m_images.size() * (m_pointLights.size() + m_areaLights.size()); }
 
   private:
+    size_t perChain() const { return m_pointLights.size() + m_areaLights.size(); }
     static Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis);
     static Rgb fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,
                               const Vec3& x, const Vec3& n);

@@ -1,6 +1,7 @@
 #include <radiosity/direct_pass.h>
 
 #include <radiosity/form_factor.h>
+#include <radiosity/light_value.h>
 
 #include <tbb/parallel_for.h>
 
@@ -36,69 +37,89 @@ std::vector<std::array<double, 2>> shadowSamplePoints(int count) {
 /// Shadow rays per point source on a partly shadowed patch.
 constexpr int kShadowSamples = 64;
 
+/// The four evaluation points of patch p: its corners pulled a hair toward the centroid
+/// (so shadow rays do not start inside a neighbouring wall), then the centroid.
+std::array<Vec3, 4> evaluationPoints(const PatchMesh& mesh, const Patch& p) {
+    std::array<Vec3, 4> points;
+    for (int k = 0; k < 3; ++k) points[k] = mesh.corner(p, k) + 1e-4 * (p.centroid - mesh.corner(p, k));
+    points[3] = p.centroid;
+    return points;
+}
+
+/// Mean illuminance (lx) over patch p from point source s, given its values at the
+/// evaluation points. A point source's E = I cosθ V / d² peaks sharply on a patch it is
+/// close to, and the 4-point rule misses that. Without shadows the mean of
+/// cosθ / d² = h / d³ (h the source's height over the patch's plane) is exact, Ω / A (Ω the
+/// solid angle the patch subtends): the rule's value is rescaled by (Ω / A) / rule(h / d³),
+/// so a source that sees the whole patch delivers exactly I Ω. When the four points
+/// disagree (a shadow edge or a spot's rim crosses the patch) the rule is replaced by the
+/// mean over the `refined` points.
+Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const DirectLight& lights, size_t s, const Visibility& vis,
+                    const std::array<Vec3, 4>& points, const Rgb* values, const Rgb& fourPoint,
+                    const std::vector<std::array<double, 2>>& refined) {
+    const Vec3 source = lights.pointSourcePosition(s);
+    const double h = glm::dot(p.normal, source - p.centroid);  // m
+    if (h <= 0) return fourPoint;
+    auto kernel = [&](const Vec3& x) {
+        double d = glm::length(source - x);
+        return h / (d * d * d);  // cosθ / d², 1/m²
+    };
+    Rgb value = fourPoint;
+    double ruleKernel = 0;
+    int lit = 0;
+    for (int k = 0; k < 4; ++k) lit += values[k] != Rgb(0.0);
+    if (lit == 4) {
+        double kernels[4];
+        for (int k = 0; k < 4; ++k) kernels[k] = kernel(points[k]);
+        ruleKernel = fourPointMean(kernels[3], kernels);
+    } else {
+        const Vec3 a = mesh.corner(p, 0), ab = mesh.corner(p, 1) - a, ac = mesh.corner(p, 2) - a;
+        value = Rgb(0.0);
+        for (const auto& uv : refined) {
+            Vec3 x = a + uv[0] * ab + uv[1] * ac;
+            value += lights.fromPointSource(s, x, p.normal, vis);
+            ruleKernel += kernel(x);
+        }
+        value /= static_cast<double>(refined.size());
+        ruleKernel /= static_cast<double>(refined.size());
+    }
+    const double exactKernel = triangleSolidAngle(source, mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)) / p.area;
+    return ruleKernel > 0 ? value * (exactKernel / ruleKernel) : fourPoint;
+}
+
 }  // namespace
 
 void computeDirect(const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis, int areaSamples,
                    RadiositySolution& solution) {
     solution.directMean.assign(mesh.patches.size(), Rgb(0.0));
     solution.directCorner.assign(3 * mesh.patches.size(), Rgb(0.0));
-    const size_t sources = lights.pointSourceCount();
+    std::vector<double> mirrorAbsorbed(mesh.patches.size(), 0.0);  // lm, per patch
+    const size_t sources = lights.sourceCount();
     const auto refined = shadowSamplePoints(kShadowSamples);
     tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
         const Patch& p = mesh.patches[i];
-        // Per point source s, its share of E at the centroid (index 3) and the corners.
-        thread_local std::vector<Rgb> share[4];
-        Vec3 points[4];
+        const std::array<Vec3, 4> points = evaluationPoints(mesh, p);
+        thread_local std::vector<Rgb> share[4];  // per source s, its share of E at points[k]
         Rgb e[4];
-        for (int k = 0; k < 3; ++k) points[k] = mesh.corner(p, k) + 1e-4 * (p.centroid - mesh.corner(p, k));
-        points[3] = p.centroid;
         for (int k = 0; k < 4; ++k) e[k] = lights.illuminance(points[k], p.normal, vis, areaSamples, nullptr, &share[k]);
         for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = e[k];
         Rgb mean = fourPointMean(e[3], e);
-        // A point source's E = I cosθ V / d² peaks sharply on a patch it is close to, and
-        // the rule misses that. Without shadows the mean of cosθ / d² = h / d³ (h the
-        // source's height over the patch's plane) is exact, Ω / A (Ω the solid angle the
-        // patch subtends): the rule's value for the source is rescaled by
-        // (Ω / A) / rule(h / d³), so a source that sees the whole patch delivers exactly
-        // I Ω. When the four points disagree (a shadow edge or a spot's rim crosses the
-        // patch) the rule is replaced by the mean over kShadowSamples points.
+        Rgb loss(0.0);
         for (size_t s = 0; s < sources; ++s) {
-            const Rgb cornerShares[3] = {share[0][s], share[1][s], share[2][s]};
-            const Rgb fourPoint = fourPointMean(share[3][s], cornerShares);
+            const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
+            const Rgb fourPoint = fourPointMean(values[3], values);
             if (fourPoint == Rgb(0.0)) continue;
-            const Vec3 source = lights.pointSourcePosition(s);
-            const double h = glm::dot(p.normal, source - p.centroid);  // m
-            if (h <= 0) continue;
-            auto kernel = [&](const Vec3& x) {
-                double d = glm::length(source - x);
-                return h / (d * d * d);  // cosθ / d², 1/m²
-            };
-            Rgb value = fourPoint;
-            double ruleKernel;
-            int lit = 0;
-            for (int k = 0; k < 4; ++k) lit += share[k][s] != Rgb(0.0);
-            if (lit == 4) {
-                double kernels[4];
-                for (int k = 0; k < 4; ++k) kernels[k] = kernel(points[k]);
-                ruleKernel = fourPointMean(kernels[3], kernels);
-            } else {
-                const Vec3 a = mesh.corner(p, 0), ab = mesh.corner(p, 1) - a, ac = mesh.corner(p, 2) - a;
-                value = Rgb(0.0);
-                ruleKernel = 0;
-                for (const auto& uv : refined) {
-                    Vec3 x = a + uv[0] * ab + uv[1] * ac;
-                    value += lights.fromPointSource(s, x, p.normal, vis);
-                    ruleKernel += kernel(x);
-                }
-                value /= static_cast<double>(refined.size());
-                ruleKernel /= static_cast<double>(refined.size());
-            }
-            const double exactKernel =
-                triangleSolidAngle(source, mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)) / p.area;
-            if (ruleKernel > 0) mean += value * (exactKernel / ruleKernel) - fourPoint;
+            Rgb sourceMean = lights.isPointSource(s)
+                                 ? pointSourceMean(mesh, p, lights, s, vis, points, values, fourPoint, refined)
+                                 : fourPoint;
+            mean += sourceMean - fourPoint;
+            loss += mirrorLoss(sourceMean, lights.sourceWeight(s));
         }
         solution.directMean[i] = mean;
+        mirrorAbsorbed[i] = luminance(loss) * p.area;
     });
+    solution.mirrorAbsorbedDirect = 0;
+    for (double f : mirrorAbsorbed) solution.mirrorAbsorbedDirect += f;
 }
 
 }  // namespace rayrad::radiosity

@@ -18,19 +18,19 @@ namespace rayrad::radiosity {
 ///  4. push-pull D.
 /// `totalOfSource[k]` is what C's k-th member will have shipped after this shot: L_i,
 /// plus its overshoot. Touches only D's state, so receivers can be corrected in
-/// parallel. Returns the flux taken away in step 2, in lm: it was delivered by earlier
-/// shots, and a conserving shot must deliver it again (step 3 re-estimates it together
-/// with this shot's share, and deliver() scales the two as one).
+/// parallel. Returns the flux taken away in step 2 (it was delivered by earlier shots,
+/// and a conserving shot must deliver it again: step 3 re-estimates it together with
+/// this shot's share, and deliver() scales the two as one) and the flux step 3 delivers.
 /// A mirror image of C (source s) is corrected the same way, with its own geometry,
 /// its path visibility and its weight Π Ks.
 template <class V>
-double ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
+typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
                               const std::vector<V>& totalOfSource) {
     const Cluster& C = s.clustering->clusters[c];
     const Cluster& D = m_clustering.clusters[d];
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
     V shotSoFar = m_light[c].total - m_light[c].unshot;
-    double removed = 0;  // lm
+    Correction moved;
     V received = shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis,
                                                                    m_options.analyticDistance);
     if (received != V(0.0)) {
@@ -39,17 +39,18 @@ double ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const Clust
         for (size_t k = 0; k < D.patches.size(); ++k) {
             uint32_t j = D.patches[k];
             receive(j, -(received * shape[k]));
-            removed += lum(received * shape[k]) * m_mesh.patches[j].area;
+            moved.removed += received * shape[k] * m_mesh.patches[j].area;
         }
     }
-    shootPatches(s, c, totalOfSource, d, m_shotE);
+    moved.delivered = shootPatches(s, c, totalOfSource, d, m_shotE);
     pull(d);
-    return removed;
+    return moved;
 }
 
-template double ShootingCore<double>::correct(const Source&, size_t, size_t, const ClusterSamples&,
-                                           const std::vector<double>&);
-template double ShootingCore<Rgb>::correct(const Source&, size_t, size_t, const ClusterSamples&,
-                                        const std::vector<Rgb>&);
+template ShootingCore<double>::Correction ShootingCore<double>::correct(const Source&, size_t, size_t,
+                                                                       const ClusterSamples&,
+                                                                       const std::vector<double>&);
+template ShootingCore<Rgb>::Correction ShootingCore<Rgb>::correct(const Source&, size_t, size_t, const ClusterSamples&,
+                                                                 const std::vector<Rgb>&);
 
 }  // namespace rayrad::radiosity

@@ -26,9 +26,10 @@ bool partlyInFront(const scene::Mirror& a, const scene::Mirror& b) {
     return false;
 }
 
+/// Appends the chains that extend `image`; `truncated` is set when a chain that light
+/// could follow was cut by the depth or the weight limit.
 void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits, const MirrorImage& image,
-            std::vector<MirrorImage>& out) {
-    if (static_cast<int>(image.chain.size()) >= limits.maxDepth) return;
+            std::vector<MirrorImage>& out, bool& truncated) {
     for (int k = 0; k < static_cast<int>(mirrors.size()); ++k) {
         if (!image.chain.empty()) {
             const scene::Mirror& last = mirrors[image.chain.back()];
@@ -38,23 +39,30 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
         next.chain.push_back(k);
         next.transform = reflection(mirrors[k]) * image.transform;
         next.weight = image.weight * mirrors[k].specular;
-        if (luminance(next.weight) < limits.minWeight) continue;
+        if (static_cast<int>(next.chain.size()) > limits.maxDepth || luminance(next.weight) < limits.minWeight) {
+            truncated = true;
+            continue;
+        }
         out.push_back(next);
-        extend(mirrors, limits, next, out);
+        extend(mirrors, limits, next, out, truncated);
     }
 }
 
 }  // namespace
 
-std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits) {
+std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits,
+                                               bool* truncated) {
     std::vector<MirrorImage> out;
-    extend(mirrors, limits, MirrorImage{}, out);
+    bool cut = false;
+    extend(mirrors, limits, MirrorImage{}, out, cut);
+    if (truncated) *truncated = cut;
     return out;
 }
 
-std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene) {
+std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene, bool* truncated) {
+    if (truncated) *truncated = false;
     if (!scene.solver.mirrorImages) return {};
-    return enumerateMirrorImages(scene.mirrors, {scene.solver.mirrorDepth, scene.solver.mirrorMinWeight});
+    return enumerateMirrorImages(scene.mirrors, {scene.solver.mirrorDepth, scene.solver.mirrorMinWeight}, truncated);
 }
 
 MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& clustering, const MirrorImage& image) {

@@ -36,11 +36,14 @@ struct MirrorLimits {
 /// Every chain up to the limits: no mirror twice in a row, and each next mirror must
 /// have part of its polygon in front of the previous one (and the previous in front of
 /// it), so the light can travel between them. Two facing mirrors give two chains per
-/// depth, so the count is bounded by the depth and by the weight.
-std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits);
+/// depth, so the count is bounded by the depth and by the weight. `truncated` (if given)
+/// tells whether a limit cut a chain light could follow: then some light reflected more
+/// often is not modelled, and the chains do not account for all the light a mirror gets.
+std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits,
+                                               bool* truncated = nullptr);
 
 /// The images the scene's settings ask for: none when mirrors are ignored.
-std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene);
+std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene, bool* truncated = nullptr);
 
 /// The patches and clusters as seen in one image: positions, normals and centroids
 /// mirrored, each triangle's winding reversed after an odd number of reflections so

@@ -1,5 +1,7 @@
 #include <radiosity/shooting_core.h>
 
+#include <radiosity/form_factor.h>
+
 #include <radiosity/cluster_transfer.h>
 #include <radiosity/patch_transfer.h>
 
@@ -37,6 +39,9 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_shotPending.assign(mesh.patches.size(), V(0.0));
     m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
+    mirrorImagesFor(scene, &m_mirrorChainsTruncated);
+    if (m_options.mirrorImages)
+        for (const auto& m : scene.mirrors) m_mirrorBacks.emplace_back(m.polygon.rbegin(), m.polygon.rend());
     for (const auto& view : m_mirrorViews) {
         Source s{&view->geometry.mesh, &view->geometry.clustering, view->path.get(), fromRgb<V>(view->image.weight),
                  &view->image, {}, {}};
@@ -78,7 +83,15 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     std::vector<double> firstFlux(n);
     for (size_t i = 0; i < n; ++i) firstFlux[i] = lum(m_unshot[i]) * m_mesh.patches[i].area;
     m_stats.escapeFraction = escapeFraction(m_mesh, m_vis, 4 * m_scene.diagonal() + 1.0, firstFlux);
-    m_conserve = m_options.conserveEnergy && m_scene.mirrors.empty() && m_stats.escapeFraction == 0;
+    // With mirrors, every path through them must be modelled (complete chains) for the
+    // light shot to be accounted: delivered / Π Ks summed over images.
+    std::string conservationOff = !m_options.conserveEnergy                          ? "radiosity.conserve_energy"
+                                  : m_stats.escapeFraction >= kClosedEscapeFraction ? "open scene"
+                                  : m_scene.mirrors.empty()                         ? ""
+                                  : !m_options.mirrorImages                         ? "mirrors ignored"
+                                  : m_mirrorChainsTruncated ? "mirror chains cut by mirror_depth or mirror_min_weight"
+                                                            : "";
+    m_conserve = conservationOff.empty();
     m_light.assign(m_clustering.clusters.size(), Light{});
     for (size_t c = 0; c < m_light.size(); ++c) pull(c);
     s.shots = 0;
@@ -89,6 +102,7 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     m_stats = {};
     m_stats.escapeFraction = escape;
     m_stats.conserving = m_conserve;
+    m_stats.conservationOff = conservationOff;
     m_stats.overshooting = m_options.overshoot;
     m_shotSincePushPull = 0;
     m_powerAtPushPull = s.initialUnshotFlux / kPi;
@@ -104,6 +118,7 @@ void ShootingCore<V>::sync(RadiositySolution& s) const {
         s.indirect[i] = toRgb(m_indirect[i]);
         s.unshot[i] = toRgb(m_unshot[i]);
     }
+    s.mirrorAbsorbedSecondary = m_stats.mirrorAbsorbed;
 }
 
 template <class V>
@@ -174,11 +189,17 @@ void ShootingCore<V>::pull(size_t c) {
 }
 
 template <class V>
-void ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e) {
+V ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e) {
     const Cluster& D = m_clustering.clusters[receiver];
     thread_local std::vector<double> shape;
     receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
-    for (size_t k = 0; k < D.patches.size(); ++k) m_shotPending[D.patches[k]] += e * shape[k];
+    V flux(0.0);
+    for (size_t k = 0; k < D.patches.size(); ++k) {
+        uint32_t j = D.patches[k];
+        m_shotPending[j] += e * shape[k];
+        flux += e * shape[k] * m_mesh.patches[j].area;
+    }
+    return flux;
 }
 
 template <class V>
@@ -220,10 +241,11 @@ V ShootingCore<V>::ambientIlluminance() const {
 }
 
 template <class V>
-void ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver,
-                                   std::vector<V>& into) {
+V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver,
+                                std::vector<V>& into) {
     const Cluster& D = m_clustering.clusters[receiver];
     const Cluster& C = s.clustering->clusters[c];
+    V flux(0.0);
     for (uint32_t j : D.patches) {
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
@@ -237,7 +259,25 @@ void ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<
             deltaE += amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
         }
         into[j] += deltaE;
+        flux += deltaE * rec.area;
     }
+    return flux;
+}
+
+template <class V>
+double ShootingCore<V>::intoMirrorBacks(const Cluster& C, const std::vector<double>& unshotPower) const {
+    double flux = 0;
+    for (size_t k = 0; k < C.patches.size(); ++k) {
+        if (unshotPower[k] == 0) continue;
+        const Patch& p = m_mesh.patches[C.patches[k]];
+        for (size_t m = 0; m < m_mirrorBacks.size(); ++m) {
+            const auto& back = m_mirrorBacks[m];
+            double f = formFactorToPolygon(p.centroid, p.normal, back.data(), static_cast<int>(back.size()),
+                                           -m_scene.mirrors[m].normal);
+            flux += kPi * unshotPower[k] * f;  // Φ_i F_i→back
+        }
+    }
+    return flux;
 }
 
 template <class V>
@@ -260,7 +300,9 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     // corrected[s][d]: receiver d already got source s's total in a correction.
     std::vector<std::vector<char>> corrected(m_sources.size(), std::vector<char>(n, 0));
     const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
-    double redelivered = 0;  // lm of earlier shots the corrections took away, delivered again now
+    double redelivered = 0;  // lm (at the source) of earlier shots the corrections took away
+    const bool throughMirrors = m_sources.size() > 1;
+    AtSource delivered;      // with mirrors: this shot's deliveries at the source
 
     if (correcting && light.radius > 0 && r > light.radius) {
         // r_v grew: the ring old ≤ d < new switches from cluster→cluster to patch→patch,
@@ -283,10 +325,17 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, c, d))
                     ring.push_back(d);
             }
-            std::vector<double> removed(ring.size());
+            std::vector<Correction> moved(ring.size());
             tbb::parallel_for(size_t(0), ring.size(),
-                              [&](size_t k) { removed[k] = correct(s, c, ring[k], shotSamples, total); });
-            for (double f : removed) redelivered += f;
+                              [&](size_t k) { moved[k] = correct(s, c, ring[k], shotSamples, total); });
+            for (const Correction& m : moved) {
+                redelivered += lum(atSource(m.removed, s.weight));
+                if (throughMirrors) delivered.add(lum(atSource(m.delivered, s.weight)));
+                if (s.image) {
+                    m_stats.mirrorAbsorbed -= lum(mirrorLoss(m.removed, s.weight));
+                    delivered.mirrorLoss += lum(mirrorLoss(m.delivered, s.weight));
+                }
+            }
             for (size_t d : ring) corrected[si][d] = 1;
             m_stats.corrections += static_cast<int64_t>(ring.size());
         }
@@ -320,6 +369,9 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         const Source& s = m_sources[si];
         const Cluster& Cs = s.clustering->clusters[c];
         std::atomic<int64_t> clusterTransfers{0}, patchPairs{0};
+        // Deliveries per receiver when shooting through mirrors too, for the mirrors'
+        // account and the conservation (summed in order).
+        std::vector<V> deliveredTo(throughMirrors ? n : 0, V(0.0));
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
             int64_t cc = 0, pp = 0;
             for (size_t d = range.begin(); d != range.end(); ++d) {
@@ -330,10 +382,13 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (!canReach(s, c, d)) continue;
                 if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
                     double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance);
-                    if (t > 0) addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
+                    V flux(0.0);
+                    if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
+                    if (throughMirrors) deliveredTo[d] = flux;
                     ++cc;
                 } else {
-                    shootPatches(s, c, unshot, d, m_shotE);
+                    V flux = shootPatches(s, c, unshot, d, m_shotE);
+                    if (throughMirrors) deliveredTo[d] = flux;
                     pp += static_cast<int64_t>(C.patches.size() * D.patches.size());
                 }
             }
@@ -342,22 +397,33 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         });
         m_stats.clusterTransfers += clusterTransfers;
         m_stats.patchPairs += patchPairs;
+        for (const V& flux : deliveredTo) {
+            delivered.add(lum(atSource(flux, s.weight)));
+            if (s.image) delivered.mirrorLoss += lum(mirrorLoss(flux, s.weight));
+        }
     }
-    deliver(shotFlux, redelivered);
+    if (!m_mirrorBacks.empty()) {  // what goes into a mirror's back is absorbed there, not delivered
+        double back = intoMirrorBacks(C, unshotPower);
+        shotFlux -= back;
+        m_stats.mirrorAbsorbed += back;
+    }
+    deliver(shotFlux, redelivered, throughMirrors ? &delivered : nullptr);
     light.radius = r;
 }
 
 template <class V>
-void ShootingCore<V>::deliver(double shotFlux, double redelivered) {
+void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSource* delivered) {
     const size_t n = m_clustering.clusters.size();
-    // Closed scene, no mirrors: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1), plus
-    // what the corrections took away to deliver again. The deficit δ is shared in proportion to |ΔE_j| A_j: ΔE_j (1 + sgn(ΔE_j) δ / Σ|ΔE_k| A_k),
-    // which is a plain rescale when every delivery has one sign and stays exact when an
-    // overshooting cluster ships light of both signs.
+    // Closed scene: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1), plus what the
+    // corrections took away to deliver again; through mirrors each delivery counts as it
+    // left the shooter (÷ Π Ks: the mirrors absorbed the rest). The deficit δ is shared in
+    // proportion to |ΔE_j| A_j: ΔE_j (1 + sgn(ΔE_j) δ / Σ|ΔE_k| A_k), which is a plain
+    // rescale when every delivery has one sign and stays exact when an overshooting
+    // cluster ships light of both signs.
     double adjust = 0;  // δ / Σ|ΔE_k| A_k
     if (m_conserve) {
         using Sums = std::pair<double, double>;  // signed and absolute received flux, lm
-        Sums received = tbb::parallel_deterministic_reduce(
+        Sums received = delivered ? Sums{delivered->net, delivered->magnitude} : tbb::parallel_deterministic_reduce(
             tbb::blocked_range<size_t>(0, m_mesh.patches.size(), 1024), Sums{0.0, 0.0},
             [&](const tbb::blocked_range<size_t>& range, Sums sum) {
                 for (size_t j = range.begin(); j != range.end(); ++j)
@@ -377,6 +443,10 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered) {
         }
     }
     auto adjusted = [adjust](const V& e) { return e * (1.0 + (lum(e) < 0 ? -adjust : adjust)); };
+    if (delivered) {  // the mirrors absorb in proportion to what they pass on
+        const double loss = delivered->mirrorLoss;
+        m_stats.mirrorAbsorbed += loss * (1.0 + (loss < 0 ? -adjust : adjust));
+    }
     tbb::parallel_for(size_t(0), n, [&](size_t d) {
         const Cluster& D = m_clustering.clusters[d];
         V reflectedSum(0.0);

@@ -6,6 +6,7 @@
 #include <radiosity/mirror_images.h>
 #include <radiosity/shooting_solver.h>
 
+#include <cmath>
 #include <memory>
 
 namespace rayrad::radiosity {
@@ -79,19 +80,35 @@ class ShootingCore final : public ShootingCoreBase {
     void pushPull(size_t c);
     void pull(size_t c);
     /// A cluster→cluster shot: adds e · shape_k (see receiverShape) to this shot's
-    /// pending illuminance of the receiver's members (m_shotPending).
-    void addPending(const Cluster& source, size_t receiver, const V& e);
+    /// pending illuminance of the receiver's members (m_shotPending). Returns the flux
+    /// delivered, Σ e shape_k A_k (lm per channel).
+    V addPending(const Cluster& source, size_t receiver, const V& e);
     void receive(size_t j, const V& deltaE);
-    /// Patch→patch from cluster c of source s to the receiver's patches: adds ΔE_j to into[j].
-    void shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver, std::vector<V>& into);
+    /// Patch→patch from cluster c of source s to the receiver's patches: adds ΔE_j to
+    /// into[j]. Returns the flux delivered, Σ ΔE_j A_j (lm per channel).
+    V shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver, std::vector<V>& into);
     /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
     /// the flux shot when conserving.
-    /// `redelivered`: the flux (lm) this shot's corrections took away to deliver again.
-    void deliver(double shotFlux, double redelivered);
+    /// Flux a shot delivered, counted where it left the shooter (through mirrors:
+    /// delivered / Π Ks), lm: signed, and Σ of magnitudes per receiver and source; and
+    /// what the mirrors absorbed of it (lm, before the conservation's adjustment).
+    struct AtSource {
+        double net = 0, magnitude = 0, mirrorLoss = 0;
+        void add(double flux) { net += flux, magnitude += std::abs(flux); }
+    };
+    /// `redelivered`: the flux (lm, at the source) this shot's corrections took away to
+    /// deliver again. `delivered`: the shot's deliveries at the source, when it shot
+    /// through mirrors too (else they are summed from the per-patch buffers).
+    void deliver(double shotFlux, double redelivered, const AtSource* delivered);
     /// E_amb in lx: the illuminance the unshot power will still add everywhere (overshooting).
     V ambientIlluminance() const;
-    double correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
-                   const std::vector<V>& totalOfSource);  // energy_correction.cpp
+    /// What a correction moved, lm per channel: the history taken away, and the flux
+    /// delivered patch→patch in its place.
+    struct Correction {
+        V removed{0.0}, delivered{0.0};
+    };
+    Correction correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
+                       const std::vector<V>& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
     /// False when no light of cluster c can pass through s's mirrors to cluster d.
     static bool canReach(const Source& s, size_t c, size_t d) { return !s.image || (s.sends[c] && s.receives[d]); }
@@ -116,6 +133,12 @@ class ShootingCore final : public ShootingCoreBase {
     /// (m_shotE) and cluster→cluster (m_shotPending, joins m_pending).
     std::vector<V> m_shotE, m_shotPending;
     bool m_conserve = false;
+    /// The mirrors' back faces (vertices reversed, normal −n): light shot into them is
+    /// absorbed (a mirror's back is not a patch).
+    std::vector<std::vector<Vec3>> m_mirrorBacks;
+    /// Flux (lm) the members of cluster c send into mirror backs, unoccluded form factors.
+    double intoMirrorBacks(const Cluster& C, const std::vector<double>& unshotPower) const;
+    bool m_mirrorChainsTruncated = false;  ///< some light reflected beyond the chains is not modelled
     V m_meanReflectance{0.0};  ///< area-weighted ρ̄
     double m_area = 0;         ///< Σ A_i, m²
     V m_signedUnshot{0.0};     ///< Σ_C (ΔL_C + pending) A_C in cd, signed; set by step()

@@ -83,6 +83,8 @@ EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, co
         b.directReceived += luminance(s.directMean[i]) * p.area;
         if (!s.unshot.empty()) b.unshot += kPi * luminance(s.unshot[i]) * p.area;
     }
+    b.mirrorAbsorbedDirect = s.mirrorAbsorbedDirect;
+    b.mirrorAbsorbed = s.mirrorAbsorbedDirect + s.mirrorAbsorbedSecondary;
     return b;
 }
 

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace rayrad::radiosity {
@@ -35,9 +36,11 @@ struct ShootingStatistics {
     int64_t corrections = 0;       ///< receiver clusters corrected
     int64_t pushPulls = 0;         ///< global push-pulls
     double escapeFraction = 0;     ///< of rays leaving the surfaces (0: a closed scene)
-    bool conserving = false;       ///< per-shot energy conservation applied (closed, no mirrors)
+    bool conserving = false;       ///< per-shot energy conservation applied
+    std::string conservationOff;   ///< why not: "open scene", "mirrors ignored", ...
     double largestRescale = 0;     ///< max |scale − 1| applied to a shot by the conservation
     int64_t unbalancedShots = 0;   ///< shots the conservation left alone (deficit beyond its bound)
+    double mirrorAbsorbed = 0;     ///< lm the mirrors absorbed of what images delivered (delivered · (1/Π Ks − 1))
     bool overshooting = false;
 };
 
@@ -94,15 +97,23 @@ bool isGreyScene(const scene::Scene& scene);
 
 /// Energy accounting in lm: what the lights emit, what surfaces absorbed
 /// Σ (1 − ρ) (Ē_dir + E_ind) A, what is still unshot, and what the direct pass delivered
-/// first, Σ Ē_dir A. In a closed scene emitted = absorbed + unshot; the direct pass's
-/// share of any difference is its patch-mean quadrature (or light escaping, or absorbed
-/// by mirrors), the rest is the secondary pass's.
+/// first, Σ Ē_dir A, and what mirrors absorbed. In a closed scene emitted = absorbed +
+/// mirrors + unshot; the direct pass's share of any difference is its patch-mean
+/// quadrature (or light escaping, or lost beyond the mirror chains' depth), the rest is
+/// the secondary pass's.
 struct EnergyBalance {
     double emitted = 0, absorbed = 0, unshot = 0, directReceived = 0;
-    double relativeError() const { return emitted > 0 ? (absorbed + unshot - emitted) / emitted : 0.0; }
-    double directError() const { return emitted > 0 ? (directReceived - emitted) / emitted : 0.0; }
-    /// What the secondary pass lost or made: (absorbed + unshot − direct received) / emitted.
-    double secondaryError() const { return emitted > 0 ? (absorbed + unshot - directReceived) / emitted : 0.0; }
+    /// lm absorbed by mirrors (booked by the images that deliver through them), of it in the direct pass.
+    double mirrorAbsorbed = 0, mirrorAbsorbedDirect = 0;
+    double relativeError() const { return relative(absorbed + mirrorAbsorbed + unshot - emitted); }
+    double directError() const { return relative(directReceived + mirrorAbsorbedDirect - emitted); }
+    /// What the secondary pass lost or made.
+    double secondaryError() const {
+        return relative(absorbed + mirrorAbsorbed + unshot - directReceived - mirrorAbsorbedDirect);
+    }
+
+  private:
+    double relative(double flux) const { return emitted > 0 ? flux / emitted : 0.0; }
 };
 EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
                             double emittedFlux);

@@ -24,6 +24,9 @@ struct RadiositySolution {
     double remainingUnshotFlux = 0;   ///< lm still unshot at the end
     bool converged = false;
     double seconds = 0;
+    /// lm absorbed by mirrors on the way, booked by the source that delivers through
+    /// them (delivered · (1/Π Ks − 1)): in the direct pass, and in the secondary pass.
+    double mirrorAbsorbedDirect = 0, mirrorAbsorbedSecondary = 0;
 
     /// Reflected (non-emitted) luminance of patch i: ρ (E_direct + E_indirect) / π.
     Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const;

@@ -94,6 +94,20 @@ TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot withi
     }
 }
 
+TEST_CASE("energy accounting with a mirror: what the mirror absorbs is booked", "[stability]") {
+    // The mirror room: spots aimed at a Ks = 0.9 mirror hung 1 cm in front of a wall. The
+    // images deliver Ks of what reaches the mirror; the rest, and what the wall behind
+    // sends into the mirror's back, is booked as absorbed by the mirror.
+    auto run = app::runPipeline(test::sourcePath("scenes/mirror_room/mirror_room.json"), quiet());
+    CHECK(run.shooting.conserving);
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    INFO("mirrors " << b.mirrorAbsorbed << " lm, direct pass " << 100 * b.directError() << " %, secondary "
+                    << 100 * b.secondaryError() << " %");
+    CHECK(b.mirrorAbsorbed > 0.05 * b.emitted);
+    CHECK(std::abs(b.directError()) < 1e-3);
+    CHECK(std::abs(b.relativeError()) < 1e-3);
+}
+
 TEST_CASE("the same room in millimetres and kilometres gives the same illuminance within 0.1 %", "[stability]") {
     auto values = [](double s) {
         // Intensity × s² keeps the illuminance unchanged.
