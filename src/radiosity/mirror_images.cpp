@@ -26,6 +26,39 @@ bool partlyInFront(const scene::Mirror& a, const scene::Mirror& b) {
     return false;
 }
 
+/// False when no light that reached mirror b from mirror a can go on to mirror c: some
+/// plane has a's image in b on its back (≤ 0), b on its front (≥ 0) and c on its back.
+/// A ray from a's image through b only moves further to the plane's front beyond b, so
+/// it cannot reach c (a 90° corner: light that met a and then b cannot meet a again,
+/// so the corner has 3 images, not a chain per depth). The planes tried are those of
+/// a's image, b and c, each way round.
+bool lightCanContinue(const scene::Mirror& a, const scene::Mirror& b, const scene::Mirror& c) {
+    std::vector<Vec3> aImage;
+    for (const auto& p : a.polygon) aImage.push_back(b.reflectPoint(p));
+    double scale = 0;
+    const std::vector<Vec3>* polygons[] = {&aImage, &b.polygon, &c.polygon};
+    for (const auto* poly : polygons)
+        for (const auto& p : *poly) scale = std::max(scale, glm::length(p - b.polygon[0]));
+    const double eps = 1e-9 * (1 + scale);
+    auto allOnSide = [eps](const std::vector<Vec3>& poly, const Vec3& n, double offset, double sign) {
+        for (const auto& p : poly)
+            if (sign * (glm::dot(n, p) - offset) > eps) return false;
+        return true;
+    };
+    const Vec3 aImageNormal = scene::polygonNormal(aImage);
+    const std::pair<Vec3, Vec3> planes[] = {{aImageNormal, aImage[0]}, {b.normal, b.polygon[0]}, {c.normal, c.polygon[0]}};
+    for (const auto& [normal, point] : planes)
+        for (double orientation : {1.0, -1.0}) {
+            Vec3 n = orientation * normal;
+            double offset = glm::dot(n, point);
+            // a's image behind, b in front, c behind: the light cannot get from b to c.
+            if (allOnSide(aImage, n, offset, 1.0) && allOnSide(b.polygon, n, offset, -1.0) &&
+                allOnSide(c.polygon, n, offset, 1.0))
+                return false;
+        }
+    return true;
+}
+
 /// Appends the chains that extend `image`; `truncated` is set when a chain that light
 /// could follow was cut by the depth or the weight limit.
 void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits, const MirrorImage& image,
@@ -34,6 +67,8 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
         if (!image.chain.empty()) {
             const scene::Mirror& last = mirrors[image.chain.back()];
             if (image.chain.back() == k || !partlyInFront(last, mirrors[k]) || !partlyInFront(mirrors[k], last)) continue;
+            if (image.chain.size() >= 2 && !lightCanContinue(mirrors[image.chain[image.chain.size() - 2]], last, mirrors[k]))
+                continue;
         }
         MirrorImage next = image;
         next.chain.push_back(k);

@@ -79,8 +79,9 @@ struct SolverOptions {
     bool mirrorImages = true;
     int mirrorDepth = 4;             ///< reflections per image chain
     double mirrorMinWeight = 1e-3;   ///< drop chains whose Π Ks falls below this
-    /// Per-shot energy conservation in closed scenes without mirrors: each shot's
-    /// deliveries (and what the energy corrections redeliver) are scaled so the flux
+    /// Per-shot energy conservation in closed scenes (with mirrors only when every chain
+    /// of reflections is modelled): each shot's deliveries (and what the energy
+    /// corrections redeliver; through mirrors counted ÷ Π Ks) are scaled so the flux
     /// received equals the flux shot (the form factors of a closed scene sum to 1; the
     /// point approximations and the cluster visibility estimate do not quite). Without
     /// it a sphere at ρ = 0.99 lost 8 % of its light. A shot off by more than

@@ -57,15 +57,35 @@ TEST_CASE("two facing mirrors: images of images stop at the depth and weight lim
         return m;
     };
     std::vector<scene::Mirror> facing = {mirror(0, 1, 0.9), mirror(2, -1, 0.9)};
-    // Each chain alternates between the two mirrors: two chains per depth.
-    CHECK(radiosity::enumerateMirrorImages(facing, {4, 1e-3}).size() == 8);
+    // Each chain alternates between the two mirrors: two chains per depth, cut at the depth.
+    bool truncated = false;
+    CHECK(radiosity::enumerateMirrorImages(facing, {4, 1e-3}, &truncated).size() == 8);
+    CHECK(truncated);
     // 0.9^k >= 1e-3 for k <= 65: the weight stops them before a depth of 1000.
     auto deep = radiosity::enumerateMirrorImages(facing, {1000, 1e-3});
     CHECK(deep.size() == 2 * 65);
     for (const auto& image : deep) CHECK(luminance(image.weight) >= 1e-3);
     // Back to back, neither mirror sees the other: no images of images.
     std::vector<scene::Mirror> backToBack = {mirror(0, -1, 0.9), mirror(2, 1, 0.9)};
-    CHECK(radiosity::enumerateMirrorImages(backToBack, {8, 1e-3}).size() == 2);
+    CHECK(radiosity::enumerateMirrorImages(backToBack, {8, 1e-3}, &truncated).size() == 2);
+    CHECK_FALSE(truncated);
+}
+
+TEST_CASE("a 90-degree mirror corner: light meets each mirror at most once, so the chains end", "[mirrors]") {
+    // The floor z = 0 (front +z) and the wall y = 0 (front +y), 1 m × 1 m, sharing the x edge.
+    scene::Mirror floor, wall;
+    floor.polygon = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    floor.normal = {0, 0, 1};
+    wall.polygon = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}};
+    wall.normal = {0, 1, 0};
+    floor.specular = wall.specular = Rgb(0.9);
+    bool truncated = true;
+    auto images = radiosity::enumerateMirrorImages({floor, wall}, {8, 1e-3}, &truncated);
+    // (floor), (wall), (floor, wall), (wall, floor): after two reflections the light
+    // moves away from both planes.
+    CHECK(images.size() == 4);
+    CHECK_FALSE(truncated);
+    for (const auto& image : images) CHECK(image.chain.size() <= 2);
 }
 
 TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors][stability]") {
