@@ -80,7 +80,9 @@ void printSolveSummary(const app::PipelineRun& run) {
     fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm{}, unshot {:.6g} lm, not accounted {:+.4f}% "
                        "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
                balance.emitted, balance.absorbed,
-               run.scene.mirrors.empty() ? "" : fmt::format(" (+ {:.6g} lm by mirrors)", balance.mirrorAbsorbed),
+               run.scene.mirrors.empty() || !run.scene.solver.mirrorImages
+                   ? ""
+                   : fmt::format(" (+ {:.6g} lm by mirrors)", balance.mirrorAbsorbed),
                balance.unshot, 100 * balance.relativeError(),
                100 * balance.directError(), 100 * balance.secondaryError());
     const auto& st = run.shooting;
