@@ -1,8 +1,7 @@
 #include <radiosity/shooting_core.h>
 
-#include <radiosity/form_factor.h>
-
 #include <radiosity/cluster_transfer.h>
+#include <radiosity/form_factor.h>
 #include <radiosity/patch_transfer.h>
 
 #include <tbb/blocked_range.h>
