@@ -537,7 +537,15 @@ Override parseOverride(const std::string& text) {
     auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
         throw InputError(placeMessage("", "--set " + text, "expected KEY=VALUE, e.g. radiosity.max_edge=0.25"));
-    return {text.substr(0, eq), text.substr(eq + 1)};
+    std::string key = text.substr(0, eq);
+    if (key.find('/') != std::string::npos) {  // a JSON pointer as printed in error messages
+        std::string dotted = key.substr(key.front() == '/' ? 1 : 0);
+        std::replace(dotted.begin(), dotted.end(), '/', '.');
+        throw InputError(placeMessage("", "--set " + text,
+                                      fmt::format("keys are separated by dots: did you mean {}={}?", dotted,
+                                                  text.substr(eq + 1))));
+    }
+    return {key, text.substr(eq + 1)};
 }
 
 }  // namespace rayrad::scene

@@ -67,6 +67,7 @@ expect "unwritable output" "$work/no/such/dir/out.png: cannot write: directory" 
 expect "unknown image format" "$work/out.bmp: unknown image format" -- render "$work/good.json" -o "$work/out.bmp"
 expect "unwritable csv" "$work/nodir/out.csv: cannot write" -- solve "$work/good.json" --sensors "$work/nodir/out.csv"
 expect "bad --set" "/radiosity/max_egde: unknown key (did you mean \"max_edge\"?)" -- solve "$work/good.json" --set radiosity.max_egde=1
+expect "--set with slashes" "--set radiosity/max_edge=1: keys are separated by dots: did you mean radiosity.max_edge=1?" -- solve "$work/good.json" --set radiosity/max_edge=1
 expect "bad --exposure" "--exposure: expected \"auto\" or a number" -- render "$work/good.json" -o "$work/out.png" --exposure bright
 scene nocamera "{$good_materials, $good_box, $good_light}"
 expect "render without camera" "nocamera.json: /camera: rendering needs a camera" -- render "$work/nocamera.json" -o "$work/out.png"
