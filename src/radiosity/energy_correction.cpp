@@ -24,15 +24,16 @@ namespace rayrad::radiosity {
 /// A mirror image of C (source s) is corrected the same way, with its own geometry,
 /// its path visibility and its weight Π Ks.
 template <class V>
-typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
-                              const std::vector<V>& totalOfSource) {
+typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, size_t c, size_t d,
+                                                             const ClusterSamples& shotSamples,
+                                                             const std::vector<V>& totalOfSource) {
     const Cluster& C = s.clustering->clusters[c];
     const Cluster& D = m_clustering.clusters[d];
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
     V shotSoFar = m_light[c].total - m_light[c].unshot;
     Correction moved;
-    V received = shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis,
-                                                                   m_options.analyticDistance);
+    V received =
+        shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
