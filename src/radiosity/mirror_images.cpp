@@ -146,9 +146,10 @@ bool MirrorPath::visible(const Vec3& from, const Vec3& to) const {
 }
 
 std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const PatchMesh& mesh,
-                                                        const Clustering& clustering, const Visibility& vis) {
+                                                        const Clustering& clustering, const Visibility& vis,
+                                                        bool* truncated) {
     std::vector<std::unique_ptr<MirrorView>> views;
-    for (auto& image : mirrorImagesFor(scene)) {
+    for (auto& image : mirrorImagesFor(scene, truncated)) {
         auto view = std::make_unique<MirrorView>();
         view->image = std::move(image);
         view->geometry = mirrorGeometry(mesh, clustering, view->image);

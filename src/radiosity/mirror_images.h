@@ -66,8 +66,10 @@ struct MirrorView {
     MirroredGeometry geometry;
     std::unique_ptr<MirrorPath> path;
 };
+/// `truncated` as for enumerateMirrorImages().
 std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const PatchMesh& mesh,
-                                                        const Clustering& clustering, const Visibility& vis);
+                                                        const Clustering& clustering, const Visibility& vis,
+                                                        bool* truncated = nullptr);
 
 /// Visibility through a mirror chain, as an adaptor of the scene's: `visible(a, b)` is
 /// true when one end is an image point (behind the last mirror) and the other a real

@@ -37,8 +37,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_shotE.assign(mesh.patches.size(), V(0.0));
     m_shotPending.assign(mesh.patches.size(), V(0.0));
     m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
-    m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
-    mirrorImagesFor(scene, &m_mirrorChainsTruncated);
+    m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
         for (const auto& m : scene.mirrors) m_mirrorBacks.emplace_back(m.polygon.rbegin(), m.polygon.rend());
     for (const auto& view : m_mirrorViews) {
