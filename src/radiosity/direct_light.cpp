@@ -106,6 +106,23 @@ Rgb DirectLight::fromPointSource(size_t s, const Vec3& x, const Vec3& n, const V
     return fromPointImage(light, image, MirrorPath(m_mirrors, image, vis), x, n);
 }
 
+const AreaLight& DirectLight::areaSource(size_t s) const {
+    const size_t k = s % perChain() - m_pointLights.size();
+    return s < perChain() ? m_areaLights[k] : m_imageAreaLights[s / perChain() - 1][k];
+}
+
+Rgb DirectLight::fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples) const {
+    if (s < perChain()) return fromAreaLight(areaSource(s), x, n, vis, samples, nullptr);
+    return fromAreaLight(areaSource(s), x, n, MirrorPath(m_mirrors, m_images[s / perChain() - 1], vis), samples,
+                         nullptr);
+}
+
+Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const {
+    const AreaLight& light = areaSource(s);
+    double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
+    return light.luminance * (kPi * f);  // E = π L F
+}
+
 Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
                              std::vector<Rgb>* perSource) const {
     const size_t points = m_pointLights.size();

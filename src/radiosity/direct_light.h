@@ -50,6 +50,14 @@ class DirectLight {
     /// Illuminance (lx) at x, normal n, from point source s alone, with its shadow ray.
     Rgb fromPointSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis) const;
 
+    /// Area source s (not a point source): the real polygon or its image, luminance × Π Ks.
+    const AreaLight& areaSource(size_t s) const;
+    /// Illuminance (lx) at x, normal n, from area source s alone: π L F · visible fraction
+    /// from `samples` shadow rays (through the mirror chain for an image).
+    Rgb fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples) const;
+    /// The same without shadows or mirror apertures: π L F, F the analytic form factor.
+    Rgb unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const;
+
     const std::vector<AreaLight>& areaLights() const { return m_areaLights; }
     const std::vector<scene::PointLight>& pointLights() const { return m_pointLights; }
     /// Total flux in lm emitted by all primary lights (luminance-weighted).

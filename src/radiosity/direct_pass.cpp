@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace rayrad::radiosity {
 
@@ -87,6 +88,85 @@ Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const DirectLight& li
     return ruleKernel > 0 ? value * (exactKernel / ruleKernel) : fourPoint;
 }
 
+/// An area light is "near" a patch within this many patch diameters of its outline.
+constexpr double kAreaNearDiameters = 4.0;
+/// Adaptive integration of the unshadowed form factor: deepest split, and the tolerance
+/// relative to the patch's own value (plus an absolute floor, in units of F).
+constexpr int kAreaMaxDepth = 7;
+constexpr double kAreaRelTolerance = 1e-4, kAreaAbsTolerance = 1e-7;
+
+/// ∫ F(x → light) dA_x over the triangle t (m²), by adaptive subdivision: a triangle is
+/// split in four until the 4-point rule on it agrees with the sum over its children.
+/// `rule` is the 4-point mean of F on t; `tolerance` in F·m² per m² of t.
+double integrateUnshadowed(const DirectLight& lights, size_t s, const std::array<Vec3, 3>& t, const Vec3& n,
+                           double rule, double tolerance, int depth) {
+    const double area = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+    auto F = [&](const Vec3& x) { return luminance(lights.unshadowedFromAreaSource(s, x, n)); };
+    const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
+    const std::array<Vec3, 3> child[4] = {{t[0], m01, m20}, {m01, t[1], m12}, {m20, m12, t[2]}, {m01, m12, m20}};
+    const double mid[3] = {F(m01), F(m12), F(m20)};
+    const double corner[3] = {F(t[0]), F(t[1]), F(t[2])};
+    const double at[4][3] = {{corner[0], mid[0], mid[2]}, {mid[0], corner[1], mid[1]},
+                             {mid[2], mid[1], corner[2]}, {mid[0], mid[1], mid[2]}};
+    double childRule[4], fine = 0;
+    for (int k = 0; k < 4; ++k) {
+        childRule[k] = fourPointMean(F((child[k][0] + child[k][1] + child[k][2]) / 3.0), at[k]);
+        fine += childRule[k] * area / 4;
+    }
+    if (depth >= kAreaMaxDepth || std::abs(fine - rule * area) <= tolerance * area) return fine;
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) sum += integrateUnshadowed(lights, s, child[k], n, childRule[k], tolerance, depth + 1);
+    return sum;
+}
+
+/// Mean illuminance (lx) over patch p from area source s, or nullopt when the light is
+/// far enough for the 4-point rule. Near an emitter (a ceiling 1 cm above a lamp that
+/// faces it, a wall beside it) E = π L F changes from πL to 0 within a centimetre and the
+/// rule misses it: the unshadowed mean is integrated adaptively, so a light that sees
+/// whole patches delivers exactly its flux, and scaled by the visible fraction (shadows,
+/// mirror apertures), taken from the four points or, where they disagree, from the
+/// `refined` points.
+std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, const DirectLight& lights, size_t s,
+                                      const Visibility& vis, int areaSamples, const std::array<Vec3, 4>& points,
+                                      const Rgb* values, const std::vector<std::array<double, 2>>& refined) {
+    const AreaLight& light = lights.areaSource(s);
+    Vec3 centre(0.0);
+    for (const auto& v : light.vertices) centre += v;
+    centre /= static_cast<double>(light.vertices.size());
+    double radius = 0;
+    for (const auto& v : light.vertices) radius = std::max(radius, glm::length(v - centre));
+    if (glm::length(p.centroid - centre) - radius > kAreaNearDiameters * p.diameter) return std::nullopt;
+
+    double unshadowed[4];
+    for (int k = 0; k < 4; ++k) unshadowed[k] = luminance(lights.unshadowedFromAreaSource(s, points[k], p.normal));
+    const double rule = fourPointMean(unshadowed[3], unshadowed);
+    const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
+    const double exact = integrateUnshadowed(lights, s, t, p.normal, rule, kAreaRelTolerance * rule + kAreaAbsTolerance,
+                                             0) / p.area;  // mean F·πL in lx of luminance weight 1
+    if (exact <= 0) return Rgb(0.0);
+
+    // Visible fraction: of the four points when each sees all or nothing alike, else sampled.
+    bool agree = true;
+    for (int k = 0; k < 4; ++k) agree &= std::abs(luminance(values[k]) - unshadowed[k]) <= 1e-9 * unshadowed[k];
+    Rgb shadowed(0.0);
+    double open = 0;
+    if (agree && rule > 0) {
+        shadowed = fourPointMean(values[3], values);
+        open = rule;
+    } else {
+        const Vec3 a = t[0], ab = t[1] - t[0], ac = t[2] - t[0];
+        for (const auto& uv : refined) {
+            Vec3 x = a + uv[0] * ab + uv[1] * ac;
+            shadowed += lights.fromAreaSource(s, x, p.normal, vis, areaSamples);
+            open += luminance(lights.unshadowedFromAreaSource(s, x, p.normal));
+        }
+    }
+    // The colour of the light (per channel) with the luminance of the exact mean.
+    const Rgb colour = lights.areaSource(s).luminance / luminance(lights.areaSource(s).luminance);
+    if (open <= 0) return colour * exact;  // no sample point sees the light: take it as unshadowed
+    return shadowed * (exact / open);
+}
+
 }  // namespace
 
 void computeDirect(const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis, int areaSamples,
@@ -108,10 +188,13 @@ void computeDirect(const PatchMesh& mesh, const DirectLight& lights, const Visib
         for (size_t s = 0; s < sources; ++s) {
             const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
             const Rgb fourPoint = fourPointMean(values[3], values);
-            if (fourPoint == Rgb(0.0)) continue;
-            Rgb sourceMean = lights.isPointSource(s)
-                                 ? pointSourceMean(mesh, p, lights, s, vis, points, values, fourPoint, refined)
-                                 : fourPoint;
+            Rgb sourceMean = fourPoint;
+            if (lights.isPointSource(s)) {
+                if (fourPoint == Rgb(0.0)) continue;
+                sourceMean = pointSourceMean(mesh, p, lights, s, vis, points, values, fourPoint, refined);
+            } else if (auto near = nearAreaSourceMean(mesh, p, lights, s, vis, areaSamples, points, values, refined)) {
+                sourceMean = *near;
+            }
             mean += sourceMean - fourPoint;
             loss += mirrorLoss(sourceMean, lights.sourceWeight(s));
         }

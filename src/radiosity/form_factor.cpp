@@ -2,22 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace rayrad::radiosity {
 
 namespace {
 
-constexpr int kMaxClipped = 16;
+/// A point closer to a polygon's plane than this fraction of its distance to the farthest
+/// vertex counts as in the plane (double rounding of coordinates is ~1e-16 relative).
+constexpr double kCoplanar = 1e-9;
 
-/// Sutherland–Hodgman: keeps the part of the polygon with dot(p − x, n) ≥ 0.
+/// Clipped polygons of up to this many vertices stay on the stack.
+constexpr int kStackClipped = 32;
+
+/// Sutherland–Hodgman: keeps the part of the polygon with dot(p − x, n) ≥ 0. Each input
+/// edge adds at most two output vertices, so `out` needs room for 2·count.
 int clipToFront(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* out) {
     int m = 0;
     for (int i = 0; i < count; ++i) {
         const Vec3& a = in[i];
         const Vec3& b = in[(i + 1) % count];
         double da = glm::dot(a - x, n), db = glm::dot(b - x, n);
-        if (da >= 0 && m < kMaxClipped) out[m++] = a;
-        if ((da >= 0) != (db >= 0) && m < kMaxClipped) out[m++] = a + (b - a) * (da / (da - db));
+        if (da >= 0) out[m++] = a;
+        if ((da >= 0) != (db >= 0)) out[m++] = a + (b - a) * (da / (da - db));
     }
     return m;
 }
@@ -25,13 +32,21 @@ int clipToFront(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* o
 }  // namespace
 
 double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal) {
-    // One-sided source: x must be strictly in front of the polygon's plane.
-    if (glm::dot(x - vertices[0], polyNormal) <= 0) return 0.0;
-    Vec3 clipped[kMaxClipped];
+    // One-sided source: x must be in front of the polygon's plane by more than rounding.
+    // A point in the plane itself (on the source, or on a coplanar neighbour of it) would
+    // otherwise see the polygon fill its whole hemisphere (F = 1) whenever rounding puts
+    // it a hair in front: a patch lighting itself, a sensor counting its own wall.
+    double reach = 0;
+    for (int i = 0; i < count; ++i) reach = std::max(reach, glm::length(vertices[i] - x));
+    if (glm::dot(x - vertices[0], polyNormal) <= kCoplanar * reach) return 0.0;
+    Vec3 clippedOnStack[kStackClipped];
+    std::vector<Vec3> clippedOnHeap;  // emitters with many sides (a 24-gon disk)
     const Vec3* v = vertices;
     bool allFront = true;
     for (int i = 0; i < count; ++i) allFront &= glm::dot(vertices[i] - x, n) >= 0;
     if (!allFront) {
+        Vec3* clipped = clippedOnStack;
+        if (2 * count > kStackClipped) clippedOnHeap.resize(2 * count), clipped = clippedOnHeap.data();
         count = clipToFront(x, n, vertices, count, clipped);
         if (count < 3) return 0.0;
         v = clipped;
