@@ -70,7 +70,9 @@ void printSolveSummary(const app::PipelineRun& run) {
     fmt::print(stderr, "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n",
                run.mesh.patches.size(), run.singleChannel ? "1 (grey scene)" : "3", s.shots,
                s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
-               s.converged ? "converged" : "stopped at max_shots");
+               s.converged ? "converged" : "NOT converged: " + run.shooting.stopReason);
+    if (run.shooting.overshootStalled)
+        fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");
     fmt::print(stderr, "{}\n", run.clustering.statistics());
     if (run.edgeVertices > 0) fmt::print(stderr, "seam vertices (concave edges and corners) from a point gather: {}\n", run.edgeVertices);
     if (run.clustering.enabled)
@@ -178,16 +180,32 @@ int runInfo(const CommonArgs& a) {
         if (scene.materials[g.material].isEmissive()) emissive += g.polygons.size();
     fmt::print("scene: {}\n", a.scene);
     fmt::print("materials: {}\n", scene.materials.size());
+    for (const auto& m : scene.materials) {
+        static const char* kKinds[] = {"diffuse", "mirror", "glass"};
+        fmt::print("  {}: {}, reflectance {}{}\n", m.name, kKinds[static_cast<int>(m.kind)], toString(m.reflectance),
+                   m.isEmissive() ? fmt::format(", emits {} cd/m²", toString(m.emission)) : "");
+    }
     fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
     fmt::print("patches (premeshed triangles): {} (target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
                mesh.patches.size(), radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(), mesh.totalArea());
     fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters).statistics());
     fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
+    for (const auto& l : scene.lights)
+        fmt::print("  {} at {}: {} cd{}\n", l.isSpot ? "spot" : "point", toString(l.position), toString(l.intensity),
+                   l.isSpot ? fmt::format(", axis {}, cones {:.4g}°/{:.4g}°", toString(l.direction),
+                                          glm::degrees(std::acos(l.cosInner)), glm::degrees(std::acos(l.cosOuter)))
+                            : "");
     fmt::print("sensors: {}\n", scene.sensors.size());
     if (scene.camera) fmt::print("camera: {}x{}, vfov {} deg\n", scene.camera->width, scene.camera->height, scene.camera->verticalFovDeg);
     fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax), scene.diagonal());
     if (scene.warnings.degeneratePolygons > 0)
         fmt::print("warning: {} zero-area or duplicate triangles dropped\n", scene.warnings.degeneratePolygons);
+    if (scene.warnings.droppedMeshFaces > 0)
+        fmt::print("warning: {} mesh-file faces dropped (points, lines, or indices out of range)\n",
+                   scene.warnings.droppedMeshFaces);
+    if (scene.warnings.clampedFileReflectances > 0)
+        fmt::print("warning: {} mesh-file materials had a reflectance above {} and were clamped to it\n",
+                   scene.warnings.clampedFileReflectances, 0.95);
     fmt::print("stages needed: premesh, direct light{}{}{}\n",
                scene.hasReflectance() ? ", secondary pass" : "",
                scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");

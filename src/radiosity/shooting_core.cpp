@@ -12,6 +12,7 @@
 #include <atomic>
 #include <climits>
 #include <cmath>
+#include <limits>
 
 namespace rayrad::radiosity {
 
@@ -19,6 +20,9 @@ namespace {
 /// Derived ΔI_max: this fraction of the scene's mean illuminance (measured trade-off, see
 /// docs/validation.md).
 constexpr double kDefaultStepFraction = 0.2;
+/// Shots without a new low of the residual before the solve counts as stalled (or a
+/// quarter of the clusters, if more).
+constexpr int64_t kStallShots = 2000;
 }  // namespace
 
 template <class V>
@@ -104,6 +108,9 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     m_stats.overshooting = m_options.overshoot;
     m_shotSincePushPull = 0;
     m_powerAtPushPull = s.initialUnshotFlux / kPi;
+    m_bestResidual = std::numeric_limits<double>::infinity();
+    m_shotsSinceBest = 0;
+    m_start = std::chrono::steady_clock::now();
     sync(s);
 }
 
@@ -173,14 +180,16 @@ void ShootingCore<V>::receive(size_t j, const V& deltaE) {
 template <class V>
 void ShootingCore<V>::pull(size_t c) {
     const Cluster& C = m_clustering.clusters[c];
-    V unshot(0.0), total(0.0);
+    V unshot(0.0), total(0.0), litReflectance(0.0);
     double absUnshot = 0;
     for (uint32_t j : C.patches) {
         double a = m_mesh.patches[j].area;
         unshot += m_unshot[j] * a;
         total += reflected(j) * a;
         absUnshot += std::abs(lum(m_unshot[j])) * a;
+        if (isLit(j)) litReflectance += m_reflectance[j] * a;
     }
+    m_light[c].litReflectance = litReflectance / C.area;
     m_light[c].unshot = unshot / C.area;  // ΔL_C = Σ ΔL_i A_i / A_C   (eq. 1)
     m_light[c].total = total / C.area;    // L_C  = Σ L_i A_i / A_C
     m_light[c].absUnshot = absUnshot / C.area;
@@ -292,8 +301,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     std::vector<V> overshoot(C.patches.size(), V(0.0));
     for (size_t k = 0; k < C.patches.size(); ++k) {
         uint32_t i = C.patches[k];
-        bool lit = lum(m_direct[i]) != 0 || lum(m_indirect[i]) != 0;
-        if (lit) overshoot[k] = m_reflectance[i] * ambient / kPi;
+        if (isLit(i)) overshoot[k] = m_reflectance[i] * ambient / kPi;
     }
     // corrected[s][d]: receiver d already got source s's total in a correction.
     std::vector<std::vector<char>> corrected(m_sources.size(), std::vector<char>(n, 0));
@@ -465,9 +473,40 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
 }
 
 template <class V>
+bool ShootingCore<V>::progressing(double residual) {
+    // The residual need not fall at every shot (overshooting ships light ahead, and
+    // corrections take some back), but it must reach a new low within a window of
+    // shots. If it does not, overshooting is switched off (its estimate is what can go
+    // round in circles); if it still does not, the solve stops and says so.
+    if (residual < m_bestResidual * (1 - 1e-9)) {
+        m_bestResidual = residual;
+        m_shotsSinceBest = 0;
+    } else if (++m_shotsSinceBest > std::max<int64_t>(kStallShots, static_cast<int64_t>(m_light.size()) / 4)) {
+        m_shotsSinceBest = 0;
+        if (m_options.overshoot) {
+            m_options.overshoot = false;
+            m_stats.overshooting = false;
+            m_stats.overshootStalled = true;
+        } else {
+            m_stats.stopReason = "stalled: the residual stopped falling";
+            return false;
+        }
+    }
+    if (m_options.maxSeconds > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count() > m_options.maxSeconds) {
+        m_stats.stopReason = "radiosity.max_seconds reached";
+        return false;
+    }
+    return true;
+}
+
+template <class V>
 bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
     if (s.converged) return false;
-    if (m_options.maxShots > 0 && s.shots >= m_options.maxShots) return false;
+    if (m_options.maxShots > 0 && s.shots >= m_options.maxShots) {
+        m_stats.stopReason = "radiosity.max_shots reached";
+        return false;
+    }
     // The residual is Σ |ΔL_C| A_C; with overshooting the shooter is the cluster that
     // would ship the most, |ΔL_C + ρ_C E_amb / π| A_C (a cluster that already shipped its
     // future light holds minus that and has nothing to ship).
@@ -483,7 +522,10 @@ bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
     for (size_t c = 0; c < m_light.size(); ++c) {
         const Cluster& C = m_clustering.clusters[c];
         const Light& l = m_light[c];
-        double power = std::abs(lum(l.unshot + l.pendingReflected + fromRgb<V>(C.meanReflectance) * ambient / kPi)) * C.area;
+        // The overshoot only of the lit members, as shootCluster() ships it: counting the
+        // unlit ones picked a dark cluster (the underside of a sofa) whose shots ship
+        // nothing, for ever.
+        double power = std::abs(lum(l.unshot + l.pendingReflected + l.litReflectance * ambient / kPi)) * C.area;
         if (power > bestPower) bestPower = power, best = c;
     }
     s.remainingUnshotFlux = kPi * total;
@@ -491,6 +533,7 @@ bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
         s.converged = true;
         return false;
     }
+    if (!progressing(total)) return false;
     pushPull(best);  // the shooter's ΔL_C must match its patches' ΔL_i
     m_shotSincePushPull += clusterPower(best);
     shootCluster(best, -1);

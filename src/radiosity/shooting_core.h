@@ -7,6 +7,7 @@
 #include <radiosity/shooting_solver.h>
 
 #include <cmath>
+#include <chrono>
 #include <memory>
 
 namespace rayrad::radiosity {
@@ -68,8 +69,20 @@ class ShootingCore final : public ShootingCoreBase {
         /// Σ |Y(ΔL_i)| A_i / A_C: members' unshot light may differ in sign (overshooting,
         /// corrections), and the residual must not let them cancel.
         double absUnshot = 0;
+        /// Σ ρ_i A_i / A_C over the members that have received light: the members that
+        /// take an overshoot (an unlit member is taken to stay unlit). Set by pull().
+        V litReflectance{0.0};
         int radius = 0;
     };
+
+    /// False when the solve must stop without converging (stall, time cap); see step().
+    bool progressing(double residual);
+    /// A patch that has received light, direct or indirect, so far.
+    bool isLit(size_t j) const { return lum(m_direct[j]) != 0 || lum(m_indirect[j]) != 0; }
+    /// Stall detection (see step()): the smallest residual seen and the shots since.
+    double m_bestResidual = 0;
+    int64_t m_shotsSinceBest = 0;
+    std::chrono::steady_clock::time_point m_start;
 
     V reflected(size_t j) const { return m_reflectance[j] * (m_direct[j] + m_indirect[j]) / kPi; }  // L = ρ E / π
     /// |ΔL_C + pending| A_C in cd: what a shot of cluster c ships (net over its members).

@@ -42,6 +42,10 @@ struct ShootingStatistics {
     int64_t unbalancedShots = 0;   ///< shots the conservation left alone (deficit beyond its bound)
     double mirrorAbsorbed = 0;     ///< lm the mirrors absorbed of what images delivered (delivered · (1/Π Ks − 1))
     bool overshooting = false;
+    /// Overshooting was switched off during the solve because the residual stalled.
+    bool overshootStalled = false;
+    /// Why the solve stopped before converging ("" when it converged or has not run).
+    std::string stopReason;
 };
 
 class ShootingCoreBase;

@@ -173,7 +173,7 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
                                                  : fmt::format(" (did you mean \"{}\"?)", hint)));
     }
 
-    o.required("material");
+    if (d.kind != ObjectKind::Mesh) o.required("material");  // a mesh may take its file's materials
     d.material = o.string("material").value_or("");
     if (!d.material.empty() && !materials.count(d.material)) {
         std::vector<std::string> names;
@@ -357,6 +357,7 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.stopUnshot = r.number("stop_unshot", d.solver.stopUnshot);
     if (!(d.solver.stopUnshot > 0 && d.solver.stopUnshot < 1)) r.error("stop_unshot", "expected a number in (0, 1)");
     d.solver.maxShots = static_cast<int64_t>(r.nonNegative("max_shots", static_cast<double>(d.solver.maxShots)));
+    d.solver.maxSeconds = r.nonNegative("max_seconds", d.solver.maxSeconds);
     d.solver.analyticDistance = r.nonNegative("analytic_distance", d.solver.analyticDistance);
     d.solver.areaLightSamples = r.integer("area_light_samples", d.solver.areaLightSamples, 1, 4096);
     d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
@@ -511,6 +512,9 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     if (ctx.errors == 0 && desc.lights.empty()) {
         bool anyEmitter = false;
         for (const auto& m : desc.materials) anyEmitter |= m.emissive;
+        // A mesh that takes its file's materials may bring emitters or lights (checked
+        // again when the scene is built).
+        for (const auto& o : desc.objects) anyEmitter |= o.kind == ObjectKind::Mesh && o.material.empty();
         if (!anyEmitter) ctx.error("/lights", "the scene has no light: add a light or an emissive material");
     }
     std::map<std::string, int> sensorNames;

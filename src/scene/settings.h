@@ -53,6 +53,9 @@ struct SolverOptions {
     double stopUnshot = 1e-3;
     /// Upper bound on shots (0 = none).
     int64_t maxShots = 0;
+    /// Upper bound on the secondary pass's wall-clock time in seconds (0 = none). The
+    /// solve also stops by itself when its residual stalls (see ShootingCore::step).
+    double maxSeconds = 0;
     /// Use the analytic polygon form factor when the receiver is closer to the source
     /// than this many source diameters; the point approximation beyond.
     double analyticDistance = 4.0;
