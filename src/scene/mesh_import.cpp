@@ -1,43 +1,251 @@
 #include <scene/mesh_import.h>
 
 #include <core/input_error.h>
+#include <scene/ply_reader.h>
+#include <scene/polygon.h>
 
 #include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
+#include <assimp/material.h>
 #include <assimp/scene.h>
 
+#include <fmt/format.h>
+
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <tuple>
 
 namespace rayrad::scene {
 
+namespace {
+
+/// The file's material m, or nothing usable (assimp's stand-in "DefaultMaterial" for
+/// files without materials counts as none).
+ImportedMaterial readMaterial(const aiMaterial* m) {
+    ImportedMaterial out;
+    aiString name;
+    if (m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
+    if (out.name == AI_DEFAULT_MATERIAL_NAME) return out;
+    aiColor4D base;
+    aiColor3D c;
+    // glTF's baseColorFactor first (assimp also copies it to the diffuse colour), then Kd.
+    if (m->Get(AI_MATKEY_BASE_COLOR, base) == AI_SUCCESS) {
+        out.reflectance = Rgb(base.r, base.g, base.b);
+        out.hasReflectance = true;
+    } else if (m->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
+        out.reflectance = Rgb(c.r, c.g, c.b);
+        out.hasReflectance = true;
+    }
+    if (m->Get(AI_MATKEY_COLOR_EMISSIVE, c) == AI_SUCCESS) {
+        out.emission = Rgb(c.r, c.g, c.b);
+        float strength = 1;
+        if (m->Get(AI_MATKEY_EMISSIVE_INTENSITY, strength) == AI_SUCCESS && std::isfinite(strength) && strength > 0)
+            out.emission *= static_cast<double>(strength);
+    }
+    aiString texture;
+    if (m->GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS ||
+        m->GetTexture(aiTextureType_BASE_COLOR, 0, &texture) == AI_SUCCESS)
+        out.diffuseTexture = texture.C_Str();
+    return out;
+}
+
+Vec3 toVec3(const aiVector3D& v) { return Vec3(v.x, v.y, v.z); }
+
+/// Fills an ImportedMesh: one vertex per distinct position (so neighbouring triangles
+/// share corners whether or not the file did), polygons triangulated by ear clipping.
+class MeshBuilder {
+  public:
+    explicit MeshBuilder(ImportedMesh& out) : m_out(out) {}
+
+    uint32_t vertexAt(const Vec3& p) {
+        auto key = std::make_tuple(p.x, p.y, p.z);
+        auto it = m_vertexIndex.find(key);
+        if (it != m_vertexIndex.end()) return it->second;
+        auto id = static_cast<uint32_t>(m_out.positions.size());
+        m_out.positions.push_back(p);
+        m_vertexIndex.emplace(key, id);
+        return id;
+    }
+
+    /// A face of 3 or more vertex indices (into positions, checked by the caller).
+    void addFace(const std::vector<uint32_t>& face, int material) {
+        if (face.size() == 3) {
+            add(face[0], face[1], face[2], material);
+            return;
+        }
+        m_corners.clear();
+        for (uint32_t i : face) m_corners.push_back(m_out.positions[i]);
+        for (const auto& t : triangulate(m_corners)) add(face[t[0]], face[t[1]], face[t[2]], material);
+    }
+
+  private:
+    void add(uint32_t a, uint32_t b, uint32_t c, int material) {
+        m_out.triangles.push_back({a, b, c});
+        m_out.triangleMaterial.push_back(material);
+    }
+
+    ImportedMesh& m_out;
+    std::map<std::tuple<double, double, double>, uint32_t> m_vertexIndex;
+    std::vector<Vec3> m_corners;
+};
+
+/// Walks the node tree, appending every mesh a node references with the node's
+/// accumulated transform. Each mesh's data is checked before it is used.
+class MeshCollector {
+  public:
+    MeshCollector(const aiScene& scene, ImportedMesh& out, std::string errorPrefix)
+        : m_scene(scene), m_out(out), m_prefix(std::move(errorPrefix)) {}
+
+    void visit(const aiNode* node, const aiMatrix4x4& parent, int depth) {
+        if (!node) return;
+        if (depth > 256) throw InputError(m_prefix + "the node hierarchy is deeper than 256 levels (a cycle?)");
+        const aiMatrix4x4 transform = parent * node->mTransformation;
+        m_nodeTransforms[node->mName.C_Str()] = transform;
+        for (unsigned k = 0; k < node->mNumMeshes; ++k) {
+            unsigned m = node->mMeshes ? node->mMeshes[k] : m_scene.mNumMeshes;
+            if (m >= m_scene.mNumMeshes || !m_scene.mMeshes || !m_scene.mMeshes[m]) {
+                ++m_out.droppedFaces;
+                continue;
+            }
+            addMesh(*m_scene.mMeshes[m], transform);
+        }
+        for (unsigned k = 0; k < node->mNumChildren; ++k)
+            if (node->mChildren) visit(node->mChildren[k], transform, depth + 1);
+    }
+
+    /// Node transform by name (lights are placed by the node of the same name).
+    const aiMatrix4x4* nodeTransform(const std::string& name) const {
+        auto it = m_nodeTransforms.find(name);
+        return it == m_nodeTransforms.end() ? nullptr : &it->second;
+    }
+
+  private:
+    void addMesh(const aiMesh& mesh, const aiMatrix4x4& transform) {
+        if (!mesh.mVertices || mesh.mNumVertices == 0 || !mesh.mFaces) {
+            m_out.droppedFaces += mesh.mNumFaces;
+            return;
+        }
+        std::vector<uint32_t> index(mesh.mNumVertices);
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            Vec3 p = toVec3(transform * mesh.mVertices[v]);
+            if (!isFinite(p)) throw InputError(m_prefix + fmt::format("vertex {} is not finite", v));
+            index[v] = m_builder.vertexAt(p);
+        }
+        int material = -1;
+        if (mesh.mMaterialIndex < m_materialOf.size()) material = m_materialOf[mesh.mMaterialIndex];
+        std::vector<uint32_t> face;
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& in = mesh.mFaces[f];
+            bool valid = in.mNumIndices >= 3 && in.mIndices;
+            for (unsigned k = 0; valid && k < in.mNumIndices; ++k) valid = in.mIndices[k] < mesh.mNumVertices;
+            if (!valid) {  // points and lines carry no area; out-of-range indices are broken data
+                ++m_out.droppedFaces;
+                continue;
+            }
+            face.clear();
+            for (unsigned k = 0; k < in.mNumIndices; ++k) face.push_back(index[in.mIndices[k]]);
+            m_builder.addFace(face, material);
+        }
+    }
+
+  public:
+    std::vector<int> m_materialOf;  ///< assimp material index → ImportedMesh::materials index, or −1
+
+  private:
+    const aiScene& m_scene;
+    ImportedMesh& m_out;
+    MeshBuilder m_builder{m_out};
+    std::string m_prefix;
+    std::map<std::string, aiMatrix4x4> m_nodeTransforms;
+};
+
+/// A PLY file through rayrad's own reader (assimp's crashes on some binary PLY files).
+ImportedMesh importPly(const std::string& path, const std::string& prefix) {
+    PlyMesh ply;
+    try {
+        ply = readPly(path);
+    } catch (const std::exception& e) {
+        throw InputError(prefix + e.what());
+    }
+    ImportedMesh out;
+    MeshBuilder builder(out);
+    std::vector<uint32_t> index(ply.positions.size());
+    for (size_t v = 0; v < ply.positions.size(); ++v) {
+        if (!isFinite(ply.positions[v])) throw InputError(prefix + fmt::format("vertex {} is not finite", v));
+        index[v] = builder.vertexAt(ply.positions[v]);
+    }
+    std::vector<uint32_t> face;
+    for (const auto& f : ply.faces) {
+        bool valid = f.size() >= 3;
+        for (uint32_t i : f) valid = valid && i < ply.positions.size();
+        if (!valid) {
+            ++out.droppedFaces;
+            continue;
+        }
+        face.clear();
+        for (uint32_t i : f) face.push_back(index[i]);
+        builder.addFace(face, -1);
+    }
+    return out;
+}
+
+bool hasExtension(const std::string& path, const std::string& ext) {
+    std::string e = std::filesystem::path(path).extension().string();
+    for (auto& ch : e) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return e == ext;
+}
+
+}  // namespace
+
 ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, const std::string& where) {
     const std::string place = where + "/file";
+    const std::string prefix = placeMessage(sceneFile, place, "mesh '" + path + "': ");
     std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "' is a directory"));
     if (!std::filesystem::is_regular_file(path, ec))
         throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "' does not exist"));
+    if (hasExtension(path, ".ply")) {
+        ImportedMesh out = importPly(path, prefix);
+        if (out.triangles.empty())
+            throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));
+        return out;
+    }
     Assimp::Importer importer;
-    // Keep vertices as written: no smoothing, no normal generation, only triangulation.
-    const aiScene* s = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                                   aiProcess_FindDegenerates);
+    // No post-processing at all: assimp's Triangulate asserts and JoinIdenticalVertices
+    // segfaults on some binary PLY files. The collector checks, triangulates and joins.
+    const aiScene* s = importer.ReadFile(path, 0);
     if (!s || !s->mRootNode)
         throw InputError(placeMessage(sceneFile, place, "cannot read mesh '" + path + "': " + importer.GetErrorString()));
     ImportedMesh out;
-    for (unsigned m = 0; m < s->mNumMeshes; ++m) {
-        const aiMesh* mesh = s->mMeshes[m];
-        auto base = static_cast<uint32_t>(out.positions.size());
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-            const aiVector3D& p = mesh->mVertices[v];
-            Vec3 q(p.x, p.y, p.z);
-            if (!isFinite(q))
-                throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has a non-finite vertex"));
-            out.positions.push_back(q);
-        }
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            const aiFace& face = mesh->mFaces[f];
-            if (face.mNumIndices != 3) continue;  // points and lines carry no area
-            out.triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
-        }
+    MeshCollector collector(*s, out, prefix);
+    for (unsigned m = 0; m < s->mNumMaterials && s->mMaterials; ++m) {
+        ImportedMaterial mat = s->mMaterials[m] ? readMaterial(s->mMaterials[m]) : ImportedMaterial{};
+        bool usable = mat.hasReflectance || mat.emission != Rgb(0.0);
+        collector.m_materialOf.push_back(usable ? static_cast<int>(out.materials.size()) : -1);
+        if (usable) out.materials.push_back(std::move(mat));
+    }
+    collector.visit(s->mRootNode, aiMatrix4x4(), 0);
+    for (unsigned l = 0; l < s->mNumLights && s->mLights; ++l) {
+        const aiLight* a = s->mLights[l];
+        if (!a || (a->mType != aiLightSource_POINT && a->mType != aiLightSource_SPOT)) continue;
+        ImportedLight light;
+        light.name = a->mName.C_Str();
+        light.isSpot = a->mType == aiLightSource_SPOT;
+        aiMatrix4x4 m;
+        if (const aiMatrix4x4* t = collector.nodeTransform(light.name)) m = *t;
+        light.position = toVec3(m * a->mPosition);
+        aiMatrix3x3 rotation(m);
+        Vec3 d = toVec3(rotation * a->mDirection);
+        if (glm::length(d) > 0) light.direction = glm::normalize(d);
+        // glTF intensities are candela for point and spot lights; assimp folds the
+        // intensity into the colour.
+        light.intensity = Rgb(a->mColorDiffuse.r, a->mColorDiffuse.g, a->mColorDiffuse.b);
+        light.innerAngleDeg = glm::degrees(static_cast<double>(a->mAngleInnerCone));
+        light.outerAngleDeg = glm::degrees(static_cast<double>(a->mAngleOuterCone));
+        if (!isFinite(light.position) || !isFinite(light.intensity)) continue;
+        out.lights.push_back(light);
     }
     if (out.triangles.empty())
         throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));

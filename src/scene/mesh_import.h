@@ -1,4 +1,4 @@
-// Triangle meshes from OBJ/PLY/... files through assimp.
+// Triangle meshes, their materials and lights from OBJ/PLY/glTF/... files through assimp.
 #pragma once
 
 #include <core/math.h>
@@ -8,13 +8,40 @@
 
 namespace rayrad::scene {
 
+/// A material as the mesh file gives it (OBJ .mtl, glTF), diffuse only.
+struct ImportedMaterial {
+    std::string name;
+    bool hasReflectance = false;
+    Rgb reflectance{0.0};        ///< OBJ Kd, glTF baseColorFactor (linear RGB)
+    Rgb emission{0.0};           ///< OBJ Ke, glTF emissiveFactor × emissive strength, read as cd/m²
+    std::string diffuseTexture;  ///< OBJ map_Kd, glTF baseColorTexture: noted, not used yet
+};
+
+/// A punctual light of the file (glTF KHR_lights_punctual): point or spot, in candela.
+struct ImportedLight {
+    std::string name;
+    bool isSpot = false;
+    Vec3 position{0.0};
+    Vec3 direction{0, 0, -1};    ///< spot axis, unit
+    Rgb intensity{0.0};          ///< cd per channel (colour × intensity)
+    double innerAngleDeg = 0, outerAngleDeg = 45;
+};
+
+/// Every mesh of the file as one triangle list in the file's coordinates with the node
+/// transforms applied. Vertices at identical positions are shared; polygons are
+/// triangulated here (not by assimp, whose post-processing can crash on broken files).
 struct ImportedMesh {
     std::vector<Vec3> positions;
     std::vector<std::vector<uint32_t>> triangles;
+    std::vector<int> triangleMaterial;     ///< index into materials, or −1 (the file gives none)
+    std::vector<ImportedMaterial> materials;
+    std::vector<ImportedLight> lights;
+    size_t droppedFaces = 0;               ///< points, lines, faces with bad indices
 };
 
-/// Reads every mesh in the file as triangles, in the file's own coordinates.
-/// Throws InputError("<sceneFile>: <where>/file: ...") if it cannot be read.
+/// Reads the file. Throws InputError("<sceneFile>: <where>/file: ...") if it cannot be
+/// read or holds nothing usable; never crashes on a malformed file (indices out of range,
+/// non-finite coordinates, empty meshes are checked before use).
 ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, const std::string& where);
 
 }  // namespace rayrad::scene

@@ -77,6 +77,8 @@ struct Sensor {
 /// Counts of what the builder dropped, reported as warnings.
 struct BuildWarnings {
     int degeneratePolygons = 0;
+    int droppedMeshFaces = 0;          ///< points, lines and faces with bad indices in mesh files
+    int clampedFileReflectances = 0;   ///< mesh-file materials whose reflectance was clamped
 };
 
 struct Scene {

@@ -37,6 +37,9 @@ bool Scene::hasReflectance() const {
 
 namespace {
 
+/// Reflectances read from mesh files are clamped to this (a white of 1 never converges).
+constexpr double kMaxFileReflectance = 0.95;
+
 Vec3 transformPoint(const glm::dmat4& m, const Vec3& p) { return Vec3(m * glm::dvec4(p, 1.0)); }
 
 /// A box's six faces, each a quad CCW seen from outside.
@@ -120,10 +123,16 @@ class Builder {
             if (m.emissive && m.luminance > 0) mat.emission = m.color / luminance(m.color) * m.luminance;
             s.materials.push_back(mat);
         }
-        for (const auto& o : m_desc.objects) addObject(s, o, materialIndex.at(o.material));
+        for (const auto& o : m_desc.objects)
+            addObject(s, o, o.material.empty() ? -1 : materialIndex.at(o.material));
         collectMirrors(s);
         resolveFluxes(s);
         for (const auto& l : m_desc.lights) s.lights.push_back(makeLight(l));
+        for (const auto& l : m_fileLights) s.lights.push_back(l);
+        bool anyEmitter = !s.lights.empty();
+        for (const auto& g : s.groups) anyEmitter |= s.materials[g.material].isEmissive();
+        if (!anyEmitter)
+            fail("/lights", "the scene has no light: add a light or an emissive material (the mesh files bring none)");
         if (m_desc.camera) {
             const auto& c = *m_desc.camera;
             s.camera = Camera{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height};
@@ -168,7 +177,7 @@ class Builder {
             if (reverse != mirrored) std::reverse(v.begin(), v.end());
             return v;
         };
-        if (s.materials[material].kind == SurfaceKind::Mirror &&
+        if (material >= 0 && s.materials[material].kind == SurfaceKind::Mirror &&
             (o.kind == ObjectKind::Sphere || o.kind == ObjectKind::Mesh))
             fail(o.where + "/material", "a mirror must be a quad, polygon or box (the image method needs a few planes, "
                                         "not a curved surface)");
@@ -186,15 +195,70 @@ class Builder {
                 finishMeshGroup(s, std::move(g), m, o.inward != mirrored, material, o.where, o.keepAbove);
                 break;
             }
-            case ObjectKind::Mesh: {
-                ImportedMesh mesh = importMesh(o.resolvedFile, m_desc.file, o.where);
-                SurfaceGroup g;
-                g.positions = std::move(mesh.positions);
-                g.polygons = std::move(mesh.triangles);
-                finishMeshGroup(s, std::move(g), m, mirrored, material, o.where, o.keepAbove);
+            case ObjectKind::Mesh:
+                addMesh(s, o, material, mirrored);
                 break;
-            }
         }
+    }
+
+    /// A mesh file: one surface group per material. `material` ≥ 0 (the object's JSON
+    /// material) overrides the file's materials; −1 takes them from the file (OBJ .mtl,
+    /// glTF), each becoming a scene material named "<file>:<name>". The file's punctual
+    /// lights (glTF KHR_lights_punctual) join the scene's lights.
+    void addMesh(Scene& s, const ObjectDesc& o, int material, bool mirrored) {
+        ImportedMesh mesh = importMesh(o.resolvedFile, m_desc.file, o.where);
+        if (mesh.droppedFaces > 0) s.warnings.droppedMeshFaces += static_cast<int>(mesh.droppedFaces);
+        std::map<int, std::vector<std::vector<uint32_t>>> byMaterial;  // scene material → triangles
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            int m = material;
+            if (m < 0) {
+                int fileIndex = mesh.triangleMaterial[t];
+                if (fileIndex < 0)
+                    fail(o.where + "/material", "the mesh file gives some triangles no material: give the object a "
+                                                "\"material\"");
+                m = fileMaterial(s, o, mesh.materials[fileIndex]);
+            }
+            byMaterial[m].push_back(mesh.triangles[t]);
+        }
+        for (auto& [m, triangles] : byMaterial) {
+            SurfaceGroup g;
+            g.positions = mesh.positions;
+            g.polygons = std::move(triangles);
+            finishMeshGroup(s, std::move(g), o.transform, mirrored, m, o.where, o.keepAbove);
+        }
+        for (const auto& l : mesh.lights) {
+            PointLight p;
+            p.position = transformPoint(o.transform, l.position);
+            p.intensity = l.intensity;
+            if (l.isSpot) {
+                p.isSpot = true;
+                p.direction = glm::normalize(glm::dmat3(o.transform) * l.direction);
+                p.cosInner = std::cos(glm::radians(std::min(l.innerAngleDeg, l.outerAngleDeg)));
+                p.cosOuter = std::cos(glm::radians(l.outerAngleDeg));
+                if (p.cosInner - p.cosOuter < 1e-12) p.cosInner = p.cosOuter + 1e-12;
+            }
+            if (luminance(p.intensity) > 0) m_fileLights.push_back(p);
+        }
+    }
+
+    /// The scene material for a file's material, created once per file and name.
+    int fileMaterial(Scene& s, const ObjectDesc& o, const ImportedMaterial& m) {
+        std::string name = o.file + ":" + m.name;
+        auto it = m_fileMaterials.find(name);
+        if (it != m_fileMaterials.end()) return it->second;
+        Material mat;
+        mat.name = name;
+        mat.kind = SurfaceKind::Diffuse;
+        // Reflectance must stay below 1 for the radiosity to converge; files often say 1.
+        for (int c = 0; c < 3; ++c) mat.reflectance[c] = std::clamp(m.reflectance[c], 0.0, kMaxFileReflectance);
+        if (m.reflectance.r > kMaxFileReflectance || m.reflectance.g > kMaxFileReflectance ||
+            m.reflectance.b > kMaxFileReflectance)
+            ++s.warnings.clampedFileReflectances;
+        mat.emission = m.emission;
+        int index = static_cast<int>(s.materials.size());
+        s.materials.push_back(mat);
+        m_fileMaterials.emplace(name, index);
+        return index;
     }
 
     /// Transforms a triangle mesh, keeps the triangles above the clipping planes, drops
@@ -299,6 +363,8 @@ class Builder {
     }
 
     const SceneDesc& m_desc;
+    std::map<std::string, int> m_fileMaterials;  ///< "<file>:<material>" → scene material
+    std::vector<PointLight> m_fileLights;        ///< punctual lights of mesh files, world space
 };
 
 }  // namespace

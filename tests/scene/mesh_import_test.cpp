@@ -1,0 +1,205 @@
+// Mesh files: PLY (ASCII, binary of both byte orders, broken and hostile), OBJ with .mtl
+// materials, glTF with materials and KHR_lights_punctual. No input may crash the importer.
+#include <core/input_error.h>
+#include <scene/mesh_import.h>
+#include <scene/scene.h>
+#include <scene/scene_parser.h>
+
+#include "test_support.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace rayrad;
+using namespace rayrad::scene;
+
+namespace {
+
+/// Writes a PLY file with float x, y, z vertices and a face list (count type uchar, index
+/// type int), in the given format; `vertexCount`/`faceCount` < 0 take the real counts.
+/// `cut` > 0 truncates the file to that many bytes.
+std::string writePly(const std::string& name, const std::vector<std::array<float, 3>>& vertices,
+                     const std::vector<std::vector<int>>& faces, const std::string& format = "binary_little_endian",
+                     long long vertexCount = -1, long long faceCount = -1, size_t cut = 0) {
+    std::string header = "ply\nformat " + format + " 1.0\ncomment rayrad test\n";
+    header += "element vertex " + std::to_string(vertexCount < 0 ? (long long)vertices.size() : vertexCount) + "\n";
+    header += "property float x\nproperty float y\nproperty float z\n";
+    header += "element face " + std::to_string(faceCount < 0 ? (long long)faces.size() : faceCount) + "\n";
+    header += "property list uchar int vertex_indices\nend_header\n";
+    std::string body;
+    const bool ascii = format == "ascii", big = format == "binary_big_endian";
+    auto put = [&](const void* p, size_t n) {
+        std::string bytes(static_cast<const char*>(p), n);
+        if (big) std::reverse(bytes.begin(), bytes.end());  // this machine is little endian
+        body += bytes;
+    };
+    for (const auto& v : vertices) {
+        if (ascii) body += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+        else for (float x : v) put(&x, 4);
+    }
+    for (const auto& f : faces) {
+        if (ascii) {
+            body += std::to_string(f.size());
+            for (int i : f) body += " " + std::to_string(i);
+            body += "\n";
+        } else {
+            auto n = static_cast<unsigned char>(f.size());
+            put(&n, 1);
+            for (int i : f) put(&i, 4);
+        }
+    }
+    std::string all = header + body;
+    if (cut > 0) all.resize(cut);
+    std::string path = "/tmp/rayrad_test_" + name;
+    std::ofstream(path, std::ios::binary) << all;
+    return path;
+}
+
+const std::vector<std::array<float, 3>> kVertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}};
+
+/// The importer's error for a file, or "" when it loads.
+std::string importError(const std::string& path) {
+    try {
+        importMesh(path, "scene.json", "/objects/0");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("PLY: ASCII, binary little and big endian give the same triangles; quads are triangulated",
+          "[scene][import]") {
+    std::string format = GENERATE("ascii", "binary_little_endian", "binary_big_endian");
+    auto mesh = importMesh(writePly("tri_" + format + ".ply", kVertices, {{0, 1, 2}, {0, 2, 3}, {0, 1, 4}}, format),
+                           "scene.json", "/objects/0");
+    CHECK(mesh.triangles.size() == 3);
+    CHECK(mesh.positions.size() == 5);
+    CHECK(mesh.positions[2] == Vec3(1, 1, 0));
+    auto quads = importMesh(writePly("quad_" + format + ".ply", kVertices, {{0, 1, 2, 3}, {0, 1, 4}}, format),
+                            "scene.json", "/objects/0");
+    CHECK(quads.triangles.size() == 3);
+}
+
+TEST_CASE("PLY: broken and hostile files give a clear error naming the problem, never a crash", "[scene][import]") {
+    CHECK_THAT(importError(writePly("bad_huge.ply", kVertices, {{0, 1, 2}}, "binary_little_endian", 4000000000LL)),
+               Catch::Contains("claims 4000000000 records"));
+    CHECK_THAT(importError(writePly("bad_short.ply", kVertices, {{0, 1, 2}}, "binary_little_endian", -1, 1000)),
+               Catch::Contains("element 'face' claims 1000 records"));
+    CHECK_THAT(importError(writePly("bad_cut.ply", kVertices, {{0, 1, 2}}, "binary_little_endian", -1, -1, 190)),
+               Catch::Contains("claims"));
+    CHECK_THAT(importError(writePly("bad_negative.ply", kVertices, {{0, 1, 2}, {0, -1, 3}})),
+               Catch::Contains("face 1: vertex index -1 is not a valid index"));
+    CHECK_THAT(importError(writePly("bad_nan.ply", {{0, 0, 0}, {std::nanf(""), 0, 0}, {1, 1, 0}}, {{0, 1, 2}})),
+               Catch::Contains("vertex 1 is not finite"));
+    CHECK_THAT(importError(writePly("bad_nofaces.ply", kVertices, {})), Catch::Contains("has no triangles"));
+    {
+        std::ofstream("/tmp/rayrad_test_bad_garbage.ply", std::ios::binary)
+            << "ply\nformat binary_little_endian 1.0\n" << std::string(300, '\xff');
+        CHECK_THAT(importError("/tmp/rayrad_test_bad_garbage.ply"), Catch::Contains("header line 3"));
+        std::ofstream("/tmp/rayrad_test_bad_empty.ply", std::ios::binary);
+        CHECK_THAT(importError("/tmp/rayrad_test_bad_empty.ply"), Catch::Contains("ends before end_header"));
+    }
+    // Out-of-range indices and lines are dropped and counted; the rest loads.
+    auto mesh = importMesh(writePly("bad_range.ply", kVertices, {{0, 1, 2}, {0, 7, 99999999}, {0, 1}}), "scene.json",
+                           "/objects/0");
+    CHECK(mesh.triangles.size() == 1);
+    CHECK(mesh.droppedFaces == 2);
+}
+
+TEST_CASE("PLY: every truncation of a binary file loads or gives an InputError", "[scene][import]") {
+    std::string path = writePly("whole.ply", kVertices, {{0, 1, 2}, {0, 2, 3, 4}, {1, 2, 4}});
+    std::ifstream in(path, std::ios::binary);
+    std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (size_t n = 0; n < whole.size(); n += 3) {
+        std::ofstream("/tmp/rayrad_test_cut.ply", std::ios::binary) << whole.substr(0, n);
+        INFO("first " << n << " bytes");
+        std::string error = importError("/tmp/rayrad_test_cut.ply");
+        CHECK((error.empty() || error.find("rayrad_test_cut.ply") != std::string::npos));
+    }
+}
+
+TEST_CASE("OBJ with .mtl: usemtl groups become materials (Kd reflectance, Ke emission); a JSON material overrides",
+          "[scene][import]") {
+    std::ofstream("/tmp/rayrad_test_room.mtl") << "newmtl wall\nKd 0.6 0.5 0.4\n\nnewmtl lamp\nKd 0 0 0\nKe 100 100 100\n"
+                                                  "map_Kd wall.png\n";
+    std::ofstream("/tmp/rayrad_test_room.obj") << "mtllib rayrad_test_room.mtl\n"
+                                                  "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\n"
+                                                  "usemtl wall\nf 1 2 3 4\nusemtl lamp\nf 1 2 6\nf 1 6 5\n";
+    auto mesh = importMesh("/tmp/rayrad_test_room.obj", "scene.json", "/objects/0");
+    REQUIRE(mesh.materials.size() == 2);
+    REQUIRE(mesh.triangles.size() == 4);
+    CHECK(mesh.positions.size() == 6);  // shared corners
+    const ImportedMaterial* wall = nullptr;
+    const ImportedMaterial* lamp = nullptr;
+    for (const auto& m : mesh.materials) (m.name == "wall" ? wall : lamp) = &m;
+    REQUIRE(wall);
+    REQUIRE(lamp);
+    CHECK(wall->reflectance.r == Approx(0.6));
+    CHECK(wall->reflectance.b == Approx(0.4));
+    CHECK(lamp->emission.g == Approx(100));
+    CHECK(lamp->diffuseTexture == "wall.png");
+
+    auto build = [](const std::string& material) {
+        std::string json = R"({"materials": {"grey": {"reflectance": 0.3}},
+            "objects": [{"type": "mesh", "file": "/tmp/rayrad_test_room.obj")" + material + R"(}],
+            "lights": [{"type": "point", "position": [0.5, 0.5, 0.5], "intensity_cd": 1}]})";
+        std::ofstream("/tmp/rayrad_test_obj_scene.json") << json;
+        return buildScene(loadScene("/tmp/rayrad_test_obj_scene.json"));
+    };
+    Scene fromFile = build("");
+    CHECK(fromFile.groups.size() == 2);
+    bool sawLamp = false;
+    for (const auto& g : fromFile.groups)
+        if (fromFile.materials[g.material].isEmissive()) {
+            sawLamp = true;
+            CHECK(g.polygons.size() == 2);
+        }
+    CHECK(sawLamp);
+    Scene overridden = build(R"(, "material": "grey")");
+    REQUIRE(overridden.groups.size() == 1);
+    CHECK(overridden.materials[overridden.groups[0].material].name == "grey");
+}
+
+TEST_CASE("glTF: baseColorFactor, node transforms and KHR_lights_punctual point and spot lights in candela",
+          "[scene][import]") {
+    // One triangle at z = 2 (node translation), a red material, a point light (colour
+    // × 100 cd) and a spot turned 90° about x (its −z axis becomes +y).
+    const char* gltf = R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [
+        {"name": "bulb", "type": "point", "color": [1, 0.5, 0.25], "intensity": 100},
+        {"name": "spot", "type": "spot", "intensity": 50, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}}]}},
+      "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+      "nodes": [{"mesh": 0, "translation": [0, 0, 2]},
+                {"name": "bulbnode", "translation": [0.2, 0.3, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+                {"name": "spotnode", "translation": [1, 1, 4], "rotation": [0.70710678, 0, 0, 0.70710678],
+                 "extensions": {"KHR_lights_punctual": {"light": 1}}}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+      "materials": [{"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 1]}}],
+      "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})";
+    std::ofstream("/tmp/rayrad_test_tri.gltf") << gltf;
+    auto mesh = importMesh("/tmp/rayrad_test_tri.gltf", "scene.json", "/objects/0");
+    REQUIRE(mesh.triangles.size() == 1);
+    CHECK(mesh.positions[0] == Vec3(0, 0, 2));
+    REQUIRE(mesh.triangleMaterial[0] >= 0);
+    CHECK(mesh.materials[mesh.triangleMaterial[0]].name == "red");
+    CHECK(mesh.materials[mesh.triangleMaterial[0]].reflectance.r == Approx(0.8));
+    REQUIRE(mesh.lights.size() == 2);
+    const ImportedLight& bulb = mesh.lights[0].isSpot ? mesh.lights[1] : mesh.lights[0];
+    const ImportedLight& spot = mesh.lights[0].isSpot ? mesh.lights[0] : mesh.lights[1];
+    CHECK(bulb.position.x == Approx(0.2));
+    CHECK(bulb.position.z == Approx(3));
+    CHECK(bulb.intensity.r == Approx(100));
+    CHECK(bulb.intensity.b == Approx(25));
+    CHECK(spot.direction.y == Approx(1).margin(1e-6));
+    CHECK(spot.innerAngleDeg == Approx(0.2 * 180 / kPi));
+    CHECK(spot.outerAngleDeg == Approx(0.5 * 180 / kPi));
+}
