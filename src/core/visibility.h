@@ -13,6 +13,11 @@ class Visibility {
     virtual ~Visibility() = default;
     /// True when nothing blocks the open segment between `from` and `to` (metres).
     virtual bool visible(const Vec3& from, const Vec3& to) const = 0;
+    /// The same from a point x on a surface with unit normal n: the segment leaves from
+    /// x lifted off its surface, and is not shrunk at that end. (A segment shrunk along
+    /// itself from a point where a wall stands on the floor starts beyond the wall: the
+    /// light behind the wall leaked in.) x should lie inside its own patch, not on an edge.
+    virtual bool visibleFromSurface(const Vec3& x, const Vec3& /*n*/, const Vec3& to) const { return visible(x, to); }
 };
 
 }  // namespace rayrad

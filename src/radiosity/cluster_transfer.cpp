@@ -33,8 +33,8 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
         for (int m = 0; m < k; ++m) repeat |= sourceSamples[m] == sourceSamples[k] && receiver.samples[m] == receiver.samples[k];
         if (repeat) continue;
         ++rays;
-        visible += vis.visible(sourceMesh.patches[sourceSamples[k]].centroid,
-                               receiverMesh.patches[receiver.samples[k]].centroid);
+        const Patch& at = receiverMesh.patches[receiver.samples[k]];
+        visible += vis.visibleFromSurface(at.centroid, at.normal, sourceMesh.patches[sourceSamples[k]].centroid);
     }
     return kPi * f * visible / rays;
 }

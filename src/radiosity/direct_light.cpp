@@ -83,7 +83,7 @@ Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const
     double cosTheta = glm::dot(n, d) / r;
     if (cosTheta <= 0) return Rgb(0.0);
     Rgb intensity = l.intensityToward(-d / r);
-    if (intensity == Rgb(0.0) || !vis.visible(x, l.position)) return Rgb(0.0);
+    if (intensity == Rgb(0.0) || !vis.visibleFromSurface(x, n, l.position)) return Rgb(0.0);
     return intensity * (cosTheta / r2);  // E = I cosθ / d²
 }
 
@@ -95,7 +95,7 @@ Rgb DirectLight::fromPointImage(const scene::PointLight& l, const MirrorImage& i
     double cosTheta = glm::dot(n, d) / std::sqrt(r2);
     if (cosTheta <= 0) return Rgb(0.0);
     Vec3 leaving;
-    if (!path.trace(image.point(l.position), x, &leaving)) return Rgb(0.0);
+    if (!path.trace(image.point(l.position), x, &leaving, &n)) return Rgb(0.0);
     return l.intensityToward(leaving) * image.weight * (cosTheta / r2);  // E = Ks I cosθ / d²
 }
 
@@ -169,7 +169,7 @@ Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3
                 double w = std::max(0.0, glm::dot(n, d) / r) * std::max(0.0, -glm::dot(light.normal, d) / r) / r2;
                 if (w <= 0) continue;
                 weightSum += w;
-                if (vis.visible(x, y)) visibleSum += w;
+                if (vis.visibleFromSurface(x, n, y)) visibleSum += w;
             }
     }
     double fraction = weightSum > 0 ? visibleSum / weightSum : 1.0;

@@ -51,6 +51,24 @@ std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, c
     return best;
 }
 
+bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tolerance) {
+    const Patch& p = mesh.patches[at.patch];
+    const double w[3] = {1 - at.u - at.v, at.u, at.v};  // weight of corner k
+    for (int k = 0; k < 3; ++k) {
+        if (w[k] * p.diameter >= tolerance) continue;  // not near the edge opposite corner k
+        const uint32_t a = p.v[(k + 1) % 3], b = p.v[(k + 2) % 3];
+        bool shared = false;
+        for (size_t i = 0; i < mesh.patches.size() && !shared; ++i) {
+            if (i == at.patch || mesh.patches[i].group != p.group) continue;
+            const auto& v = mesh.patches[i].v;
+            bool hasA = v[0] == a || v[1] == a || v[2] == a, hasB = v[0] == b || v[1] == b || v[2] == b;
+            shared = hasA && hasB;
+        }
+        if (!shared) return true;
+    }
+    return false;
+}
+
 Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double distance) {
     Vec3 toward = mesh.patches[patch].centroid - x;
     double len = glm::length(toward);
@@ -107,7 +125,7 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
         return sum;
     }
     double f = formFactorToPolygon(x, n, p, 3, normal);
-    if (f <= 0 || !m_vis.visible(x, c)) return Rgb(0.0);
+    if (f <= 0 || !m_vis.visibleFromSurface(x, n, c)) return Rgb(0.0);
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
 }
 
@@ -166,7 +184,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         double asOne = m_farClusterDiameters * C.diameter;
         if (asOne > 0 && C.patches.size() > 1 && d2 > asOne * asOne) {
             double f = formFactorPointApprox(x, n, C.centroid, C.normal, C.projectedArea);
-            bool seen = f > 0 && vis.visible(x, mesh.patches[m_brightestPatch[c]].centroid);
+            bool seen = f > 0 && vis.visibleFromSurface(x, n, mesh.patches[m_brightestPatch[c]].centroid);
             return seen ? Rgb(weight * m_clusterLuminance[c] * (kPi * f)) : Rgb(0.0);  // Ks π L_C F V
         }
         bool hasNear = real && std::find(nearClusters.begin(), nearClusters.end(), c) != nearClusters.end();
@@ -192,13 +210,13 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             if (f <= 0) continue;
             Rgb e = L * (kPi * f);  // E = π L F
             if (!shared) {
-                if (vis.visible(x, p.centroid)) sum += e;
+                if (vis.visibleFromSurface(x, n, p.centroid)) sum += e;
             } else {
                 sharedSum += e;
                 if (luminance(e) > strongestE) strongestE = luminance(e), strongest = j;
             }
         }
-        if (shared && sharedSum != Rgb(0.0) && vis.visible(x, mesh.patches[strongest].centroid))
+        if (shared && sharedSum != Rgb(0.0) && vis.visibleFromSurface(x, n, mesh.patches[strongest].centroid))
             sum += sharedSum;
         return sum;
     };
@@ -224,13 +242,17 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
                            const scene::Sensor& sensor) {
     SensorValue out;
     Vec3 x = sensor.position;
-    out.direct = lights.illuminance(x, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
     auto where = locateOnMesh(mesh, x, sensor.normal, 1e-6 * scene.diagonal());
     if (where) {
         if (!solution.vertexIndirect.empty())
             out.indirectVertex = interpolateIndirect(mesh, solution, where->patch, where->u, where->v);
-        x = nudgeInside(mesh, where->patch, x, 1e-6 * scene.diagonal());
+        // On an edge or a corner: the limit from inside the sensor's own patch, so its
+        // rays do not start in the neighbouring surface (or slip past a wall standing there).
+        // An edge inside a flat surface (a diagonal of its grid) needs no nudge.
+        const double nudge = 1e-6 * scene.diagonal();
+        if (onSurfaceBoundary(mesh, *where, 10 * nudge)) x = nudgeInside(mesh, where->patch, x, nudge);
     }
+    out.direct = lights.illuminance(x, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
     if (!solution.indirect.empty()) out.indirect = gatherer.indirectAt(x, sensor.normal);
     return out;
 }

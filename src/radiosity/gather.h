@@ -90,6 +90,10 @@ class Gatherer {
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
 };
 
+/// True when the location lies within `tolerance` (m) of an edge where its surface ends:
+/// the rim of a quad, a crease, a contact line (not a diagonal inside a flat grid).
+bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tolerance);
+
 /// Moves a surface point a hair (metres) toward the centroid of its patch, so points on
 /// an edge or corner take the limit from inside their own wall.
 Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double distance);

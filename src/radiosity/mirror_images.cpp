@@ -116,7 +116,7 @@ MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& cluster
     return g;
 }
 
-bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving) const {
+bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving, const Vec3* receiverNormal) const {
     // Walk back from the receiver: the segment toward the current image must cross the
     // chain's last mirror inside its polygon; the crossing becomes the next start, and
     // the image steps back by that reflection.
@@ -128,11 +128,15 @@ bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leavi
         if (!(a > 0 && b < 0)) return false;  // light arrives on the mirror's front side only
         Vec3 hit = from + (a / (a - b)) * (image - from);
         if (!scene::polygonContains(m.polygon, m.normal, hit)) return false;
-        if (!m_scene.visible(from, hit)) return false;
+        bool open = receiverNormal && from == receiver ? m_scene.visibleFromSurface(from, *receiverNormal, hit)
+                                                       : m_scene.visible(from, hit);
+        if (!open) return false;
         from = hit;
         image = m.reflectPoint(image);
     }
-    if (!m_scene.visible(from, image)) return false;  // the first leg, from the real source
+    bool open = receiverNormal && from == receiver ? m_scene.visibleFromSurface(from, *receiverNormal, image)
+                                                   : m_scene.visible(from, image);
+    if (!open) return false;  // the first leg, from the real source
     if (leaving) *leaving = glm::normalize(from - image);
     return true;
 }
@@ -142,6 +146,12 @@ bool MirrorPath::visible(const Vec3& from, const Vec3& to) const {
     const scene::Mirror& last = m_mirrors[m_image.chain.back()];
     if (last.side(from) < 0 && last.side(to) > 0) return trace(from, to);
     if (last.side(to) < 0 && last.side(from) > 0) return trace(to, from);
+    return false;
+}
+
+bool MirrorPath::visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to) const {
+    const scene::Mirror& last = m_mirrors[m_image.chain.back()];
+    if (last.side(to) < 0 && last.side(x) > 0) return trace(to, x, nullptr, &n);
     return false;
 }
 

@@ -82,9 +82,13 @@ class MirrorPath final : public Visibility {
         : m_mirrors(mirrors), m_image(image), m_scene(scene) {}
 
     bool visible(const Vec3& from, const Vec3& to) const override;
+    /// `x` a real receiver on a surface of normal n, `to` an image point.
+    bool visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to) const override;
     /// The same for a known image point and receiver; on success `leaving` (if given) is
     /// the unit direction in which the light left the real source (for spotlights).
-    bool trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving = nullptr) const;
+    /// `receiverNormal` (if given): the receiver is a surface point (see Visibility).
+    bool trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving = nullptr,
+               const Vec3* receiverNormal = nullptr) const;
 
   private:
     const std::vector<scene::Mirror>& m_mirrors;

@@ -20,7 +20,7 @@ double visiblePatchFormFactor(const PatchMesh& mesh, const Patch& source, const 
                               double analyticDistance, const Visibility& vis) {
     double f = patchFormFactor(mesh, source, x, n, analyticDistance);
     if (f <= 0) return 0.0;
-    return vis.visible(x, source.centroid) ? f : 0.0;
+    return vis.visibleFromSurface(x, n, source.centroid) ? f : 0.0;
 }
 
 }  // namespace rayrad::radiosity

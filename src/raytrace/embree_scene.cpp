@@ -5,6 +5,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -65,6 +66,10 @@ EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const
     rtcSetDeviceErrorFunction(m_impl->device, onEmbreeError, &m_impl->error);
     m_impl->scene = rtcNewScene(m_impl->device);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
+    // Watertight traversal: without it a ray through a shared edge of two triangles can
+    // slip between them. On grid-meshed walls the rays between patch centroids cross
+    // edges exactly, and light leaked through zero-thickness walls that way.
+    rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST);
 
     // Geometry 0: the patches; then the specular triangles, split by mask.
     auto addTriangles = [&](const std::vector<Vec3>& vertices, const std::vector<std::array<uint32_t, 3>>& triangles,
@@ -109,10 +114,20 @@ EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const
 
 EmbreeScene::~EmbreeScene() = default;
 
-bool EmbreeScene::visible(const Vec3& from, const Vec3& to) const {
+bool EmbreeScene::visible(const Vec3& from, const Vec3& to) const { return occluded(from, to, m_epsilon) == false; }
+
+bool EmbreeScene::visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to) const {
+    return !occluded(x + m_epsilon * n, to, 0.0);  // lifted off the surface, not shrunk there
+}
+
+bool EmbreeScene::occluded(const Vec3& from, const Vec3& to, double startShrink) const {
     Vec3 d = to - from;
     double len = glm::length(d);
-    if (len <= 2 * m_epsilon) return true;
+    if (len <= 2 * startShrink) return false;
+    // The end at `to` (a point on a surface) is shrunk by the epsilon, or by half the
+    // length for segments shorter than that: a 10 µm segment from a point at the foot of
+    // a wall to the floor beyond it must still meet the wall.
+    const double endShrink = std::min(m_epsilon, 0.5 * (len - startShrink));
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray{};
@@ -122,12 +137,12 @@ bool EmbreeScene::visible(const Vec3& from, const Vec3& to) const {
     ray.dir_x = static_cast<float>(d.x / len);
     ray.dir_y = static_cast<float>(d.y / len);
     ray.dir_z = static_cast<float>(d.z / len);
-    ray.tnear = static_cast<float>(m_epsilon);
-    ray.tfar = static_cast<float>(len - m_epsilon);
+    ray.tnear = static_cast<float>(startShrink);
+    ray.tfar = static_cast<float>(len - endShrink);
     ray.mask = kOpaqueMask;  // Debian's Embree has ray masks on: glass (mask 2) lets light through
     ray.flags = 0;
     rtcOccluded1(m_impl->scene, &context, &ray);
-    return ray.tfar >= 0;  // an occluder sets tfar to -inf
+    return ray.tfar < 0;  // an occluder sets tfar to -inf
 }
 
 Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar) const {
@@ -158,6 +173,10 @@ Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, do
     h.v = rh.hit.v;
     h.t = rh.ray.tfar;
     return h;
+}
+
+std::unique_ptr<EmbreeScene> buildEmbreeScene(const scene::Scene& scene, const radiosity::PatchMesh& mesh) {
+    return std::make_unique<EmbreeScene>(mesh, 1e-5 * scene.diagonal(), specularTriangles(scene));
 }
 
 }  // namespace rayrad::raytrace
