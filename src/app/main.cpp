@@ -9,6 +9,7 @@
 #include <radiosity/clusters.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
+#include <raytrace/embree_scene.h>
 #include <tonemap/display_transform.h>
 #include <tonemap/image_io.h>
 
@@ -188,7 +189,8 @@ int runInfo(const CommonArgs& a) {
     fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
     fmt::print("patches (premeshed triangles): {} (target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
                mesh.patches.size(), radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(), mesh.totalArea());
-    fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters).statistics());
+    auto embree = raytrace::buildEmbreeScene(scene, mesh);
+    fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters, embree.get()).statistics());
     fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
     for (const auto& l : scene.lights)
         fmt::print("  {} at {}: {} cd{}\n", l.isSpot ? "spot" : "point", toString(l.position), toString(l.intensity),

@@ -135,8 +135,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.mesh = radiosity::premesh(run.scene, run.scene.meshing);
 
     run.report.begin("visibility (Embree BVH)");
-    run.embree = std::make_unique<raytrace::EmbreeScene>(run.mesh, 1e-5 * run.scene.diagonal(),
-                                                         raytrace::specularTriangles(run.scene));
+    run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
 
     run.lights = std::make_unique<radiosity::DirectLight>(run.scene);
     run.mirrorImages = radiosity::mirrorImagesFor(run.scene).size();
@@ -150,7 +149,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     const bool wantGather = options.wantSensors && !run.scene.sensors.empty();
     if (run.scene.hasReflectance() || wantGather) {  // both the shooting and the gather use them
         run.report.begin("clusters");
-        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters);
+        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
     }
     if (run.scene.hasReflectance()) {
         run.report.begin("secondary pass (shooting)");

@@ -68,6 +68,9 @@ double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const 
 
 namespace {
 
+/// Members are tested for mutual visibility this far (× scene diagonal) off their surfaces.
+constexpr double kMemberLift = 2e-5;
+
 void finishCluster(const PatchMesh& mesh, const scene::Scene& scene, Cluster& c) {
     c.area = 0;
     c.centroid = Vec3(0.0);
@@ -108,7 +111,8 @@ void finishCluster(const PatchMesh& mesh, const scene::Scene& scene, Cluster& c)
 
 }  // namespace
 
-Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& o) {
+Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& o,
+                         const Visibility* vis) {
     Clustering out;
     out.enabled = o.enabled;
     out.clusterOf.assign(mesh.patches.size(), 0);
@@ -137,6 +141,14 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
     }
 
     const double cosTolerance = std::cos(glm::radians(o.normalToleranceDeg));
+    const double lift = kMemberLift * scene.diagonal();  // m, off the surface
+    auto seeEachOther = [&](const Patch& a, const Patch& b) {
+        if (!vis) return true;
+        // A segment between two points of a curved surface dips below it by about
+        // d·sinθ/8 (θ the angle between the normals): lift by twice that.
+        double h = lift + 0.25 * glm::length(a.centroid - b.centroid) * glm::length(glm::cross(a.normal, b.normal));
+        return vis->visible(a.centroid + h * a.normal, b.centroid + h * b.normal);
+    };
     std::map<std::array<int, 3>, std::vector<uint32_t>> voxelClusters;  // voxel → cluster ids
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];
@@ -144,7 +156,8 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
         auto& ids = voxelClusters[v];
         uint32_t chosen = UINT32_MAX;
         for (uint32_t id : ids)
-            if (glm::dot(mesh.patches[out.clusters[id].patches[0]].normal, p.normal) >= cosTolerance) {
+            if (const Patch& first = mesh.patches[out.clusters[id].patches[0]];
+                glm::dot(first.normal, p.normal) >= cosTolerance && seeEachOther(first, p)) {
                 chosen = id;
                 break;
             }

@@ -1,6 +1,7 @@
 // Clusters: patches grouped by the voxel holding their centroid and by normal direction.
 #pragma once
 
+#include <core/visibility.h>
 #include <radiosity/patch_mesh.h>
 #include <scene/scene.h>
 #include <scene/settings.h>
@@ -60,7 +61,14 @@ double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const 
 
 /// Builds the clusters. With options.enabled false every patch is its own cluster.
 /// Deterministic: patches are visited in index order and join the first cluster of
-/// their voxel whose first member's normal is within the tolerance.
-Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options);
+/// their voxel whose first member's normal is within the tolerance and, given `vis`,
+/// which that member can see: a cluster must never make a patch receive or send light
+/// for surfaces it cannot see, so floor patches on the two sides of a thin wall, a
+/// poster and the wall behind it, a shelf and the floor below it are never one cluster.
+/// (Two members see each other when the segment between their centroids, lifted off
+/// their surfaces, is unoccluded; the lift grows with the angle between their normals
+/// so a curved surface does not hide its own members.)
+Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options,
+                         const Visibility* vis = nullptr);
 
 }  // namespace rayrad::radiosity
