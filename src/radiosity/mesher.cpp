@@ -1,6 +1,7 @@
 #include <radiosity/mesher.h>
 
 #include <core/check.h>
+#include <radiosity/contact_lines.h>
 #include <scene/polygon.h>
 
 #include <algorithm>
@@ -18,6 +19,9 @@ double targetEdge(const scene::Scene& scene, const scene::MeshingOptions& option
 
 namespace {
 
+/// Surfaces closer than this (× scene diagonal) to a quad's plane touch it.
+constexpr double kContactTolerance = 1e-6;
+
 int cellsFor(double length, double edge) { return std::max(1, static_cast<int>(std::ceil(length / edge - 1e-9))); }
 
 void addPatch(PatchMesh& mesh, uint32_t a, uint32_t b, uint32_t c, int material, int group) {
@@ -29,9 +33,26 @@ void addPatch(PatchMesh& mesh, uint32_t a, uint32_t b, uint32_t c, int material,
     if (p.area > 0) mesh.patches.push_back(p);
 }
 
-/// Bilinear grid over a (possibly slightly non-planar) convex quad v0 v1 v2 v3.
+/// Grid-line parameters in [0, 1] for one direction of length `length` (m): cells of at
+/// most `cell` metres between the contact lines, which become grid lines themselves.
+std::vector<double> gridLines(double length, double cell, const std::vector<ContactLine>& contacts) {
+    std::vector<double> breaks{0.0};
+    for (const auto& c : contacts) breaks.push_back(c.at);
+    breaks.push_back(1.0);
+    std::vector<double> lines{0.0};
+    for (size_t k = 0; k + 1 < breaks.size(); ++k) {
+        int n = cellsFor((breaks[k + 1] - breaks[k]) * length, cell);
+        for (int i = 1; i <= n; ++i) lines.push_back(breaks[k] + (breaks[k + 1] - breaks[k]) * i / n);
+    }
+    return lines;
+}
+
+/// Bilinear grid over a (possibly slightly non-planar) convex quad v0 v1 v2 v3. Contact
+/// lines (other surfaces standing on the quad) are grid lines, and vertices on the
+/// touching part of a contact line are made once for each side: a patch never reaches
+/// under a wall, and vertex values never average the two sides of it.
 void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int group,
-              const scene::MeshingOptions& options, double edge) {
+              const scene::MeshingOptions& options, double edge, const QuadContacts& contacts, double tolerance) {
     double lu = std::max(glm::length(q[1] - q[0]), glm::length(q[2] - q[3]));
     double lv = std::max(glm::length(q[3] - q[0]), glm::length(q[2] - q[1]));
     int nu, nv;
@@ -48,17 +69,37 @@ void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int gro
     double aspect = options.maxCellAspect;
     nu = std::max(nu, static_cast<int>(std::ceil(lu / (aspect * lv / nv) - 1e-9)));
     nv = std::max(nv, static_cast<int>(std::ceil(lv / (aspect * lu / nu) - 1e-9)));
+    const std::vector<double> S = gridLines(lu, lu / nu * (1 + 1e-9), contacts.constS);
+    const std::vector<double> T = gridLines(lv, lv / nv * (1 + 1e-9), contacts.constT);
+    nu = static_cast<int>(S.size()) - 1;
+    nv = static_cast<int>(T.size()) - 1;
 
-    auto base = static_cast<uint32_t>(mesh.vertices.size());
-    for (int j = 0; j <= nv; ++j)
-        for (int i = 0; i <= nu; ++i) {
-            double s = static_cast<double>(i) / nu, t = static_cast<double>(j) / nv;
+    // The contact line a grid line lies on, if any.
+    auto contactAt = [](const std::vector<ContactLine>& lines, double x) -> const ContactLine* {
+        for (const auto& l : lines)
+            if (std::abs(l.at - x) < 1e-12) return &l;
+        return nullptr;
+    };
+    std::vector<const ContactLine*> onS(S.size()), onT(T.size());
+    for (size_t i = 0; i < S.size(); ++i) onS[i] = contactAt(contacts.constS, S[i]);
+    for (size_t j = 0; j < T.size(); ++j) onT[j] = contactAt(contacts.constT, T[j]);
+    const double su = tolerance / lu, sv = tolerance / lv;
+    // Vertex (i, j) as seen from the cell on side (si, sj) of its grid lines (1: the cell
+    // lies at higher parameters); one vertex unless a contact line touches there.
+    std::map<std::array<int, 4>, uint32_t> ids;
+    auto at = [&](int i, int j, int si, int sj) {
+        if (!onS[i] || !onS[i]->covers(T[j], sv)) si = 0;
+        if (!onT[j] || !onT[j]->covers(S[i], su)) sj = 0;
+        auto [it, added] = ids.emplace(std::array<int, 4>{i, j, si, sj}, static_cast<uint32_t>(mesh.vertices.size()));
+        if (added) {
+            double s = S[i], t = T[j];
             mesh.vertices.push_back((1 - s) * (1 - t) * q[0] + s * (1 - t) * q[1] + s * t * q[2] + (1 - s) * t * q[3]);
         }
-    auto at = [&](int i, int j) { return base + static_cast<uint32_t>(j * (nu + 1) + i); };
+        return it->second;
+    };
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {
-            uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+            uint32_t a = at(i, j, 1, 1), b = at(i + 1, j, 0, 1), c = at(i + 1, j + 1, 0, 0), d = at(i, j + 1, 1, 0);
             if (((i + j) & 1) == 0) {
                 addPatch(mesh, a, b, c, material, group);
                 addPatch(mesh, a, c, d, material, group);
@@ -135,6 +176,8 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
     PatchMesh mesh;
     double edge = targetEdge(scene, options);
     CHECK(edge > 0);
+    const auto bounds = groupBounds(scene);
+    const double tolerance = kContactTolerance * scene.diagonal();
     for (size_t gi = 0; gi < scene.groups.size(); ++gi) {
         const SurfaceGroup& g = scene.groups[gi];
         int group = static_cast<int>(gi);
@@ -142,7 +185,8 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
         if (g.polygons.size() == 1 && g.polygons[0].size() == 4 && options.premesh) {
             std::vector<Vec3> q;
             for (uint32_t i : g.polygons[0]) q.push_back(g.positions[i]);
-            meshQuad(mesh, q, g.material, group, options, edge);
+            meshQuad(mesh, q, g.material, group, options, edge, findContacts(scene, gi, q, bounds, tolerance),
+                     tolerance);
             continue;
         }
         std::vector<std::array<uint32_t, 3>> tris;
