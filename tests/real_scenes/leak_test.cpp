@@ -1,0 +1,131 @@
+// Issue 11, "no leaks, by construction": two rooms split by a zero-thickness wall or a
+// box partition, and a light outside a closed room. Every sensor, vertex value and pixel
+// on the dark side must be 0 (to 1e-6 of the lit room's mean), whatever the meshing.
+#include <app/pipeline.h>
+
+#include "pipeline_test_util.h"
+#include "test_support.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+
+using namespace rayrad;
+
+namespace {
+
+/// An 8 × 3 × 4 m box room split at x = 4 by `partition`, lit by a point light in the
+/// left half; sensors in the right (dark) half, and a camera there looking at the
+/// partition. `lx` is the dark side's face of the partition.
+std::string twoRooms(const std::string& partition, double lx, const std::string& radiosity) {
+    return fmt::format(R"({{"materials": {{"wall": {{"reflectance": 0.6}}}},
+        "objects": [{{"type": "box", "material": "wall", "min": [0, 0, 0], "max": [8, 3, 4], "facing": "inward"}}, {p}],
+        "lights": [{{"type": "point", "position": [2, 2.5, 2], "intensity_cd": 1000}}],
+        "sensors": [{{"name": "lit", "position": [2, 0, 2], "normal": [0, 1, 0]}},
+                    {{"name": "centre", "position": [6, 0, 2], "normal": [0, 1, 0]}},
+                    {{"name": "floor 1 mm", "position": [{x1mm}, 0, 2.3], "normal": [0, 1, 0]}},
+                    {{"name": "floor 1 cm", "position": [{x1cm}, 0, 1.7], "normal": [0, 1, 0]}},
+                    {{"name": "partition", "position": [{lx}, 1.5, 2.3], "normal": [1, 0, 0]}},
+                    {{"name": "partition foot", "position": [{lx}, 0, 0.9], "normal": [1, 0, 0]}},
+                    {{"name": "ceiling", "position": [{x1cm}, 3, 3.1], "normal": [0, -1, 0]}},
+                    {{"name": "side wall", "position": [{x1mm}, 1, 0], "normal": [0, 0, 1]}}],
+        "camera": {{"position": [7.8, 1.5, 2], "look_at": [4, 1.0, 2], "vfov_deg": 100, "resolution": [48, 36]}},
+        "render": {{"spp": 1}}, "radiosity": {{{r}}}}})",
+                       fmt::arg("p", partition), fmt::arg("lx", lx), fmt::arg("x1mm", lx + 0.001),
+                       fmt::arg("x1cm", lx + 0.01), fmt::arg("r", radiosity));
+}
+
+const char* kThinWall = R"({"type": "quad", "material": "wall", "vertices": [[4,0,0],[4,0,4],[4,3,4],[4,3,0]]},
+                           {"type": "quad", "material": "wall", "vertices": [[4,0,0],[4,3,0],[4,3,4],[4,0,4]]})";
+const char* kBoxWall = R"({"type": "box", "material": "wall", "min": [3.9, 0, 0], "max": [4.1, 3, 4]})";
+
+/// Checks that nothing on the dark side (x > `darkFrom`) received light: sensors, the
+/// patches' direct and indirect values, the vertex values, and every pixel of the image.
+void checkDark(const app::PipelineRun& run, double darkFrom, double litMean) {
+    const double bound = 1e-6 * litMean;
+    for (const auto& s : run.sensors) {
+        if (s.sensor.name == "lit") continue;
+        INFO("sensor " << s.sensor.name << ": direct " << luminance(s.value.direct) << " lx, gathered "
+                       << luminance(s.value.indirect) << " lx, vertex "
+                       << (s.value.indirectVertex ? luminance(*s.value.indirectVertex) : 0.0) << " lx");
+        CHECK(luminance(s.value.direct) <= bound);
+        CHECK(luminance(s.value.indirect) <= bound);
+        if (s.value.indirectVertex) CHECK(luminance(*s.value.indirectVertex) <= bound);
+    }
+    double worstPatch = 0, worstVertex = 0;
+    for (size_t i = 0; i < run.mesh.patches.size(); ++i) {
+        const auto& p = run.mesh.patches[i];
+        if (p.centroid.x <= darkFrom + 1e-9 || p.normal.x < -0.5) continue;  // lit side (and its face of a thin wall)
+        worstPatch = std::max({worstPatch, luminance(run.solution.directMean[i]), luminance(run.solution.indirect[i])});
+        for (int k = 0; k < 3; ++k)
+            worstVertex = std::max({worstVertex, luminance(run.solution.vertexIndirect[p.v[k]]),
+                                    luminance(run.solution.directCorner[3 * i + k])});
+    }
+    INFO("worst patch " << worstPatch << " lx, worst vertex " << worstVertex << " lx, bound " << bound << " lx");
+    CHECK(worstPatch <= bound);
+    CHECK(worstVertex <= bound);
+    REQUIRE(run.image);
+    double worstPixel = 0;
+    for (const auto& px : run.image->pixels) worstPixel = std::max(worstPixel, luminance(px));
+    INFO("brightest pixel " << worstPixel << " cd/m²");
+    CHECK(worstPixel <= bound / kPi);
+}
+
+app::PipelineOptions withImage() {
+    auto o = test::quiet();
+    o.wantImage = true;
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("two rooms split by a zero-thickness wall or a 0.2 m box partition: the dark room stays dark", "[real_scenes]") {
+    const bool thin = GENERATE(true, false);
+    // Three meshings: the default and two grids whose lines miss the wall.
+    const std::string radiosity = GENERATE(std::string(""), std::string(R"("max_edge": 0.37)"),
+                                           std::string(R"("max_edge": 0.61)"));
+    const bool clusters = GENERATE(true, false);
+    std::string json = twoRooms(thin ? kThinWall : kBoxWall, thin ? 4.0 : 4.1, radiosity);
+    if (!clusters) json.replace(json.rfind('}'), 1, R"(, "clusters": {"enabled": false}})");
+    INFO((thin ? "zero-thickness wall" : "box partition") << ", " << radiosity << (clusters ? "" : ", clusters off"));
+    auto run = app::runPipeline(test::writeTempScene(fmt::format("two_rooms_{}_{}", thin, clusters), json), withImage());
+    const auto& lit = run.sensors.front();
+    REQUIRE(lit.sensor.name == "lit");
+    double litMean = luminance(lit.value.direct + lit.value.indirect);
+    REQUIRE(litMean > 100);
+    checkDark(run, thin ? 4.0 : 4.1, litMean);
+}
+
+TEST_CASE("a light outside a closed room lights nothing inside it, not even its edges", "[real_scenes]") {
+    // A 4 × 3 × 4 m closed room (inward box) inside a larger lit hall; the light stands
+    // 5 cm outside the room's wall. Sensors on the room's floor edges and corners.
+    std::string json = R"({"materials": {"wall": {"reflectance": 0.6}},
+        "objects": [{"type": "box", "material": "wall", "min": [-4, 0, -4], "max": [12, 5, 8], "facing": "inward"},
+                    {"type": "box", "material": "wall", "min": [4, 0, 0], "max": [8, 3, 4], "facing": "inward"},
+                    {"type": "box", "material": "wall", "min": [4, 0, 0], "max": [8, 3, 4]}],
+        "lights": [{"type": "point", "position": [3.95, 2.9, 2], "intensity_cd": 1000}],
+        "sensors": [{"name": "lit", "position": [0, 0, 2], "normal": [0, 1, 0]},
+                    {"name": "floor edge", "position": [4, 0, 2], "normal": [0, 1, 0]},
+                    {"name": "corner", "position": [4, 0, 0], "normal": [0.57735, 0.57735, 0.57735]},
+                    {"name": "wall foot", "position": [4, 0, 1], "normal": [1, 0, 0]},
+                    {"name": "ceiling edge", "position": [4, 3, 2], "normal": [0, -1, 0]},
+                    {"name": "centre", "position": [6, 0, 2], "normal": [0, 1, 0]}],
+        "camera": {"position": [7.5, 1.5, 2], "look_at": [4, 1.5, 2], "vfov_deg": 100, "resolution": [48, 36]},
+        "render": {"spp": 1}})";
+    auto run = app::runPipeline(test::writeTempScene("light_outside", json), withImage());
+    double litMean = luminance(run.sensors.front().value.direct + run.sensors.front().value.indirect);
+    REQUIRE(litMean > 10);
+    // The dark side: the closed room's inside (its inward faces), x in (4, 8).
+    const double bound = 1e-6 * litMean;
+    for (const auto& s : run.sensors) {
+        if (s.sensor.name == "lit") continue;
+        INFO("sensor " << s.sensor.name << ": direct " << luminance(s.value.direct) << " lx, gathered "
+                       << luminance(s.value.indirect) << " lx");
+        CHECK(luminance(s.value.direct) <= bound);
+        CHECK(luminance(s.value.indirect) <= bound);
+    }
+    double worstPixel = 0;
+    for (const auto& px : run.image->pixels) worstPixel = std::max(worstPixel, luminance(px));
+    CHECK(worstPixel <= bound / kPi);
+}
