@@ -3,6 +3,7 @@
 #include <app/pipeline.h>
 #include <app/validate_cube.h>
 #include <app/validate_sphere.h>
+#include <app/scene_warnings.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
@@ -191,6 +192,7 @@ int runInfo(const CommonArgs& a) {
                mesh.patches.size(), radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(), mesh.totalArea());
     auto embree = raytrace::buildEmbreeScene(scene, mesh);
     fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters, embree.get()).statistics());
+    for (const auto& w : app::sceneWarnings(scene, mesh, *embree)) fmt::print("warning: {}\n", w);
     fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
     for (const auto& l : scene.lights)
         fmt::print("  {} at {}: {} cd{}\n", l.isSpot ? "spot" : "point", toString(l.position), toString(l.intensity),

@@ -1,5 +1,7 @@
 #include <app/pipeline.h>
 
+#include <app/scene_warnings.h>
+
 #include <core/progress.h>
 #include <radiosity/direct_pass.h>
 #include <radiosity/edge_vertices.h>
@@ -136,6 +138,9 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
+    run.warnings = sceneWarnings(run.scene, run.mesh, *run.embree);
+    if (!options.quiet)
+        for (const auto& w : run.warnings) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
 
     run.lights = std::make_unique<radiosity::DirectLight>(run.scene);
     run.mirrorImages = radiosity::mirrorImagesFor(run.scene).size();

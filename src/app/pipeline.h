@@ -61,6 +61,7 @@ struct PipelineRun {
     std::optional<HdrImage> image;
     StageReport report;
     std::vector<std::string> skipped;  ///< "stage (reason)" for the stages not needed
+    std::vector<std::string> warnings;  ///< scenes that are probably wrong (sceneWarnings), one line each
     std::vector<ConvergenceRow> convergence;
     std::vector<std::string> convergenceSensors;  ///< names of the sensors with an indirect reference
 };

@@ -241,19 +241,22 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
                            const DirectLight& lights, const Visibility& vis, Gatherer& gatherer,
                            const scene::Sensor& sensor) {
     SensorValue out;
-    Vec3 x = sensor.position;
-    auto where = locateOnMesh(mesh, x, sensor.normal, 1e-6 * scene.diagonal());
+    Vec3 directAt = sensor.position, gatherAt = sensor.position;
+    auto where = locateOnMesh(mesh, sensor.position, sensor.normal, 1e-6 * scene.diagonal());
     if (where) {
         if (!solution.vertexIndirect.empty())
             out.indirectVertex = interpolateIndirect(mesh, solution, where->patch, where->u, where->v);
-        // On an edge or a corner: the limit from inside the sensor's own patch, so its
-        // rays do not start in the neighbouring surface (or slip past a wall standing there).
-        // An edge inside a flat surface (a diagonal of its grid) needs no nudge.
+        // The limit from inside the sensor's own patch: the gather always (a point on a
+        // mesh vertex is a singular point of its neighbours' form factors); the direct
+        // light where the sensor's surface ends (an edge, a corner, the foot of a wall),
+        // so its shadow rays do not start in the neighbouring surface or slip past a
+        // wall standing there. Elsewhere the exact point: a light 1 mm away is exact.
         const double nudge = 1e-6 * scene.diagonal();
-        if (onSurfaceBoundary(mesh, *where, 10 * nudge)) x = nudgeInside(mesh, where->patch, x, nudge);
+        gatherAt = nudgeInside(mesh, where->patch, sensor.position, nudge);
+        if (onSurfaceBoundary(mesh, *where, 10 * nudge)) directAt = gatherAt;
     }
-    out.direct = lights.illuminance(x, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
-    if (!solution.indirect.empty()) out.indirect = gatherer.indirectAt(x, sensor.normal);
+    out.direct = lights.illuminance(directAt, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
+    if (!solution.indirect.empty()) out.indirect = gatherer.indirectAt(gatherAt, sensor.normal);
     return out;
 }
 

@@ -56,6 +56,7 @@ struct PointLight {
     bool isSpot = false;
     Vec3 direction{0, 0, -1};
     double cosInner = -1, cosOuter = -1;
+    std::string where;      ///< JSON pointer (or mesh file) it came from, for messages
 
     /// Intensity in cd (RGB) toward the unit direction `w` (from the light).
     Rgb intensityToward(const Vec3& w) const;

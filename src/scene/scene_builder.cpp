@@ -228,6 +228,7 @@ class Builder {
         }
         for (const auto& l : mesh.lights) {
             PointLight p;
+            p.where = o.where + "/file (light \"" + l.name + "\")";
             p.position = transformPoint(o.transform, l.position);
             p.intensity = l.intensity;
             if (l.isSpot) {
@@ -342,6 +343,7 @@ class Builder {
 
     static PointLight makeLight(const LightDesc& l) {
         PointLight p;
+        p.where = l.where;
         p.position = l.position;
         p.intensity = l.color * l.intensity;
         if (l.kind == LightKind::Spot) {

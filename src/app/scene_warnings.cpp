@@ -1,0 +1,182 @@
+#include <app/scene_warnings.h>
+
+#include <radiosity/gather.h>
+#include <raytrace/camera.h>
+#include <scene/polygon.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+namespace rayrad::app {
+
+namespace {
+
+/// Rays per probe: a Fibonacci sphere (deterministic, nearly uniform).
+constexpr int kProbeRays = 64;
+/// A probe counts as enclosed when at least this fraction of its rays hits the back of a surface.
+constexpr double kEnclosedFraction = 0.9;
+
+std::vector<Vec3> sphereDirections(int n) {
+    std::vector<Vec3> out;
+    const double golden = kPi * (3 - std::sqrt(5.0));
+    for (int i = 0; i < n; ++i) {
+        double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(std::max(0.0, 1 - z * z));
+        out.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
+    }
+    return out;
+}
+
+/// What the rays from a point see: hits on a surface's back side, hits closer than
+/// `near`, hits on a mirror's back, and misses.
+struct Probe {
+    int rays = 0, backFaces = 0, nearHits = 0, mirrorBacks = 0, misses = 0;
+    /// Hemisphere probes: the cosine-weighted share of the rays that hit within `near`
+    /// (what a sensor's illuminance would lose).
+    double nearWeight = 0, weight = 0;
+    double fraction(int count) const { return rays > 0 ? double(count) / rays : 0.0; }
+    double coveredFraction() const { return weight > 0 ? nearWeight / weight : 0.0; }
+};
+
+class Prober {
+  public:
+    Prober(const radiosity::PatchMesh& mesh, const raytrace::EmbreeScene& embree, double diagonal)
+        : m_mesh(mesh), m_embree(embree), m_directions(sphereDirections(kProbeRays)), m_diagonal(diagonal) {}
+
+    /// Rays over the sphere, or over the hemisphere about `normal` when it is non-zero.
+    Probe probe(const Vec3& origin, const Vec3& normal, double near) const {
+        Probe p;
+        const bool hemisphere = glm::length(normal) > 0;
+        const Vec3 from = hemisphere ? origin + 1e-5 * m_diagonal * normal : origin;
+        for (Vec3 d : m_directions) {
+            if (hemisphere && glm::dot(d, normal) < 0) d = -d;
+            const double cosine = hemisphere ? glm::dot(d, normal) : 1.0;
+            ++p.rays;
+            p.weight += cosine;
+            // tnear above 0: a sensor on an edge must not count the neighbouring wall it touches.
+            raytrace::Hit h = m_embree.intersect(from, d, 1e-7 * m_diagonal, std::numeric_limits<double>::infinity());
+            if (!h.found) {
+                ++p.misses;
+                continue;
+            }
+            Vec3 n = h.specular ? m_embree.specular(h.patch).normal : m_mesh.patches[h.patch].normal;
+            bool back = glm::dot(n, d) > 0;
+            p.backFaces += back;
+            p.mirrorBacks += back && h.specular && !m_embree.specular(h.patch).glass;
+            p.nearHits += h.t < near;
+            if (h.t < near) p.nearWeight += cosine;
+        }
+        return p;
+    }
+
+  private:
+    const radiosity::PatchMesh& m_mesh;
+    const raytrace::EmbreeScene& m_embree;
+    std::vector<Vec3> m_directions;
+    double m_diagonal;
+};
+
+}  // namespace
+
+std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                                       const raytrace::EmbreeScene& embree) {
+    std::vector<std::string> out;
+    const double diagonal = scene.diagonal();
+    const double near = std::max(5e-3, 1e-4 * diagonal);  // "buried": covered within a few mm
+    Prober prober(mesh, embree, diagonal);
+    auto enclosed = [](const Probe& p) { return p.fraction(p.backFaces) >= kEnclosedFraction; };
+
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const auto& l = scene.lights[i];
+        Probe p = prober.probe(l.position, Vec3(0.0), near);
+        if (enclosed(p))
+            out.push_back(fmt::format("{}: the light at {} is inside a closed solid ({} of {} rays from it hit the "
+                                      "inside of surfaces): its light reaches nothing",
+                                      l.where.empty() ? fmt::format("/lights/{}", i) : l.where, toString(l.position),
+                                      p.backFaces, p.rays));
+    }
+    for (const auto& g : scene.groups) {
+        if (!scene.materials[g.material].isEmissive()) continue;
+        for (const auto& poly : g.polygons) {
+            std::vector<Vec3> v;
+            for (uint32_t k : poly) v.push_back(g.positions[k]);
+            Vec3 c(0.0);
+            for (const auto& x : v) c += x;
+            c /= static_cast<double>(v.size());
+            Probe p = prober.probe(c, scene::polygonNormal(v), near);
+            if (enclosed(p) || p.fraction(p.nearHits) >= kEnclosedFraction) {
+                out.push_back(fmt::format("{}: an emitter at {} faces the inside of a solid or a surface within {:.3g} m: "
+                                          "its light reaches almost nothing",
+                                          g.where, toString(c), near));
+                break;  // one line per object
+            }
+        }
+    }
+    if (scene.camera) {
+        const auto& cam = *scene.camera;
+        Probe p = prober.probe(cam.position, Vec3(0.0), near);
+        if (enclosed(p))
+            out.push_back(fmt::format("/camera: the camera at {} is inside a closed solid ({} of {} rays hit the "
+                                      "inside of surfaces): the image will show only those",
+                                      toString(cam.position), p.backFaces, p.rays));
+        // What the view itself shows: rays through a grid of image points.
+        raytrace::PinholeCamera camera(cam);
+        int rays = 0, mirrorBacks = 0, misses = 0;
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 8; ++x) {
+                Vec3 d = camera.direction((x + 0.5) * cam.width / 8.0, (y + 0.5) * cam.height / 8.0);
+                raytrace::Hit h = embree.intersect(camera.position(), d, 0.0, std::numeric_limits<double>::infinity());
+                ++rays;
+                if (!h.found) {
+                    ++misses;
+                    continue;
+                }
+                if (h.specular && !embree.specular(h.patch).glass && glm::dot(embree.specular(h.patch).normal, d) > 0)
+                    ++mirrorBacks;
+            }
+        if (mirrorBacks >= rays / 2)
+            out.push_back(fmt::format("/camera: the camera at {} looks at the back of a mirror ({} of {} view rays): "
+                                      "a mirror's back is black, so the image will be mostly black",
+                                      toString(cam.position), mirrorBacks, rays));
+        if (misses == rays)
+            out.push_back(fmt::format("/camera: the camera at {} sees no surface at all", toString(cam.position)));
+    }
+    for (const auto& s : scene.sensors) {
+        // As the gather sees it: on a surface's rim, from just inside the sensor's patch.
+        Vec3 x = s.position;
+        if (auto at = radiosity::locateOnMesh(mesh, x, s.normal, 1e-6 * diagonal))
+            if (radiosity::onSurfaceBoundary(mesh, *at, 1e-5 * diagonal))
+                x = radiosity::nudgeInside(mesh, at->patch, x, 1e-6 * diagonal);
+        Probe p = prober.probe(x, s.normal, near);
+        if (p.fraction(p.mirrorBacks) >= 0.5)
+            out.push_back(fmt::format("/sensors: sensor \"{}\" at {} is behind a mirror ({} of {} hemisphere rays "
+                                      "hit its back): it will read about 0",
+                                      s.name, toString(s.position), p.mirrorBacks, p.rays));
+        else if (p.coveredFraction() >= kEnclosedFraction)
+            out.push_back(fmt::format("/sensors: sensor \"{}\" at {} is buried: {:.0f} % of its view (cosine-weighted) "
+                                      "meets a surface within {:.3g} m, so it will read about 0 (check its position "
+                                      "and normal)",
+                                      s.name, toString(s.position), 100 * p.coveredFraction(), near));
+        else if (enclosed(p))
+            out.push_back(fmt::format("/sensors: sensor \"{}\" at {} is inside a solid ({} of {} hemisphere rays hit "
+                                      "the inside of surfaces): it will read about 0",
+                                      s.name, toString(s.position), p.backFaces, p.rays));
+    }
+    for (const auto& m : scene.mirrors) {
+        Vec3 c(0.0);
+        double size = 0;
+        for (const auto& x : m.polygon) c += x;
+        c /= static_cast<double>(m.polygon.size());
+        for (const auto& x : m.polygon) size = std::max(size, 2 * glm::length(x - c));
+        // Facing a surface closer than a quarter of its own size (a wall behind it) counts as facing nothing.
+        Probe p = prober.probe(c, m.normal, 0.25 * size);
+        if (p.fraction(p.backFaces + p.misses) >= kEnclosedFraction || p.fraction(p.nearHits) >= kEnclosedFraction)
+            out.push_back(fmt::format("{}: the mirror at {} faces nothing it could reflect (its front sees the back of "
+                                      "surfaces, the void, or a surface within {:.3g} m): is it wound backwards?",
+                                      m.where, toString(c), 0.25 * size));
+    }
+    return out;
+}
+
+}  // namespace rayrad::app

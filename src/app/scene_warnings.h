@@ -1,0 +1,24 @@
+// Warnings for scenes that are probably wrong: lights, cameras and sensors buried in
+// solids or behind mirrors, mirrors that face nothing. One line each, before any work.
+#pragma once
+
+#include <radiosity/patch_mesh.h>
+#include <raytrace/embree_scene.h>
+#include <scene/scene.h>
+
+#include <string>
+#include <vector>
+
+namespace rayrad::app {
+
+/// Casts a few dozen rays from each light, the camera, each sensor and each mirror and
+/// says, one line each, what looks wrong:
+///  - a point light, area light, camera or sensor inside a closed solid (its rays hit
+///    the inside of surfaces), or a camera that looks at the back of a mirror;
+///  - a sensor that is buried (its hemisphere covered within a few millimetres: it
+///    will read about 0) or behind a mirror;
+///  - a mirror whose front faces nothing (wound backwards, or against a wall).
+std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                                       const raytrace::EmbreeScene& embree);
+
+}  // namespace rayrad::app
