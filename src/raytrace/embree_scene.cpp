@@ -22,6 +22,15 @@ void onEmbreeError(void* user, RTCError code, const char* message) {
         *first = "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "");
 }
 
+/// The context of every intersect() query: whether back faces of patches are passed.
+struct QueryContext {
+    RTCIntersectContext base;  ///< first member: Embree hands this pointer to the filter
+    bool frontOnly = false;
+};
+
+/// Intersection filter on the patches: in a front-only query a ray passes back faces.
+void frontFacesOnly(const RTCFilterFunctionNArguments* args);
+
 }  // namespace
 
 struct EmbreeScene::Impl {
@@ -32,6 +41,7 @@ struct EmbreeScene::Impl {
     unsigned mirrorGeometry = RTC_INVALID_GEOMETRY_ID;
     unsigned glassGeometry = RTC_INVALID_GEOMETRY_ID;
     std::vector<uint32_t> mirrorIndex, glassIndex;  ///< primitive → specular triangle
+    std::vector<Vec3> normals;  ///< per patch, its front normal (for the front-only filter)
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
@@ -41,6 +51,20 @@ struct EmbreeScene::Impl {
 namespace {
 constexpr unsigned kOpaqueMask = 1u;  ///< patches and mirrors: block visibility
 constexpr unsigned kGlassMask = 2u;   ///< glass: only primary and secondary rays see it
+}  // namespace
+
+namespace {
+void frontFacesOnly(const RTCFilterFunctionNArguments* args) {
+    if (!reinterpret_cast<const QueryContext*>(args->context)->frontOnly) return;
+    const auto* impl = static_cast<const EmbreeScene::Impl*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                       RTCRayN_dir_z(args->ray, args->N, i));
+        if (glm::dot(dir, impl->normals[prim]) > 0) args->valid[i] = 0;  // a back face: look on
+    }
+}
 }  // namespace
 
 std::vector<SpecularTriangle> specularTriangles(const scene::Scene& scene) {
@@ -93,6 +117,13 @@ EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const
     std::vector<std::array<uint32_t, 3>> patchTriangles;
     for (const auto& p : mesh.patches) patchTriangles.push_back({p.v[0], p.v[1], p.v[2]});
     if (!patchTriangles.empty()) m_impl->patchGeometry = addTriangles(mesh.vertices, patchTriangles, kOpaqueMask);
+    if (!patchTriangles.empty()) {
+        for (const auto& p : mesh.patches) m_impl->normals.push_back(p.normal);
+        RTCGeometry geom = rtcGetGeometry(m_impl->scene, m_impl->patchGeometry);
+        rtcSetGeometryUserData(geom, m_impl.get());
+        rtcSetGeometryIntersectFilterFunction(geom, frontFacesOnly);
+        rtcCommitGeometry(geom);
+    }
     for (bool glass : {false, true}) {
         std::vector<Vec3> vertices;
         std::vector<std::array<uint32_t, 3>> triangles;
@@ -145,9 +176,10 @@ bool EmbreeScene::occluded(const Vec3& from, const Vec3& to, double startShrink)
     return ray.tfar < 0;  // an occluder sets tfar to -inf
 }
 
-Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar, bool frontOnly) const {
+    QueryContext query;
+    rtcInitIntersectContext(&query.base);
+    query.frontOnly = frontOnly;
     RTCRayHit rh{};
     rh.ray.org_x = static_cast<float>(origin.x);
     rh.ray.org_y = static_cast<float>(origin.y);
@@ -159,7 +191,7 @@ Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, do
     rh.ray.tfar = std::isfinite(tfar) ? static_cast<float>(tfar) : std::numeric_limits<float>::infinity();
     rh.ray.mask = 0xFFFFFFFFu;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->scene, &context, &rh);
+    rtcIntersect1(m_impl->scene, &query.base, &rh);
     Hit h;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
     h.found = true;

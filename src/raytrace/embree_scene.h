@@ -47,15 +47,17 @@ class EmbreeScene : public Visibility {
     bool visible(const Vec3& from, const Vec3& to) const override;
     bool visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to) const override;
     /// Nearest hit along origin + t·dir for t in (tnear, tfar); dir need not be unit.
-    Hit intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar) const;
+    /// `frontOnly`: patches' back faces are passed (to find a coincident front face).
+    Hit intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar, bool frontOnly = false) const;
     double epsilon() const { return m_epsilon; }
     const SpecularTriangle& specular(uint32_t i) const { return m_specular[i]; }
+
+    struct Impl;
 
   private:
     /// Is the segment blocked, shrunk by `startShrink` at `from` and by the epsilon at `to`?
     bool occluded(const Vec3& from, const Vec3& to, double startShrink) const;
 
-    struct Impl;
     std::unique_ptr<Impl> m_impl;
     double m_epsilon;
     std::vector<SpecularTriangle> m_specular;

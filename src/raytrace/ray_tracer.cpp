@@ -61,8 +61,15 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
         }
         return L;
     }
+    if (glm::dot(mesh.patches[h.patch].normal, dir) >= 0) {
+        // A back face. Surfaces are one-sided (black behind), unless another surface's
+        // front coincides with it: back-to-back quads, a two-sided surface's two sides.
+        const double window = 4 * embree.epsilon() / glm::length(dir);
+        Hit front = embree.intersect(origin, dir, h.t - window, h.t + window, /*frontOnly=*/true);
+        if (!front.found || front.specular) return Rgb(0.0);
+        h = front;
+    }
     const radiosity::Patch& p = mesh.patches[h.patch];
-    if (glm::dot(p.normal, dir) >= 0) return Rgb(0.0);  // back face: surfaces are one-sided
     const scene::Material& m = scene.materials[p.material];
     // Recompute the hit point in double from the barycentrics (more precise than o + t d).
     Vec3 x = mesh.pointAt(p, h.u, h.v);

@@ -22,6 +22,9 @@ struct Material {
     Rgb emission{0.0};      ///< emitted luminance per channel, cd/m² (front side only)
     Rgb specular{0.0};      ///< mirror: Ks per channel, in [0, 1]
     double ior = 1.5;       ///< glass: index of refraction
+    /// One side of a two-sided diffuse surface: the builder adds the back as a coincident
+    /// reversed surface (the ray tracer shows whichever side's front faces the ray).
+    bool twoSided = false;
     bool isEmissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     bool isDiffuse() const { return kind == SurfaceKind::Diffuse; }
 };

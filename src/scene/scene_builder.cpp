@@ -120,11 +120,13 @@ class Builder {
             mat.reflectance = m.reflectance;
             mat.specular = m.specular;
             mat.ior = m.ior;
+            mat.twoSided = m.twoSided;
             if (m.emissive && m.luminance > 0) mat.emission = m.color / luminance(m.color) * m.luminance;
             s.materials.push_back(mat);
         }
         for (const auto& o : m_desc.objects)
             addObject(s, o, o.material.empty() ? -1 : materialIndex.at(o.material));
+        addBackSides(s);
         collectMirrors(s);
         resolveFluxes(s);
         for (const auto& l : m_desc.lights) s.lights.push_back(makeLight(l));
@@ -307,6 +309,31 @@ class Builder {
         g.material = material;
         g.where = where;
         s.groups.push_back(std::move(g));
+    }
+
+    /// Two-sided diffuse surfaces: the back is a coincident surface wound the other way,
+    /// with the back reflectance (a material "<name> (back)"). To the radiosity they are
+    /// two back-to-back surfaces, which never exchange light through each other.
+    void addBackSides(Scene& s) const {
+        std::map<int, int> backOf;  // front material → back material
+        const size_t groups = s.groups.size();
+        for (size_t gi = 0; gi < groups; ++gi) {
+            const int m = s.groups[gi].material;
+            if (!s.materials[m].twoSided) continue;
+            if (!backOf.count(m)) {
+                Material back = s.materials[m];
+                back.name += " (back)";
+                const auto& desc = m_desc.materials[static_cast<size_t>(m)];
+                if (desc.backReflectance) back.reflectance = *desc.backReflectance;
+                backOf[m] = static_cast<int>(s.materials.size());
+                s.materials.push_back(back);
+            }
+            SurfaceGroup back = s.groups[gi];
+            for (auto& poly : back.polygons) std::reverse(poly.begin(), poly.end());
+            back.material = backOf[m];
+            back.where += " (back side)";
+            s.groups.push_back(std::move(back));
+        }
     }
 
     /// Every polygon of every mirror surface becomes a Mirror (its plane and outline).

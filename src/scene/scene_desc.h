@@ -27,6 +27,8 @@ struct MaterialDesc {
     Rgb color{1.0};                  ///< emission colour (scaled to the given luminance)
     double luminance = 0.0;          ///< emitted luminance Y in cd/m² (if given)
     double flux = 0.0;               ///< total emitted flux in lm (if given instead)
+    bool twoSided = false;           ///< diffuse: both sides reflect (else the back is black)
+    std::optional<Rgb> backReflectance;  ///< two-sided: the back's reflectance (default: the front's)
 };
 
 enum class ObjectKind { Quad, Polygon, Box, Sphere, Mesh };

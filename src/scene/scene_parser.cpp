@@ -81,6 +81,12 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name) {
         return d;
     }
     d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/false).value_or(Rgb(0.0));
+    if (type == "diffuse") {
+        d.twoSided = m.boolean("two_sided").value_or(false);
+        d.backReflectance = m.rgb("back_reflectance", 0.0, 1.0, /*hiInclusive=*/false);
+        if (d.backReflectance && !d.twoSided)
+            m.error("back_reflectance", "a back reflectance needs \"two_sided\": true");
+    }
     if (type == "emissive") {
         d.emissive = true;
         d.color = m.rgb("color", 0.0, 1e30, true).value_or(Rgb(1.0));
