@@ -119,6 +119,17 @@ printf 'v 0 0 0\n' > "$work/unreadable.obj"; chmod 000 "$work/unreadable.obj"
 if [ "$(id -u)" -ne 0 ]; then
     cat_case unreadable_mesh "/objects/0/file" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"unreadable.obj\", \"material\": \"white\"}], $good_light}"
 fi
+cat_case back_without_two_sided "/materials/white/back_reflectance" "{\"materials\": {\"white\": {\"reflectance\": 0.5, \"back_reflectance\": 0.2}}, $good_box, $good_light}"
+cat_case bad_max_seconds "/radiosity/max_seconds" "{$good_materials, $good_box, $good_light, \"radiosity\": {\"max_seconds\": -1}}"
+# Meshes: a PLY without materials needs one; broken and hostile PLY files name the problem.
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$work/tri.ply"
+cat_case mesh_without_material "/objects/0/material" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"tri.ply\"}], $good_light}"
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\nxyz' > "$work/huge.ply"
+scene ply_huge_count "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"huge.ply\", \"material\": \"white\"}], $good_light}"
+expect "PLY claiming 4e9 vertices" "huge.ply': element 'vertex' claims 4000000000 records, more than the 3 bytes left" -- solve "$work/ply_huge_count.json"
+{ printf 'ply\nformat binary_little_endian 1.0\n'; head -c 600 /dev/zero | tr '\0' '\377'; } > "$work/garbage.ply"
+scene ply_garbage "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"garbage.ply\", \"material\": \"white\"}], $good_light}"
+expect "PLY with garbage after its header" "ply_garbage.json: /objects/0/file: mesh '$work/garbage.ply': header line 3" -- solve "$work/ply_garbage.json"
 mkdir -p "$work/adir.json"
 expect "scene is a directory" "adir.json" -- solve "$work/adir.json"
 
