@@ -209,7 +209,7 @@ int runInfo(const CommonArgs& a) {
                    scene.warnings.droppedMeshFaces);
     if (scene.warnings.clampedFileReflectances > 0)
         fmt::print("warning: {} mesh-file materials had a reflectance above {} and were clamped to it\n",
-                   scene.warnings.clampedFileReflectances, 0.95);
+                   scene.warnings.clampedFileReflectances, scene::kMaxFileReflectance);
     fmt::print("stages needed: premesh, direct light{}{}{}\n",
                scene.hasReflectance() ? ", secondary pass" : "",
                scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");

@@ -78,6 +78,9 @@ struct Sensor {
     std::optional<double> refDirect, refIndirect, refTotal;  ///< lx
 };
 
+/// Reflectances read from mesh files are clamped to this (a white of 1 never converges).
+constexpr double kMaxFileReflectance = 0.95;
+
 /// Counts of what the builder dropped, reported as warnings.
 struct BuildWarnings {
     int degeneratePolygons = 0;

@@ -37,9 +37,6 @@ bool Scene::hasReflectance() const {
 
 namespace {
 
-/// Reflectances read from mesh files are clamped to this (a white of 1 never converges).
-constexpr double kMaxFileReflectance = 0.95;
-
 Vec3 transformPoint(const glm::dmat4& m, const Vec3& p) { return Vec3(m * glm::dvec4(p, 1.0)); }
 
 /// A box's six faces, each a quad CCW seen from outside.
