@@ -165,11 +165,11 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
     }
     for (const auto& m : scene.mirrors) {
         Vec3 c(0.0);
-        double size = 0;
         for (const auto& x : m.polygon) c += x;
         c /= static_cast<double>(m.polygon.size());
-        for (const auto& x : m.polygon) size = std::max(size, 2 * glm::length(x - c));
-        // Facing a surface closer than a quarter of its own size (a wall behind it) counts as facing nothing.
+        // Facing a surface closer than a quarter of its own size (a wall behind it) counts
+        // as facing nothing; the size is √area, so a thin strip is not held to its length.
+        const double size = std::sqrt(scene::polygonArea(m.polygon));
         Probe p = prober.probe(c, m.normal, 0.25 * size);
         if (p.fraction(p.backFaces + p.misses) >= kEnclosedFraction || p.fraction(p.nearHits) >= kEnclosedFraction)
             out.push_back(fmt::format("{}: the mirror at {} faces nothing it could reflect (its front sees the back of "
