@@ -161,9 +161,16 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         solveSecondary(run, options);
         run.report.begin("reconstruct vertices");
         radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
-        if (run.scene.solver.edgeGatherLevels > 0)
+        if (run.scene.solver.edgeGatherLevels > 0) {
+            Progress progress("seam vertices", options.quiet);
+            std::mutex m;
             run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
-                                                             *run.embree, run.scene.solver.edgeGatherLevels);
+                                                             *run.embree, run.scene.solver.edgeGatherLevels,
+                                                             [&](double f) {
+                                                                 std::lock_guard<std::mutex> lock(m);
+                                                                 progress.update(f);
+                                                             });
+        }
     } else {
         // Nothing reflects: the solution is complete with no indirect light at all.
         run.solution.indirect.assign(run.mesh.patches.size(), Rgb(0.0));

@@ -4,6 +4,7 @@
 #include <radiosity/gather.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <unordered_map>
@@ -28,7 +29,8 @@ double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
 }  // namespace
 
 size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                          RadiositySolution& solution, const Visibility& vis, int levels) {
+                          RadiositySolution& solution, const Visibility& vis, int levels,
+                          const std::function<void(double)>& onProgress) {
     // One patch per vertex gives its surface (normal, group; vertices are per group) and
     // the side the gather point moves to: the brightest patch around the vertex, so a
     // floor vertex at the foot of a box gathers on the lit side, not under the box.
@@ -102,12 +104,16 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
         auto it = slot.find(v);
         return it != slot.end() ? previous[it->second] : solution.vertexIndirect[v];
     };
+    std::atomic<size_t> done{0};
+    const double total = static_cast<double>(edge.size()) * levels;
     for (int round = 0; round < levels; ++round) {
         tbb::parallel_for(size_t(0), edge.size(), [&](size_t k) {
             size_t v = edge[k];
             const Patch& own = mesh.patches[patchOf[v]];
             current[k] = gatherer.gatherWith(nudgeInside(mesh, patchOf[v], mesh.vertices[v], nudge), own.normal,
                                              &corners, /*parallel=*/false);
+            size_t n = ++done;
+            if (onProgress && n % 16 == 0) onProgress(static_cast<double>(n) / total);
         });
         std::swap(previous, current);
     }

@@ -7,6 +7,8 @@
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
+#include <functional>
+
 namespace rayrad::radiosity {
 
 /// Vertices on a concave seam: the vertex lies on an edge of a patch of another surface
@@ -16,7 +18,9 @@ namespace rayrad::radiosity {
 /// the previous round's values at the corners of near patches, as the sensor gather's
 /// levels do). Surfaces that touch without a shared mesh line are not seams: their
 /// vertices keep the reconstruction. Returns the number of vertices refined.
+/// `onProgress` (optional, called from worker threads) gets the fraction done.
 size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                          RadiositySolution& solution, const Visibility& vis, int levels);
+                          RadiositySolution& solution, const Visibility& vis, int levels,
+                          const std::function<void(double)>& onProgress = {});
 
 }  // namespace rayrad::radiosity
