@@ -18,6 +18,9 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             light.normal = scene::polygonNormal(light.vertices);
             light.area = scene::polygonArea(light.vertices);
             light.luminance = mat.emission;
+            for (const auto& v : light.vertices) light.centre += v;
+            light.centre /= static_cast<double>(light.vertices.size());
+            for (const auto& v : light.vertices) light.radius = std::max(light.radius, glm::length(v - light.centre));
             for (const auto& t : scene::triangulate(light.vertices)) {
                 std::array<Vec3, 3> tri{light.vertices[t[0]], light.vertices[t[1]], light.vertices[t[2]]};
                 light.triangles.push_back(tri);
@@ -40,6 +43,7 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
                 if (image.reversesWinding()) std::swap(t[1], t[2]);
             }
             v.normal = glm::normalize(image.direction(a.normal));
+            v.centre = image.point(a.centre);
             v.luminance = a.luminance * image.weight;
             mirrored.push_back(std::move(v));
         }

@@ -20,6 +20,8 @@ struct AreaLight {
     Rgb luminance{0.0};          ///< cd/m² per channel
     std::vector<std::array<Vec3, 3>> triangles;  ///< for sampling
     std::vector<double> triangleAreas;
+    Vec3 centre{0.0};            ///< mean of the vertices
+    double radius = 0;           ///< largest vertex distance from the centre, m
 };
 
 /// Evaluates E_direct(x, n) in lx from every primary light, with shadow rays, and from

@@ -130,19 +130,14 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
                                       const Visibility& vis, int areaSamples, const std::array<Vec3, 4>& points,
                                       const Rgb* values, const std::vector<std::array<double, 2>>& refined) {
     const AreaLight& light = lights.areaSource(s);
-    Vec3 centre(0.0);
-    for (const auto& v : light.vertices) centre += v;
-    centre /= static_cast<double>(light.vertices.size());
-    double radius = 0;
-    for (const auto& v : light.vertices) radius = std::max(radius, glm::length(v - centre));
-    if (glm::length(p.centroid - centre) - radius > kAreaNearDiameters * p.diameter) return std::nullopt;
+    if (glm::length(p.centroid - light.centre) - light.radius > kAreaNearDiameters * p.diameter) return std::nullopt;
 
     double unshadowed[4];
     for (int k = 0; k < 4; ++k) unshadowed[k] = luminance(lights.unshadowedFromAreaSource(s, points[k], p.normal));
     const double rule = fourPointMean(unshadowed[3], unshadowed);
     const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
     const double exact = integrateUnshadowed(lights, s, t, p.normal, rule, kAreaRelTolerance * rule + kAreaAbsTolerance,
-                                             0) / p.area;  // mean F·πL in lx of luminance weight 1
+                                             0) / p.area;  // mean of Y(π L F) over the patch, lx
     if (exact <= 0) return Rgb(0.0);
 
     // Visible fraction: of the four points when each sees all or nothing alike, else sampled.
@@ -162,7 +157,7 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
         }
     }
     // The colour of the light (per channel) with the luminance of the exact mean.
-    const Rgb colour = lights.areaSource(s).luminance / luminance(lights.areaSource(s).luminance);
+    const Rgb colour = light.luminance / luminance(light.luminance);
     if (open <= 0) return colour * exact;  // no sample point sees the light: take it as unshadowed
     return shadowed * (exact / open);
 }

@@ -41,7 +41,9 @@ struct EmbreeScene::Impl {
     unsigned mirrorGeometry = RTC_INVALID_GEOMETRY_ID;
     unsigned glassGeometry = RTC_INVALID_GEOMETRY_ID;
     std::vector<uint32_t> mirrorIndex, glassIndex;  ///< primitive → specular triangle
-    std::vector<Vec3> normals;  ///< per patch, its front normal (for the front-only filter)
+    /// Per patch, its front normal, for the front-only filter (a copy: the mesh may move
+    /// with its owner while this scene lives on the heap).
+    std::vector<Vec3> normals;
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
@@ -145,7 +147,7 @@ EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const
 
 EmbreeScene::~EmbreeScene() = default;
 
-bool EmbreeScene::visible(const Vec3& from, const Vec3& to) const { return occluded(from, to, m_epsilon) == false; }
+bool EmbreeScene::visible(const Vec3& from, const Vec3& to) const { return !occluded(from, to, m_epsilon); }
 
 bool EmbreeScene::visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to) const {
     return !occluded(x + m_epsilon * n, to, 0.0);  // lifted off the surface, not shrunk there

@@ -94,8 +94,9 @@ class MeshBuilder {
 /// accumulated transform. Each mesh's data is checked before it is used.
 class MeshCollector {
   public:
-    MeshCollector(const aiScene& scene, ImportedMesh& out, std::string errorPrefix)
-        : m_scene(scene), m_out(out), m_prefix(std::move(errorPrefix)) {}
+    /// `materialOf`: assimp material index → ImportedMesh::materials index, or −1.
+    MeshCollector(const aiScene& scene, ImportedMesh& out, std::vector<int> materialOf, std::string errorPrefix)
+        : m_scene(scene), m_out(out), m_materialOf(std::move(materialOf)), m_prefix(std::move(errorPrefix)) {}
 
     void visit(const aiNode* node, const aiMatrix4x4& parent, int depth) {
         if (!node) return;
@@ -149,12 +150,9 @@ class MeshCollector {
         }
     }
 
-  public:
-    std::vector<int> m_materialOf;  ///< assimp material index → ImportedMesh::materials index, or −1
-
-  private:
     const aiScene& m_scene;
     ImportedMesh& m_out;
+    std::vector<int> m_materialOf;
     MeshBuilder m_builder{m_out};
     std::string m_prefix;
     std::map<std::string, aiMatrix4x4> m_nodeTransforms;
@@ -219,13 +217,14 @@ ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, c
     if (!s || !s->mRootNode)
         throw InputError(placeMessage(sceneFile, place, "cannot read mesh '" + path + "': " + importer.GetErrorString()));
     ImportedMesh out;
-    MeshCollector collector(*s, out, prefix);
+    std::vector<int> materialOf;
     for (unsigned m = 0; m < s->mNumMaterials && s->mMaterials; ++m) {
         ImportedMaterial mat = s->mMaterials[m] ? readMaterial(s->mMaterials[m]) : ImportedMaterial{};
         bool usable = mat.hasReflectance || mat.emission != Rgb(0.0);
-        collector.m_materialOf.push_back(usable ? static_cast<int>(out.materials.size()) : -1);
+        materialOf.push_back(usable ? static_cast<int>(out.materials.size()) : -1);
         if (usable) out.materials.push_back(std::move(mat));
     }
+    MeshCollector collector(*s, out, std::move(materialOf), prefix);
     collector.visit(s->mRootNode, aiMatrix4x4(), 0);
     for (unsigned l = 0; l < s->mNumLights && s->mLights; ++l) {
         const aiLight* a = s->mLights[l];
