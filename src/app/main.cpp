@@ -81,12 +81,14 @@ void printSolveSummary(const app::PipelineRun& run) {
         fmt::print(stderr, "transfers: {} cluster→cluster, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
                    run.shooting.clusterTransfers, run.shooting.patchPairs, run.shooting.corrections,
                    run.shooting.pushPulls, run.maxIlluminanceStep);
+    std::string alsoAbsorbed;
+    if (!run.scene.mirrors.empty() && run.scene.solver.mirrorImages)
+        alsoAbsorbed += fmt::format(" + {:.6g} lm by mirrors", balance.mirrorAbsorbed);
+    if (balance.backAbsorbed > 0)
+        alsoAbsorbed += fmt::format(" + {:.6g} lm on backs of one-sided surfaces", balance.backAbsorbed);
     fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm{}, unshot {:.6g} lm, not accounted {:+.4f}% "
                        "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
-               balance.emitted, balance.absorbed,
-               run.scene.mirrors.empty() || !run.scene.solver.mirrorImages
-                   ? ""
-                   : fmt::format(" (+ {:.6g} lm by mirrors)", balance.mirrorAbsorbed),
+               balance.emitted, balance.absorbed, alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
                balance.unshot, 100 * balance.relativeError(),
                100 * balance.directError(), 100 * balance.secondaryError());
     const auto& st = run.shooting;

@@ -149,7 +149,12 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.report.begin(run.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
                                                         run.lights->virtualLightCount(), run.mirrorImages)
                                           : std::string("direct light"));
-    radiosity::computeDirect(run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples, run.solution);
+    radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples,
+                             run.solution);
+    if (auto w = backLightWarning(run.scene, run.solution, run.lights->emittedFlux())) {
+        if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, *w);
+        run.warnings.push_back(*w);
+    }
 
     const bool wantGather = options.wantSensors && !run.scene.sensors.empty();
     if (run.scene.hasReflectance() || wantGather) {  // both the shooting and the gather use them
@@ -259,7 +264,7 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) 
     if (run.lights) {
         auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
         j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"absorbed_by_mirrors", b.mirrorAbsorbed},
-                          {"unshot", b.unshot},
+                          {"absorbed_on_backs", b.backAbsorbed}, {"unshot", b.unshot},
                           {"not_accounted_pct", 100 * b.relativeError()}};
     }
     j["stages"] = json::array();

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -177,6 +178,18 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
                                       m.where, toString(c), 0.25 * size));
     }
     return out;
+}
+
+std::optional<std::string> backLightWarning(const scene::Scene& scene,
+                                            const radiosity::RadiositySolution& solution, double emittedFlux) {
+    if (emittedFlux <= 0 || solution.backAbsorbedDirect < kBackLightShare * emittedFlux) return std::nullopt;
+    const auto most = std::max_element(solution.backFlux.begin(), solution.backFlux.end());
+    const auto& g = scene.groups[static_cast<size_t>(most - solution.backFlux.begin())];
+    return fmt::format("{:.3g} % of the direct light falls on the backs of one-sided surfaces and is absorbed there "
+                       "(most, {:.3g} %, on {}, material '{}'): a gap behind a surface, or a surface wound backwards? "
+                       "Close the gap, or make it \"two_sided\"",
+                       100 * solution.backAbsorbedDirect / emittedFlux, 100 * *most / emittedFlux, g.where,
+                       scene.materials[static_cast<size_t>(g.material)].name);
 }
 
 }  // namespace rayrad::app

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <radiosity/patch_mesh.h>
+#include <radiosity/solution.h>
 #include <raytrace/embree_scene.h>
 #include <scene/scene.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,5 +22,14 @@ namespace rayrad::app {
 ///  - a mirror whose front faces nothing (wound backwards, or against a wall).
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
                                        const raytrace::EmbreeScene& embree);
+
+/// Above this share of the emitted flux, light on the backs of one-sided surfaces is
+/// worth a warning.
+constexpr double kBackLightShare = 1e-3;
+
+/// After the direct pass: a warning when more than kBackLightShare of the emitted flux
+/// fell on the backs of one-sided surfaces, naming the surface that took most of it.
+std::optional<std::string> backLightWarning(const scene::Scene& scene,
+                                            const radiosity::RadiositySolution& solution, double emittedFlux);
 
 }  // namespace rayrad::app

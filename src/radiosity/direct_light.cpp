@@ -8,28 +8,44 @@
 
 namespace rayrad::radiosity {
 
+AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance) {
+    AreaLight light;
+    light.vertices = std::move(vertices);
+    light.normal = normal;
+    light.area = scene::polygonArea(light.vertices);
+    light.luminance = luminance;
+    for (const auto& v : light.vertices) light.centre += v;
+    light.centre /= static_cast<double>(light.vertices.size());
+    for (const auto& v : light.vertices) light.radius = std::max(light.radius, glm::length(v - light.centre));
+    // Bounding rectangle: axes along the first edge and across it, in the plane.
+    const Vec3 u = glm::normalize(light.vertices[1] - light.vertices[0]), w = glm::cross(light.normal, u);
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (const auto& v : light.vertices) {
+        const double c[2] = {glm::dot(v - light.centre, u), glm::dot(v - light.centre, w)};
+        for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], c[a]), hi[a] = std::max(hi[a], c[a]);
+    }
+    light.bounds = {light.centre + lo[0] * u + lo[1] * w, light.centre + hi[0] * u + lo[1] * w,
+                    light.centre + hi[0] * u + hi[1] * w, light.centre + lo[0] * u + hi[1] * w};
+    for (const auto& t : scene::triangulate(light.vertices)) {
+        std::array<Vec3, 3> tri{light.vertices[t[0]], light.vertices[t[1]], light.vertices[t[2]]};
+        light.triangles.push_back(tri);
+        light.triangleAreas.push_back(0.5 * glm::length(glm::cross(tri[1] - tri[0], tri[2] - tri[0])));
+    }
+    return light;
+}
+
 DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights) {
     for (const auto& g : scene.groups) {
         const auto& mat = scene.materials[g.material];
         if (!mat.isEmissive()) continue;
         for (const auto& poly : g.polygons) {
-            AreaLight light;
-            for (uint32_t i : poly) light.vertices.push_back(g.positions[i]);
-            light.normal = scene::polygonNormal(light.vertices);
-            light.area = scene::polygonArea(light.vertices);
-            light.luminance = mat.emission;
-            for (const auto& v : light.vertices) light.centre += v;
-            light.centre /= static_cast<double>(light.vertices.size());
-            for (const auto& v : light.vertices) light.radius = std::max(light.radius, glm::length(v - light.centre));
-            for (const auto& t : scene::triangulate(light.vertices)) {
-                std::array<Vec3, 3> tri{light.vertices[t[0]], light.vertices[t[1]], light.vertices[t[2]]};
-                light.triangles.push_back(tri);
-                light.triangleAreas.push_back(0.5 * glm::length(glm::cross(tri[1] - tri[0], tri[2] - tri[0])));
-            }
-            m_areaLights.push_back(std::move(light));
+            std::vector<Vec3> vertices;
+            for (uint32_t i : poly) vertices.push_back(g.positions[i]);
+            m_areaLights.push_back(makeAreaLight(std::move(vertices), scene::polygonNormal(vertices), mat.emission));
         }
     }
     m_mirrors = scene.mirrors;
+    for (const auto& m : m_mirrors) m_convexMirrors &= scene::isConvexAround(m.polygon, m.normal);
     m_images = mirrorImagesFor(scene);
     for (const auto& image : m_images) {
         std::vector<AreaLight> mirrored;
@@ -44,6 +60,7 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             }
             v.normal = glm::normalize(image.direction(a.normal));
             v.centre = image.point(a.centre);
+            for (auto& p : v.bounds) p = image.point(p);
             v.luminance = a.luminance * image.weight;
             mirrored.push_back(std::move(v));
         }
@@ -117,14 +134,64 @@ const AreaLight& DirectLight::areaSource(size_t s) const {
 
 Rgb DirectLight::fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples) const {
     if (s < perChain()) return fromAreaLight(areaSource(s), x, n, vis, samples, nullptr);
-    return fromAreaLight(areaSource(s), x, n, MirrorPath(m_mirrors, m_images[s / perChain() - 1], vis), samples,
-                         nullptr);
+    const size_t i = s / perChain() - 1, k = s % perChain() - m_pointLights.size();
+    return fromAreaImage(i, k, x, n, MirrorPath(m_mirrors, m_images[i], vis), samples, nullptr);
+}
+
+std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, const Vec3& x) const {
+    const AreaLight& light = m_imageAreaLights[i][k];
+    if (!m_convexMirrors) return light;
+    auto part = clipToApertures(m_mirrors, m_images[i], light.vertices, x);
+    if (part.empty()) return std::nullopt;
+    return makeAreaLight(std::move(part), light.normal, light.luminance);
+}
+
+Rgb DirectLight::fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
+                               Random* rng) const {
+    const auto part = visiblePartOfImage(i, k, x);
+    return part ? fromAreaLight(*part, x, n, path, samples, rng) : Rgb(0.0);
 }
 
 Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const {
-    const AreaLight& light = areaSource(s);
-    double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
-    return light.luminance * (kPi * f);  // E = π L F
+    std::optional<AreaLight> part = areaSource(s);
+    if (s >= perChain()) part = visiblePartOfImage(s / perChain() - 1, s % perChain() - m_pointLights.size(), x);
+    if (!part) return Rgb(0.0);
+    double f = formFactorToPolygon(x, n, part->vertices.data(), static_cast<int>(part->vertices.size()), part->normal);
+    return part->luminance * (kPi * f);  // E = π L F
+}
+
+ApertureCover DirectLight::apertureCover(size_t s, const std::array<Vec3, 3>& t) const {
+    if (s < perChain()) return ApertureCover::Whole;
+    const MirrorImage& image = m_images[s / perChain() - 1];
+    std::vector<Vec3> source;  // the source's points, or its bounding rectangle (imaged)
+    if (isPointSource(s)) source = {pointSourcePosition(s)};
+    else source.assign(areaSource(s).bounds.begin(), areaSource(s).bounds.end());
+
+    // None: t behind the last mirror, or outside the plane through one of its edges and
+    // each source point (the plane's side is linear in the source point, so the corners
+    // of the rectangle stand for all of it).
+    const scene::Mirror& last = m_mirrors[image.chain.back()];
+    bool sourceBehind = true, triangleBehind = true;
+    for (const Vec3& y : source) sourceBehind &= last.side(y) < 0;
+    for (const Vec3& x : t) triangleBehind &= last.side(x) <= 0;
+    if (triangleBehind) return ApertureCover::None;
+    if (sourceBehind) {
+        const size_t n = last.polygon.size();
+        for (size_t e = 0; e < n; ++e) {
+            const Vec3& a = last.polygon[e];
+            const Vec3 edge = last.polygon[(e + 1) % n] - a;
+            // det(edge, y − a, x − a) > 0 on the polygon's side of the plane through the
+            // edge and y, for y behind a counter-clockwise polygon (seen from its front).
+            bool allOutside = true;
+            for (const Vec3& y : source)
+                for (const Vec3& x : t) allOutside &= glm::dot(glm::cross(edge, y - a), x - a) < 0;
+            if (allOutside) return ApertureCover::None;
+        }
+    }
+    for (const Vec3& y : source)
+        for (const Vec3& x : t)
+            if (!throughApertures(m_mirrors, image, y, x)) return ApertureCover::Partial;
+    return ApertureCover::Whole;
 }
 
 Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
@@ -144,7 +211,7 @@ Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis
         const size_t chain = (i + 1) * perChain();
         for (size_t k = 0; k < points; ++k) add(chain + k, fromPointImage(m_pointLights[k], m_images[i], path, x, n));
         for (size_t k = 0; k < m_areaLights.size(); ++k)
-            add(chain + points + k, fromAreaLight(m_imageAreaLights[i][k], x, n, path, samples, rng));
+            add(chain + points + k, fromAreaImage(i, k, x, n, path, samples, rng));
     }
     return e;
 }

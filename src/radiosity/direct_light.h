@@ -8,6 +8,8 @@
 #include <radiosity/patch_mesh.h>
 #include <scene/scene.h>
 
+#include <array>
+#include <optional>
 #include <vector>
 
 namespace rayrad::radiosity {
@@ -22,7 +24,17 @@ struct AreaLight {
     std::vector<double> triangleAreas;
     Vec3 centre{0.0};            ///< mean of the vertices
     double radius = 0;           ///< largest vertex distance from the centre, m
+    /// A rectangle in the light's plane that contains it (for conservative tests).
+    std::array<Vec3, 4> bounds;
 };
+
+/// An area light from its outline (CCW seen from its emitting front).
+AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance);
+
+/// How the mirror polygons of a virtual light's chain let it onto a triangle, ignoring
+/// occluders: none of the light reaches any of the triangle, all of it reaches all of
+/// the triangle, or perhaps some of it reaches some of the triangle.
+enum class ApertureCover { None, Whole, Partial };
 
 /// Evaluates E_direct(x, n) in lx from every primary light, with shadow rays, and from
 /// their images in the scene's mirrors (virtual lights: the light mirrored along each
@@ -57,8 +69,18 @@ class DirectLight {
     /// Illuminance (lx) at x, normal n, from area source s alone: π L F · visible fraction
     /// from `samples` shadow rays (through the mirror chain for an image).
     Rgb fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples) const;
-    /// The same without shadows or mirror apertures: π L F, F the analytic form factor.
+    /// The same without shadows: π L F, F the analytic form factor (to the part of an
+    /// image that x sees through the mirror polygons).
     Rgb unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const;
+    /// Whole when source s is a real light, or when every point of the source (for an
+    /// area light, every corner of its bounding rectangle) sees every corner of triangle
+    /// t through its mirror chain: the set of such pairs is convex in each end, so then
+    /// every point of the light sees every point of t. None when t lies behind the
+    /// chain's last mirror, or beyond the plane through one of its edges and every point
+    /// of the source (outside every cone from the source through the mirror). Else
+    /// Partial: the rim of the light reflected in a mirror may cross t, and four sample
+    /// points cannot say how much of t it lights.
+    ApertureCover apertureCover(size_t s, const std::array<Vec3, 3>& t) const;
 
     const std::vector<AreaLight>& areaLights() const { return m_areaLights; }
     const std::vector<scene::PointLight>& pointLights() const { return m_pointLights; }
@@ -73,10 +95,17 @@ class DirectLight {
                               const Vec3& x, const Vec3& n);
     Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
                       Random* rng) const;
+    /// Area light k's image i: the part of it x sees through the chain's mirror polygons
+    /// (exact for convex mirrors, so the rim of a reflected light is not left to shadow
+    /// rays), with its shadow rays through the chain.
+    Rgb fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
+                      Random* rng) const;
+    std::optional<AreaLight> visiblePartOfImage(size_t i, size_t k, const Vec3& x) const;
 
     std::vector<scene::PointLight> m_pointLights;
     std::vector<AreaLight> m_areaLights;
     std::vector<scene::Mirror> m_mirrors;
+    bool m_convexMirrors = true;  ///< every mirror polygon convex: images are clipped exactly
     std::vector<MirrorImage> m_images;
     /// m_imageAreaLights[i][k]: area light k mirrored along image i, luminance × Π Ks.
     std::vector<std::vector<AreaLight>> m_imageAreaLights;

@@ -2,6 +2,7 @@
 
 #include <radiosity/form_factor.h>
 #include <radiosity/light_value.h>
+#include <radiosity/mesher.h>
 
 #include <tbb/parallel_for.h>
 
@@ -54,12 +55,13 @@ std::array<Vec3, 4> evaluationPoints(const PatchMesh& mesh, const Patch& p) {
 /// solid angle the patch subtends): the rule's value is rescaled by (Ω / A) / rule(h / d³),
 /// so a source that sees the whole patch delivers exactly I Ω. When the four points
 /// disagree (a shadow edge or a spot's rim crosses the patch) the rule is replaced by the
-/// mean over the `refined` points.
-Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const DirectLight& lights, size_t s, const Visibility& vis,
-                    const std::array<Vec3, 4>& points, const Rgb* values, const Rgb& fourPoint,
-                    const std::vector<std::array<double, 2>>& refined) {
+/// mean over the `refined` points; so it is when `refine` is set (a mirror's rim may
+/// cross the patch).
+Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights, size_t s,
+                    const Visibility& vis, const std::array<Vec3, 4>& points, const Rgb* values, const Rgb& fourPoint,
+                    const std::vector<std::array<double, 2>>& refined, bool refine) {
     const Vec3 source = lights.pointSourcePosition(s);
-    const double h = glm::dot(p.normal, source - p.centroid);  // m
+    const double h = glm::dot(normal, source - p.centroid);  // m
     if (h <= 0) return fourPoint;
     auto kernel = [&](const Vec3& x) {
         double d = glm::length(source - x);
@@ -69,7 +71,7 @@ Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const DirectLight& li
     double ruleKernel = 0;
     int lit = 0;
     for (int k = 0; k < 4; ++k) lit += values[k] != Rgb(0.0);
-    if (lit == 4) {
+    if (lit == 4 && !refine) {
         double kernels[4];
         for (int k = 0; k < 4; ++k) kernels[k] = kernel(points[k]);
         ruleKernel = fourPointMean(kernels[3], kernels);
@@ -78,7 +80,7 @@ Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const DirectLight& li
         value = Rgb(0.0);
         for (const auto& uv : refined) {
             Vec3 x = a + uv[0] * ab + uv[1] * ac;
-            value += lights.fromPointSource(s, x, p.normal, vis);
+            value += lights.fromPointSource(s, x, normal, vis);
             ruleKernel += kernel(x);
         }
         value /= static_cast<double>(refined.size());
@@ -125,23 +127,24 @@ double integrateUnshadowed(const DirectLight& lights, size_t s, const std::array
 /// rule misses it: the unshadowed mean is integrated adaptively, so a light that sees
 /// whole patches delivers exactly its flux, and scaled by the visible fraction (shadows,
 /// mirror apertures), taken from the four points or, where they disagree, from the
-/// `refined` points.
-std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, const DirectLight& lights, size_t s,
-                                      const Visibility& vis, int areaSamples, const std::array<Vec3, 4>& points,
-                                      const Rgb* values, const std::vector<std::array<double, 2>>& refined) {
+/// `refined` points (always when `refine` is set: a mirror's rim may cross the patch).
+std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal,
+                                      const DirectLight& lights, size_t s, const Visibility& vis, int areaSamples,
+                                      const std::array<Vec3, 4>& points, const Rgb* values,
+                                      const std::vector<std::array<double, 2>>& refined, bool refine) {
     const AreaLight& light = lights.areaSource(s);
     if (glm::length(p.centroid - light.centre) - light.radius > kAreaNearDiameters * p.diameter) return std::nullopt;
 
     double unshadowed[4];
-    for (int k = 0; k < 4; ++k) unshadowed[k] = luminance(lights.unshadowedFromAreaSource(s, points[k], p.normal));
+    for (int k = 0; k < 4; ++k) unshadowed[k] = luminance(lights.unshadowedFromAreaSource(s, points[k], normal));
     const double rule = fourPointMean(unshadowed[3], unshadowed);
     const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
-    const double exact = integrateUnshadowed(lights, s, t, p.normal, rule, kAreaRelTolerance * rule + kAreaAbsTolerance,
+    const double exact = integrateUnshadowed(lights, s, t, normal, rule, kAreaRelTolerance * rule + kAreaAbsTolerance,
                                              0) / p.area;  // mean of Y(π L F) over the patch, lx
     if (exact <= 0) return Rgb(0.0);
 
     // Visible fraction: of the four points when each sees all or nothing alike, else sampled.
-    bool agree = true;
+    bool agree = !refine;
     for (int k = 0; k < 4; ++k) agree &= std::abs(luminance(values[k]) - unshadowed[k]) <= 1e-9 * unshadowed[k];
     Rgb shadowed(0.0);
     double open = 0;
@@ -152,8 +155,8 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
         const Vec3 a = t[0], ab = t[1] - t[0], ac = t[2] - t[0];
         for (const auto& uv : refined) {
             Vec3 x = a + uv[0] * ab + uv[1] * ac;
-            shadowed += lights.fromAreaSource(s, x, p.normal, vis, areaSamples);
-            open += luminance(lights.unshadowedFromAreaSource(s, x, p.normal));
+            shadowed += lights.fromAreaSource(s, x, normal, vis, areaSamples);
+            open += luminance(lights.unshadowedFromAreaSource(s, x, normal));
         }
     }
     // The colour of the light (per channel) with the luminance of the exact mean.
@@ -162,42 +165,123 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
     return shadowed * (exact / open);
 }
 
+/// True when area source s is equally visible (the same fraction of it) from the four
+/// evaluation points; otherwise a shadow's edge crosses the patch and the 4-point rule
+/// cannot say how much of the patch it darkens.
+bool sameVisibleFraction(const DirectLight& lights, size_t s, const std::array<Vec3, 4>& points, const Vec3& normal,
+                         const Rgb* values) {
+    double lo = 1e300, hi = -1e300;
+    for (int k = 0; k < 4; ++k) {
+        const double open = luminance(lights.unshadowedFromAreaSource(s, points[k], normal));
+        const double fraction = open > 0 ? luminance(values[k]) / open : 1.0;
+        lo = std::min(lo, fraction), hi = std::max(hi, fraction);
+    }
+    return hi - lo <= 1e-9;
+}
+
+/// Mean illuminance (lx) over patch p from area source s over the `refined` points, for
+/// a patch that a shadow's edge or the rim of a mirrored light may cross.
+Rgb refinedAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
+                          size_t s, const Visibility& vis, int areaSamples,
+                          const std::vector<std::array<double, 2>>& refined) {
+    const Vec3 a = mesh.corner(p, 0), ab = mesh.corner(p, 1) - a, ac = mesh.corner(p, 2) - a;
+    Rgb sum(0.0);
+    for (const auto& uv : refined) sum += lights.fromAreaSource(s, a + uv[0] * ab + uv[1] * ac, normal, vis, areaSamples);
+    return sum / static_cast<double>(refined.size());
+}
+
+/// What one side of a patch receives directly: the mean illuminance over it (lx), its
+/// corners' values, and the flux mirrors absorbed on the way (lm per m² of the patch).
+struct SideLight {
+    Rgb mean{0.0};
+    Rgb corner[3];
+    Rgb mirrorLoss{0.0};
+};
+
+/// The direct light on the side of patch p that faces `normal` (p.normal for its front,
+/// −p.normal for its back): the 4-point rule, with each point source's share made exact
+/// and near area lights integrated adaptively.
+SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
+                    const Visibility& vis, int areaSamples, const std::vector<std::array<double, 2>>& refined) {
+    const std::array<Vec3, 4> points = evaluationPoints(mesh, p);
+    thread_local std::vector<Rgb> share[4];  // per source s, its share of E at points[k]
+    Rgb e[4];
+    for (int k = 0; k < 4; ++k) e[k] = lights.illuminance(points[k], normal, vis, areaSamples, nullptr, &share[k]);
+    SideLight out;
+    for (int k = 0; k < 3; ++k) out.corner[k] = e[k];
+    out.mean = fourPointMean(e[3], e);
+    const std::array<Vec3, 3> triangle{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
+    for (size_t s = 0; s < lights.sourceCount(); ++s) {
+        const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
+        const Rgb fourPoint = fourPointMean(values[3], values);
+        // A virtual light's reflected rim may cross the patch between the four points.
+        const ApertureCover cover = lights.apertureCover(s, triangle);
+        const bool partial = cover == ApertureCover::Partial;
+        Rgb sourceMean = fourPoint;
+        if (cover == ApertureCover::None) {
+            sourceMean = Rgb(0.0);
+        } else if (lights.isPointSource(s)) {
+            if (fourPoint == Rgb(0.0) && !partial) continue;
+            sourceMean = pointSourceMean(mesh, p, normal, lights, s, vis, points, values, fourPoint, refined, partial);
+        } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, points, values, refined,
+                                                  partial)) {
+            sourceMean = *near;
+        } else if (partial || !sameVisibleFraction(lights, s, points, normal, values)) {
+            sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined);
+        }
+        out.mean += sourceMean - fourPoint;
+        out.mirrorLoss += mirrorLoss(sourceMean, lights.sourceWeight(s));
+    }
+    return out;
+}
+
 }  // namespace
 
-void computeDirect(const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis, int areaSamples,
-                   RadiositySolution& solution) {
+void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
+                   int areaSamples, RadiositySolution& solution) {
     solution.directMean.assign(mesh.patches.size(), Rgb(0.0));
     solution.directCorner.assign(3 * mesh.patches.size(), Rgb(0.0));
     std::vector<double> mirrorAbsorbed(mesh.patches.size(), 0.0);  // lm, per patch
-    const size_t sources = lights.sourceCount();
+    std::vector<double> backReceived(mesh.patches.size(), 0.0);    // lm, per patch
     const auto refined = shadowSamplePoints(kShadowSamples);
     tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
         const Patch& p = mesh.patches[i];
-        const std::array<Vec3, 4> points = evaluationPoints(mesh, p);
-        thread_local std::vector<Rgb> share[4];  // per source s, its share of E at points[k]
-        Rgb e[4];
-        for (int k = 0; k < 4; ++k) e[k] = lights.illuminance(points[k], p.normal, vis, areaSamples, nullptr, &share[k]);
-        for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = e[k];
-        Rgb mean = fourPointMean(e[3], e);
-        Rgb loss(0.0);
-        for (size_t s = 0; s < sources; ++s) {
-            const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
-            const Rgb fourPoint = fourPointMean(values[3], values);
-            Rgb sourceMean = fourPoint;
-            if (lights.isPointSource(s)) {
-                if (fourPoint == Rgb(0.0)) continue;
-                sourceMean = pointSourceMean(mesh, p, lights, s, vis, points, values, fourPoint, refined);
-            } else if (auto near = nearAreaSourceMean(mesh, p, lights, s, vis, areaSamples, points, values, refined)) {
-                sourceMean = *near;
-            }
-            mean += sourceMean - fourPoint;
-            loss += mirrorLoss(sourceMean, lights.sourceWeight(s));
+        const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined);
+        for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = front.corner[k];
+        solution.directMean[i] = front.mean;
+        mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
+        // The back of a one-sided surface is the inside of a solid: light that still
+        // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
+        // booked. A two-sided surface's back is a patch of its own.
+        if (!scene.materials[p.material].twoSided) {
+            const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined);
+            backReceived[i] = luminance(back.mean) * p.area;
+            mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
         }
-        solution.directMean[i] = mean;
-        mirrorAbsorbed[i] = luminance(loss) * p.area;
     });
+    // Mirrors have no patches (their front passes light on by the image method), but
+    // their backs absorb what reaches them, e.g. through the gap between a mirror and
+    // the wall it hangs on.
+    const PatchMesh mirrorBacks = meshMirrorBacks(scene, scene.meshing);
+    std::vector<double> mirrorBackReceived(mirrorBacks.patches.size(), 0.0);  // lm, per triangle
+    std::vector<double> mirrorBackLoss(mirrorBacks.patches.size(), 0.0);      // lm, per triangle
+    tbb::parallel_for(size_t(0), mirrorBacks.patches.size(), [&](size_t i) {
+        const Patch& p = mirrorBacks.patches[i];
+        const SideLight back = sideLight(mirrorBacks, p, p.normal, lights, vis, areaSamples, refined);
+        mirrorBackReceived[i] = luminance(back.mean) * p.area;
+        mirrorBackLoss[i] = luminance(back.mirrorLoss) * p.area;
+    });
+
+    // Sums in a fixed order (deterministic).
     solution.mirrorAbsorbedDirect = 0;
     for (double f : mirrorAbsorbed) solution.mirrorAbsorbedDirect += f;
+    for (double f : mirrorBackLoss) solution.mirrorAbsorbedDirect += f;
+    solution.backFlux.assign(scene.groups.size(), 0.0);
+    for (size_t i = 0; i < mesh.patches.size(); ++i) solution.backFlux[mesh.patches[i].group] += backReceived[i];
+    for (size_t i = 0; i < mirrorBacks.patches.size(); ++i)
+        solution.backFlux[mirrorBacks.patches[i].group] += mirrorBackReceived[i];
+    solution.backAbsorbedDirect = 0;
+    for (double f : solution.backFlux) solution.backAbsorbedDirect += f;
 }
 
 }  // namespace rayrad::radiosity

@@ -5,6 +5,7 @@
 #include <radiosity/direct_light.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
+#include <scene/scene.h>
 
 namespace rayrad::radiosity {
 
@@ -13,8 +14,10 @@ namespace rayrad::radiosity {
 /// (3/4) E(c) + (1/12) Σ E(v_k) — exact for quadratic variation — with each point
 /// source's share rescaled so that, unshadowed, it is exact (I Ω / A, Ω the solid angle
 /// of the patch). Evaluation points are pulled a hair toward the centroid so shadow rays
-/// from corners do not start inside a neighbouring wall. Deterministic; parallel.
-void computeDirect(const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis, int areaSamples,
-                   RadiositySolution& solution);
+/// from corners do not start inside a neighbouring wall. The backs of one-sided patches
+/// are evaluated the same way and what they receive is booked as absorbed
+/// (solution.backAbsorbedDirect). Deterministic; parallel.
+void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
+                   int areaSamples, RadiositySolution& solution);
 
 }  // namespace rayrad::radiosity

@@ -170,6 +170,21 @@ void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std
     }
 }
 
+/// A group's polygons as triangles (polygons of more than three corners triangulated).
+std::vector<std::array<uint32_t, 3>> groupTriangles(const SurfaceGroup& g) {
+    std::vector<std::array<uint32_t, 3>> tris;
+    for (const auto& poly : g.polygons) {
+        if (poly.size() == 3) {
+            tris.push_back({poly[0], poly[1], poly[2]});
+            continue;
+        }
+        std::vector<Vec3> v;
+        for (uint32_t i : poly) v.push_back(g.positions[i]);
+        for (const auto& t : scene::triangulate(v)) tris.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});
+    }
+    return tris;
+}
+
 }  // namespace
 
 PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options) {
@@ -189,16 +204,7 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
                      tolerance);
             continue;
         }
-        std::vector<std::array<uint32_t, 3>> tris;
-        for (const auto& poly : g.polygons) {
-            if (poly.size() == 3) {
-                tris.push_back({poly[0], poly[1], poly[2]});
-                continue;
-            }
-            std::vector<Vec3> v;
-            for (uint32_t i : poly) v.push_back(g.positions[i]);
-            for (const auto& t : scene::triangulate(v)) tris.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});
-        }
+        const auto tris = groupTriangles(g);
         if (options.premesh) {
             meshTriangles(mesh, g, tris, group, options, edge);
             continue;
@@ -211,6 +217,19 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
             return it->second;
         };
         for (const auto& t : tris) addPatch(mesh, id(t[0]), id(t[1]), id(t[2]), g.material, group);
+    }
+    return mesh;
+}
+
+PatchMesh meshMirrorBacks(const scene::Scene& scene, const scene::MeshingOptions& options) {
+    PatchMesh mesh;
+    const double edge = targetEdge(scene, options);
+    for (size_t gi = 0; gi < scene.groups.size(); ++gi) {
+        const SurfaceGroup& g = scene.groups[gi];
+        if (scene.materials[g.material].kind != scene::SurfaceKind::Mirror) continue;
+        auto tris = groupTriangles(g);
+        for (auto& t : tris) std::swap(t[1], t[2]);  // wound the other way: the normal points out of the back
+        meshTriangles(mesh, g, tris, static_cast<int>(gi), options, edge);
     }
     return mesh;
 }

@@ -13,6 +13,11 @@ namespace rayrad::radiosity {
 /// neighbouring triangles share their edge points (no T-junctions).
 PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options);
 
+/// The backs of the mirrors, as triangles (normals out of the backs) of about the
+/// premesher's size. Mirrors take no part in the radiosity, but light that reaches a
+/// mirror's back is absorbed there and the direct pass books it.
+PatchMesh meshMirrorBacks(const scene::Scene& scene, const scene::MeshingOptions& options);
+
 /// The edge length the mesher aims for (resolves the automatic default).
 double targetEdge(const scene::Scene& scene, const scene::MeshingOptions& options);
 

@@ -2,6 +2,7 @@
 
 #include <scene/polygon.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayrad::radiosity {
@@ -116,28 +117,95 @@ MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& cluster
     return g;
 }
 
-bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving, const Vec3* receiverNormal) const {
+bool throughApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image, const Vec3& imagePoint,
+                      const Vec3& receiver, std::vector<Vec3>* hits) {
     // Walk back from the receiver: the segment toward the current image must cross the
     // chain's last mirror inside its polygon; the crossing becomes the next start, and
     // the image steps back by that reflection.
-    Vec3 from = receiver;
-    Vec3 image = imagePoint;
-    for (size_t k = m_image.chain.size(); k-- > 0;) {
-        const scene::Mirror& m = m_mirrors[m_image.chain[k]];
-        double a = m.side(from), b = m.side(image);
-        if (!(a > 0 && b < 0)) return false;  // light arrives on the mirror's front side only
-        Vec3 hit = from + (a / (a - b)) * (image - from);
+    if (hits) hits->clear();
+    Vec3 from = receiver, to = imagePoint;
+    for (size_t k = image.chain.size(); k-- > 0;) {
+        const scene::Mirror& m = mirrors[image.chain[k]];
+        double a = m.side(from), b = m.side(to);
+        // Light arrives on the mirror's front side only, and never at a point in the
+        // mirror's own plane (within rounding of it: a point on the mirror itself, or
+        // on a surface flush with it, would otherwise see its own reflection at distance 0).
+        const double rounding = 1e-12 * std::max(glm::length(from), glm::length(to - from));
+        if (!(a > rounding && b < -rounding)) return false;
+        Vec3 hit = from + (a / (a - b)) * (to - from);
         if (!scene::polygonContains(m.polygon, m.normal, hit)) return false;
-        bool open = receiverNormal && from == receiver ? m_scene.visibleFromSurface(from, *receiverNormal, hit)
-                                                       : m_scene.visible(from, hit);
-        if (!open) return false;
+        if (hits) hits->push_back(hit);
         from = hit;
-        image = m.reflectPoint(image);
+        to = m.reflectPoint(to);
     }
-    bool open = receiverNormal && from == receiver ? m_scene.visibleFromSurface(from, *receiverNormal, image)
-                                                   : m_scene.visible(from, image);
-    if (!open) return false;  // the first leg, from the real source
-    if (leaving) *leaving = glm::normalize(from - image);
+    return true;
+}
+
+namespace {
+
+/// Sutherland–Hodgman: the part of polygon `poly` where m·(p − a) ≥ 0.
+std::vector<Vec3> clipToHalfSpace(const std::vector<Vec3>& poly, const Vec3& m, const Vec3& a) {
+    std::vector<Vec3> out;
+    const size_t n = poly.size();
+    for (size_t i = 0; i < n; ++i) {
+        const Vec3 &p = poly[i], &q = poly[(i + 1) % n];
+        const double dp = glm::dot(m, p - a), dq = glm::dot(m, q - a);
+        if (dp >= 0) out.push_back(p);
+        if ((dp >= 0) != (dq >= 0)) out.push_back(p + (dp / (dp - dq)) * (q - p));
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<Vec3> clipToApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image,
+                                  std::vector<Vec3> source, const Vec3& x) {
+    // Mirror chain[k] as x sees it: reflected in every later mirror of the chain,
+    // T = R_{n−1} ∘ … ∘ R_{k+1}.
+    glm::dmat4 unfold(1.0);
+    for (size_t k = image.chain.size(); k-- > 0 && source.size() >= 3;) {
+        const scene::Mirror& m = mirrors[image.chain[k]];
+        std::vector<Vec3> aperture;
+        Vec3 centre(0.0);
+        for (const Vec3& v : m.polygon) {
+            aperture.push_back(Vec3(unfold * glm::dvec4(v, 1.0)));
+            centre += aperture.back();
+        }
+        centre /= static_cast<double>(aperture.size());
+        // Behind the (unfolded) mirror, seen from x.
+        const Vec3 normal = glm::normalize(Vec3(unfold * glm::dvec4(m.normal, 0.0)));
+        const double xSide = glm::dot(normal, x - centre);
+        if (xSide <= 0) return {};
+        source = clipToHalfSpace(source, -normal, centre);
+        // Inside the cone from x through the aperture: on the aperture's side of the
+        // plane through x and each edge.
+        for (size_t e = 0; e < aperture.size() && source.size() >= 3; ++e) {
+            const Vec3 &a = aperture[e], &b = aperture[(e + 1) % aperture.size()];
+            Vec3 plane = glm::cross(b - a, x - a);
+            if (glm::dot(plane, centre - a) < 0) plane = -plane;
+            source = clipToHalfSpace(source, plane, a);
+        }
+        unfold = unfold * reflection(m);  // the next (earlier) mirror is seen reflected in this one
+    }
+    if (source.size() < 3) return {};
+    return source;
+}
+
+bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving, const Vec3* receiverNormal) const {
+    thread_local std::vector<Vec3> hits;
+    if (!throughApertures(m_mirrors, m_image, imagePoint, receiver, &hits)) return false;
+    // Every real leg must be unoccluded: receiver → first hit → … → the real source.
+    Vec3 from = receiver;
+    Vec3 source = imagePoint;
+    for (size_t k = m_image.chain.size(); k-- > 0;) source = m_mirrors[m_image.chain[k]].reflectPoint(source);
+    hits.push_back(source);
+    for (const Vec3& to : hits) {
+        bool open = receiverNormal && from == receiver ? m_scene.visibleFromSurface(from, *receiverNormal, to)
+                                                       : m_scene.visible(from, to);
+        if (!open) return false;
+        from = to;
+    }
+    if (leaving) *leaving = glm::normalize(hits[hits.size() - 2] - source);  // from the source to the first mirror
     return true;
 }
 

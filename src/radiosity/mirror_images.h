@@ -58,6 +58,22 @@ MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& cluster
 
 class MirrorPath;
 
+/// The part of polygon `source` (in the image's space, behind the chain's last mirror)
+/// that a receiver at x sees through every mirror polygon of the chain, ignoring
+/// occluders: `source` clipped to the cone from x through each mirror (unfolded into the
+/// image's space as x sees it) and to the mirror's back. Empty when x sees none of it.
+/// The mirror polygons must be convex (isConvexAround); the cone of a convex polygon is
+/// the intersection of the half spaces through x and each of its edges.
+std::vector<Vec3> clipToApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image,
+                                  std::vector<Vec3> source, const Vec3& x);
+
+/// The unfolded path from a receiver to an image point through the chain's mirror
+/// polygons, ignoring occluders: false unless the segment toward each successive image
+/// crosses its mirror inside the polygon, from the front. `hits` (if given) gets the
+/// crossing points, last mirror of the chain first.
+bool throughApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image, const Vec3& imagePoint,
+                      const Vec3& receiver, std::vector<Vec3>* hits = nullptr);
+
 /// One image of the scene ready for transfers: the chain, the mirrored patches and
 /// clusters, and visibility through the chain (which refers to `image`, so views are
 /// held by pointer and never move).

@@ -84,6 +84,7 @@ EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, co
         if (!s.unshot.empty()) b.unshot += kPi * luminance(s.unshot[i]) * p.area;
     }
     b.mirrorAbsorbedDirect = s.mirrorAbsorbedDirect;
+    b.backAbsorbed = s.backAbsorbedDirect;
     b.mirrorAbsorbed = s.mirrorAbsorbedDirect + s.mirrorAbsorbedSecondary;
     return b;
 }

@@ -101,20 +101,24 @@ bool isGreyScene(const scene::Scene& scene);
 
 /// Energy accounting in lm: what the lights emit, what surfaces absorbed
 /// Σ (1 − ρ) (Ē_dir + E_ind) A, what is still unshot, and what the direct pass delivered
-/// first, Σ Ē_dir A, and what mirrors absorbed. In a closed scene emitted = absorbed +
-/// mirrors + unshot; the direct pass's share of any difference is its patch-mean
-/// quadrature (or light escaping, or lost beyond the mirror chains' depth), the rest is
-/// the secondary pass's.
+/// first, Σ Ē_dir A, what mirrors absorbed, and what fell on the backs of one-sided
+/// surfaces (absorbed there). In a closed scene emitted = absorbed + mirrors + backs +
+/// unshot; the direct pass's share of any difference is its patch-mean quadrature (or
+/// light escaping, or lost beyond the mirror chains' depth), the rest is the secondary
+/// pass's.
 struct EnergyBalance {
     double emitted = 0, absorbed = 0, unshot = 0, directReceived = 0;
     /// lm absorbed by mirrors (booked by the images that deliver through them), of it in the direct pass.
     double mirrorAbsorbed = 0, mirrorAbsorbedDirect = 0;
-    double relativeError() const { return relative(absorbed + mirrorAbsorbed + unshot - emitted); }
-    double directError() const { return relative(directReceived + mirrorAbsorbedDirect - emitted); }
+    /// lm the direct pass delivered onto backs of one-sided surfaces.
+    double backAbsorbed = 0;
+    double relativeError() const { return relative(absorbed + mirrorAbsorbed + backAbsorbed + unshot - emitted); }
+    double directError() const { return relative(directReceived + mirrorAbsorbedDirect + backAbsorbed - emitted); }
     /// What the secondary pass lost or made.
     double secondaryError() const {
         return relative(absorbed + mirrorAbsorbed + unshot - directReceived - mirrorAbsorbedDirect);
     }
+    double backShare() const { return relative(backAbsorbed); }
 
   private:
     double relative(double flux) const { return emitted > 0 ? flux / emitted : 0.0; }

@@ -27,6 +27,11 @@ struct RadiositySolution {
     /// lm absorbed by mirrors on the way, booked by the source that delivers through
     /// them (delivered · (1/Π Ks − 1)): in the direct pass, and in the secondary pass.
     double mirrorAbsorbedDirect = 0, mirrorAbsorbedSecondary = 0;
+    /// lm the direct pass delivered onto the backs of one-sided surfaces (absorbed there:
+    /// a one-sided surface's back is the inside of a solid, or a modelling error), and
+    /// onto the backs of mirrors; per surface group (scene.groups) and in all.
+    std::vector<double> backFlux;
+    double backAbsorbedDirect = 0;
 
     /// Reflected (non-emitted) luminance of patch i: ρ (E_direct + E_indirect) / π.
     Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const;

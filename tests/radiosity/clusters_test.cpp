@@ -67,7 +67,7 @@ TEST_CASE("push-pull conserves energy", "[clusters]") {
     raytrace::EmbreeScene embree(mesh, 1e-5 * s.diagonal());
     DirectLight lights(s);
     RadiositySolution sol;
-    computeDirect(mesh, lights, embree, 4, sol);
+    computeDirect(s, mesh, lights, embree, 4, sol);
     ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
     solver.initialize(sol);
     for (int k = 0; k < 20; ++k) solver.step(sol);
