@@ -147,32 +147,39 @@ std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, con
 }
 
 Rgb DirectLight::fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
-                               Random* rng) const {
+                               Random* rng, Rgb* open) const {
     const auto part = visiblePartOfImage(i, k, x);
-    return part ? fromAreaLight(*part, x, n, path, samples, rng) : Rgb(0.0);
+    if (part) return fromAreaLight(*part, x, n, path, samples, rng, open);
+    if (open) *open = Rgb(0.0);
+    return Rgb(0.0);
 }
 
 Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const {
-    std::optional<AreaLight> part = areaSource(s);
-    if (s >= perChain()) part = visiblePartOfImage(s / perChain() - 1, s % perChain() - m_pointLights.size(), x);
-    if (!part) return Rgb(0.0);
-    double f = formFactorToPolygon(x, n, part->vertices.data(), static_cast<int>(part->vertices.size()), part->normal);
-    return part->luminance * (kPi * f);  // E = π L F
+    auto open = [&](const AreaLight& light) {
+        double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
+        return light.luminance * (kPi * f);  // E = π L F
+    };
+    if (s < perChain()) return open(areaSource(s));
+    const auto part = visiblePartOfImage(s / perChain() - 1, s % perChain() - m_pointLights.size(), x);
+    return part ? open(*part) : Rgb(0.0);
 }
 
 ApertureCover DirectLight::apertureCover(size_t s, const std::array<Vec3, 3>& t) const {
     if (s < perChain()) return ApertureCover::Whole;
     const MirrorImage& image = m_images[s / perChain() - 1];
-    std::vector<Vec3> source;  // the source's points, or its bounding rectangle (imaged)
-    if (isPointSource(s)) source = {pointSourcePosition(s)};
-    else source.assign(areaSource(s).bounds.begin(), areaSource(s).bounds.end());
+    // The source's point, or the corners of its bounding rectangle (imaged).
+    std::array<Vec3, 4> corners;
+    size_t count = 1;
+    if (isPointSource(s)) corners[0] = pointSourcePosition(s);
+    else corners = areaSource(s).bounds, count = 4;
+    const Vec3* const source = corners.data();
 
     // None: t behind the last mirror, or outside the plane through one of its edges and
     // each source point (the plane's side is linear in the source point, so the corners
     // of the rectangle stand for all of it).
     const scene::Mirror& last = m_mirrors[image.chain.back()];
     bool sourceBehind = true, triangleBehind = true;
-    for (const Vec3& y : source) sourceBehind &= last.side(y) < 0;
+    for (size_t j = 0; j < count; ++j) sourceBehind &= last.side(source[j]) < 0;
     for (const Vec3& x : t) triangleBehind &= last.side(x) <= 0;
     if (triangleBehind) return ApertureCover::None;
     if (sourceBehind) {
@@ -183,21 +190,23 @@ ApertureCover DirectLight::apertureCover(size_t s, const std::array<Vec3, 3>& t)
             // det(edge, y − a, x − a) > 0 on the polygon's side of the plane through the
             // edge and y, for y behind a counter-clockwise polygon (seen from its front).
             bool allOutside = true;
-            for (const Vec3& y : source)
-                for (const Vec3& x : t) allOutside &= glm::dot(glm::cross(edge, y - a), x - a) < 0;
+            for (size_t j = 0; j < count; ++j)
+                for (const Vec3& x : t) allOutside &= glm::dot(glm::cross(edge, source[j] - a), x - a) < 0;
             if (allOutside) return ApertureCover::None;
         }
     }
-    for (const Vec3& y : source)
+    for (size_t j = 0; j < count; ++j)
         for (const Vec3& x : t)
-            if (!throughApertures(m_mirrors, image, y, x)) return ApertureCover::Partial;
+            if (!throughApertures(m_mirrors, image, source[j], x)) return ApertureCover::Partial;
     return ApertureCover::Whole;
 }
 
 Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                             std::vector<Rgb>* perSource) const {
+                             std::vector<Rgb>* perSource, std::vector<Rgb>* perSourceOpen) const {
     const size_t points = m_pointLights.size();
     if (perSource) perSource->assign(sourceCount(), Rgb(0.0));
+    if (perSourceOpen) perSourceOpen->assign(sourceCount(), Rgb(0.0));
+    auto openOf = [&](size_t s) { return perSourceOpen ? &(*perSourceOpen)[s] : nullptr; };
     Rgb e(0.0);
     auto add = [&](size_t s, const Rgb& value) {
         if (perSource) (*perSource)[s] = value;
@@ -205,20 +214,21 @@ Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis
     };
     for (size_t k = 0; k < points; ++k) add(k, fromPointLight(m_pointLights[k], x, n, vis));
     for (size_t k = 0; k < m_areaLights.size(); ++k)
-        add(points + k, fromAreaLight(m_areaLights[k], x, n, vis, samples, rng));
+        add(points + k, fromAreaLight(m_areaLights[k], x, n, vis, samples, rng, openOf(points + k)));
     for (size_t i = 0; i < m_images.size(); ++i) {
         MirrorPath path(m_mirrors, m_images[i], vis);
         const size_t chain = (i + 1) * perChain();
         for (size_t k = 0; k < points; ++k) add(chain + k, fromPointImage(m_pointLights[k], m_images[i], path, x, n));
         for (size_t k = 0; k < m_areaLights.size(); ++k)
-            add(chain + points + k, fromAreaImage(i, k, x, n, path, samples, rng));
+            add(chain + points + k, fromAreaImage(i, k, x, n, path, samples, rng, openOf(chain + points + k)));
     }
     return e;
 }
 
 Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
-                               int samples, Random* rng) const {
+                               int samples, Random* rng, Rgb* open) const {
     double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
+    if (open) *open = light.luminance * (kPi * std::max(0.0, f));
     if (f <= 0) return Rgb(0.0);
     // Visible fraction, weighted by the unoccluded integrand cosθ_x cosθ_y / r².
     double weightSum = 0, visibleSum = 0;

@@ -48,9 +48,11 @@ class DirectLight {
     /// the fraction estimated from `samples` stratified shadow rays per light, weighted by
     /// cosθ_x cosθ_y / r²; `rng` jitters them (nullptr: cell centres, deterministic).
     /// `perSource` (if given, size sourceCount()) also gets each source's share of the
-    /// result.
+    /// result, and `perSourceOpen` (if given) each area source's unshadowed π L F (to the
+    /// part of an image seen through the mirrors; 0 for point sources), from the same
+    /// evaluation.
     Rgb illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                    std::vector<Rgb>* perSource = nullptr) const;
+                    std::vector<Rgb>* perSource = nullptr, std::vector<Rgb>* perSourceOpen = nullptr) const;
 
     /// Sources: for the real scene and then each mirror image, the point lights and then
     /// the area lights: s = chain · (points + areas) + k, chain 0 the real scene.
@@ -93,13 +95,14 @@ class DirectLight {
     static Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis);
     static Rgb fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,
                               const Vec3& x, const Vec3& n);
+    /// `open` (if given) gets the unshadowed value π L F.
     Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
-                      Random* rng) const;
+                      Random* rng, Rgb* open = nullptr) const;
     /// Area light k's image i: the part of it x sees through the chain's mirror polygons
     /// (exact for convex mirrors, so the rim of a reflected light is not left to shadow
     /// rays), with its shadow rays through the chain.
     Rgb fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
-                      Random* rng) const;
+                      Random* rng, Rgb* open = nullptr) const;
     std::optional<AreaLight> visiblePartOfImage(size_t i, size_t k, const Vec3& x) const;
 
     std::vector<scene::PointLight> m_pointLights;

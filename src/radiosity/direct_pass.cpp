@@ -128,15 +128,16 @@ double integrateUnshadowed(const DirectLight& lights, size_t s, const std::array
 /// whole patches delivers exactly its flux, and scaled by the visible fraction (shadows,
 /// mirror apertures), taken from the four points or, where they disagree, from the
 /// `refined` points (always when `refine` is set: a mirror's rim may cross the patch).
+/// `values` and `opens`: the source's shadowed and unshadowed E at the four points.
 std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal,
                                       const DirectLight& lights, size_t s, const Visibility& vis, int areaSamples,
-                                      const std::array<Vec3, 4>& points, const Rgb* values,
+                                      const Rgb* values, const Rgb* opens,
                                       const std::vector<std::array<double, 2>>& refined, bool refine) {
     const AreaLight& light = lights.areaSource(s);
     if (glm::length(p.centroid - light.centre) - light.radius > kAreaNearDiameters * p.diameter) return std::nullopt;
 
     double unshadowed[4];
-    for (int k = 0; k < 4; ++k) unshadowed[k] = luminance(lights.unshadowedFromAreaSource(s, points[k], normal));
+    for (int k = 0; k < 4; ++k) unshadowed[k] = luminance(opens[k]);
     const double rule = fourPointMean(unshadowed[3], unshadowed);
     const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
     const double exact = integrateUnshadowed(lights, s, t, normal, rule, kAreaRelTolerance * rule + kAreaAbsTolerance,
@@ -165,14 +166,14 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
     return shadowed * (exact / open);
 }
 
-/// True when area source s is equally visible (the same fraction of it) from the four
-/// evaluation points; otherwise a shadow's edge crosses the patch and the 4-point rule
-/// cannot say how much of the patch it darkens.
-bool sameVisibleFraction(const DirectLight& lights, size_t s, const std::array<Vec3, 4>& points, const Vec3& normal,
-                         const Rgb* values) {
+/// True when an area source is equally visible (the same fraction of it) from the four
+/// evaluation points, given its shadowed `values` and unshadowed `opens` there;
+/// otherwise a shadow's edge crosses the patch and the 4-point rule cannot say how much
+/// of the patch it darkens.
+bool sameVisibleFraction(const Rgb* values, const Rgb* opens) {
     double lo = 1e300, hi = -1e300;
     for (int k = 0; k < 4; ++k) {
-        const double open = luminance(lights.unshadowedFromAreaSource(s, points[k], normal));
+        const double open = luminance(opens[k]);
         const double fraction = open > 0 ? luminance(values[k]) / open : 1.0;
         lo = std::min(lo, fraction), hi = std::max(hi, fraction);
     }
@@ -205,14 +206,17 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
                     const Visibility& vis, int areaSamples, const std::vector<std::array<double, 2>>& refined) {
     const std::array<Vec3, 4> points = evaluationPoints(mesh, p);
     thread_local std::vector<Rgb> share[4];  // per source s, its share of E at points[k]
+    thread_local std::vector<Rgb> open[4];   // per area source s, its unshadowed π L F at points[k]
     Rgb e[4];
-    for (int k = 0; k < 4; ++k) e[k] = lights.illuminance(points[k], normal, vis, areaSamples, nullptr, &share[k]);
+    for (int k = 0; k < 4; ++k)
+        e[k] = lights.illuminance(points[k], normal, vis, areaSamples, nullptr, &share[k], &open[k]);
     SideLight out;
     for (int k = 0; k < 3; ++k) out.corner[k] = e[k];
     out.mean = fourPointMean(e[3], e);
     const std::array<Vec3, 3> triangle{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
     for (size_t s = 0; s < lights.sourceCount(); ++s) {
         const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
+        const Rgb opens[4] = {open[0][s], open[1][s], open[2][s], open[3][s]};
         const Rgb fourPoint = fourPointMean(values[3], values);
         // A virtual light's reflected rim may cross the patch between the four points.
         const ApertureCover cover = lights.apertureCover(s, triangle);
@@ -223,10 +227,10 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         } else if (lights.isPointSource(s)) {
             if (fourPoint == Rgb(0.0) && !partial) continue;
             sourceMean = pointSourceMean(mesh, p, normal, lights, s, vis, points, values, fourPoint, refined, partial);
-        } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, points, values, refined,
+        } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, refined,
                                                   partial)) {
             sourceMean = *near;
-        } else if (partial || !sameVisibleFraction(lights, s, points, normal, values)) {
+        } else if (partial || !sameVisibleFraction(values, opens)) {
             sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined);
         }
         out.mean += sourceMean - fourPoint;
