@@ -138,6 +138,7 @@ bool throughApertures(const std::vector<scene::Mirror>& mirrors, const MirrorIma
         from = hit;
         to = m.reflectPoint(to);
     }
+    if (hits) hits->push_back(to);  // the real source
     return true;
 }
 
@@ -196,16 +197,13 @@ bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leavi
     if (!throughApertures(m_mirrors, m_image, imagePoint, receiver, &hits)) return false;
     // Every real leg must be unoccluded: receiver → first hit → … → the real source.
     Vec3 from = receiver;
-    Vec3 source = imagePoint;
-    for (size_t k = m_image.chain.size(); k-- > 0;) source = m_mirrors[m_image.chain[k]].reflectPoint(source);
-    hits.push_back(source);
     for (const Vec3& to : hits) {
         bool open = receiverNormal && from == receiver ? m_scene.visibleFromSurface(from, *receiverNormal, to)
                                                        : m_scene.visible(from, to);
         if (!open) return false;
         from = to;
     }
-    if (leaving) *leaving = glm::normalize(hits[hits.size() - 2] - source);  // from the source to the first mirror
+    if (leaving) *leaving = glm::normalize(hits[hits.size() - 2] - hits.back());  // from the source to the first mirror
     return true;
 }
 

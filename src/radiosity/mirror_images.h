@@ -70,7 +70,7 @@ std::vector<Vec3> clipToApertures(const std::vector<scene::Mirror>& mirrors, con
 /// The unfolded path from a receiver to an image point through the chain's mirror
 /// polygons, ignoring occluders: false unless the segment toward each successive image
 /// crosses its mirror inside the polygon, from the front. `hits` (if given) gets the
-/// crossing points, last mirror of the chain first.
+/// crossing points, last mirror of the chain first, then the real source's position.
 bool throughApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image, const Vec3& imagePoint,
                       const Vec3& receiver, std::vector<Vec3>* hits = nullptr);
 
