@@ -1,5 +1,6 @@
 #include <radiosity/direct_light.h>
 
+#include <core/check.h>
 #include <radiosity/form_factor.h>
 #include <scene/polygon.h>
 
@@ -17,15 +18,6 @@ AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rg
     for (const auto& v : light.vertices) light.centre += v;
     light.centre /= static_cast<double>(light.vertices.size());
     for (const auto& v : light.vertices) light.radius = std::max(light.radius, glm::length(v - light.centre));
-    // Bounding rectangle: axes along the first edge and across it, in the plane.
-    const Vec3 u = glm::normalize(light.vertices[1] - light.vertices[0]), w = glm::cross(light.normal, u);
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (const auto& v : light.vertices) {
-        const double c[2] = {glm::dot(v - light.centre, u), glm::dot(v - light.centre, w)};
-        for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], c[a]), hi[a] = std::max(hi[a], c[a]);
-    }
-    light.bounds = {light.centre + lo[0] * u + lo[1] * w, light.centre + hi[0] * u + lo[1] * w,
-                    light.centre + hi[0] * u + hi[1] * w, light.centre + lo[0] * u + hi[1] * w};
     for (const auto& t : scene::triangulate(light.vertices)) {
         std::array<Vec3, 3> tri{light.vertices[t[0]], light.vertices[t[1]], light.vertices[t[2]]};
         light.triangles.push_back(tri);
@@ -60,7 +52,6 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             }
             v.normal = glm::normalize(image.direction(a.normal));
             v.centre = image.point(a.centre);
-            for (auto& p : v.bounds) p = image.point(p);
             v.luminance = a.luminance * image.weight;
             mirrored.push_back(std::move(v));
         }
@@ -140,6 +131,7 @@ Rgb DirectLight::fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Vi
 
 std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, const Vec3& x) const {
     const AreaLight& light = m_imageAreaLights[i][k];
+    if (glm::dot(light.normal, x - light.centre) <= 0) return std::nullopt;  // behind the emitting side
     if (!m_convexMirrors) return light;
     auto part = clipToApertures(m_mirrors, m_images[i], light.vertices, x);
     if (part.empty()) return std::nullopt;
@@ -148,7 +140,10 @@ std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, con
 
 Rgb DirectLight::fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
                                Random* rng, Rgb* open) const {
-    const auto part = visiblePartOfImage(i, k, x);
+    // Nothing of the image in front of the receiver's plane: no light, and no clipping.
+    bool inFront = false;
+    for (const Vec3& v : m_imageAreaLights[i][k].vertices) inFront |= glm::dot(n, v - x) > 0;
+    const auto part = inFront ? visiblePartOfImage(i, k, x) : std::nullopt;
     if (part) return fromAreaLight(*part, x, n, path, samples, rng, open);
     if (open) *open = Rgb(0.0);
     return Rgb(0.0);
@@ -165,24 +160,17 @@ Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n
 }
 
 ApertureCover DirectLight::apertureCover(size_t s, const std::array<Vec3, 3>& t) const {
+    CHECK(isPointSource(s));
     if (s < perChain()) return ApertureCover::Whole;
     const MirrorImage& image = m_images[s / perChain() - 1];
-    // The source's point, or the corners of its bounding rectangle (imaged).
-    std::array<Vec3, 4> corners;
-    size_t count = 1;
-    if (isPointSource(s)) corners[0] = pointSourcePosition(s);
-    else corners = areaSource(s).bounds, count = 4;
-    const Vec3* const source = corners.data();
+    const Vec3 y = pointSourcePosition(s);  // the image, behind the chain's last mirror
 
-    // None: t behind the last mirror, or outside the plane through one of its edges and
-    // each source point (the plane's side is linear in the source point, so the corners
-    // of the rectangle stand for all of it).
+    // None: t behind the last mirror, or outside the plane through one of its edges and y.
     const scene::Mirror& last = m_mirrors[image.chain.back()];
-    bool sourceBehind = true, triangleBehind = true;
-    for (size_t j = 0; j < count; ++j) sourceBehind &= last.side(source[j]) < 0;
+    bool triangleBehind = true;
     for (const Vec3& x : t) triangleBehind &= last.side(x) <= 0;
     if (triangleBehind) return ApertureCover::None;
-    if (sourceBehind) {
+    if (last.side(y) < 0) {
         const size_t n = last.polygon.size();
         for (size_t e = 0; e < n; ++e) {
             const Vec3& a = last.polygon[e];
@@ -190,14 +178,12 @@ ApertureCover DirectLight::apertureCover(size_t s, const std::array<Vec3, 3>& t)
             // det(edge, y − a, x − a) > 0 on the polygon's side of the plane through the
             // edge and y, for y behind a counter-clockwise polygon (seen from its front).
             bool allOutside = true;
-            for (size_t j = 0; j < count; ++j)
-                for (const Vec3& x : t) allOutside &= glm::dot(glm::cross(edge, source[j] - a), x - a) < 0;
+            for (const Vec3& x : t) allOutside &= glm::dot(glm::cross(edge, y - a), x - a) < 0;
             if (allOutside) return ApertureCover::None;
         }
     }
-    for (size_t j = 0; j < count; ++j)
-        for (const Vec3& x : t)
-            if (!throughApertures(m_mirrors, image, source[j], x)) return ApertureCover::Partial;
+    for (const Vec3& x : t)
+        if (!throughApertures(m_mirrors, image, y, x)) return ApertureCover::Partial;
     return ApertureCover::Whole;
 }
 

@@ -24,16 +24,13 @@ struct AreaLight {
     std::vector<double> triangleAreas;
     Vec3 centre{0.0};            ///< mean of the vertices
     double radius = 0;           ///< largest vertex distance from the centre, m
-    /// A rectangle in the light's plane that contains it (for conservative tests).
-    std::array<Vec3, 4> bounds;
 };
 
 /// An area light from its outline (CCW seen from its emitting front).
 AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance);
 
-/// How the mirror polygons of a virtual light's chain let it onto a triangle, ignoring
-/// occluders: none of the light reaches any of the triangle, all of it reaches all of
-/// the triangle, or perhaps some of it reaches some of the triangle.
+/// How the mirror polygons of a virtual point light's chain let it onto a triangle,
+/// ignoring occluders: onto none of it, all of it, or perhaps some of it.
 enum class ApertureCover { None, Whole, Partial };
 
 /// Evaluates E_direct(x, n) in lx from every primary light, with shadow rays, and from
@@ -74,14 +71,12 @@ class DirectLight {
     /// The same without shadows: π L F, F the analytic form factor (to the part of an
     /// image that x sees through the mirror polygons).
     Rgb unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const;
-    /// Whole when source s is a real light, or when every point of the source (for an
-    /// area light, every corner of its bounding rectangle) sees every corner of triangle
-    /// t through its mirror chain: the set of such pairs is convex in each end, so then
-    /// every point of the light sees every point of t. None when t lies behind the
-    /// chain's last mirror, or beyond the plane through one of its edges and every point
-    /// of the source (outside every cone from the source through the mirror). Else
-    /// Partial: the rim of the light reflected in a mirror may cross t, and four sample
-    /// points cannot say how much of t it lights.
+    /// For point source s: Whole when it is a real light, or when its image sees every
+    /// corner of triangle t through its mirror chain (the set of receivers that see it
+    /// is convex, so then all of t does). None when t lies behind the chain's last
+    /// mirror, or beyond the plane through one of its edges and the image. Else Partial:
+    /// the rim of the reflected light may cross t, and four sample points cannot say how
+    /// much of t it lights.
     ApertureCover apertureCover(size_t s, const std::array<Vec3, 3>& t) const;
 
     const std::vector<AreaLight>& areaLights() const { return m_areaLights; }

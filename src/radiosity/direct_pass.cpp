@@ -127,12 +127,12 @@ double integrateUnshadowed(const DirectLight& lights, size_t s, const std::array
 /// rule misses it: the unshadowed mean is integrated adaptively, so a light that sees
 /// whole patches delivers exactly its flux, and scaled by the visible fraction (shadows,
 /// mirror apertures), taken from the four points or, where they disagree, from the
-/// `refined` points (always when `refine` is set: a mirror's rim may cross the patch).
+/// `refined` points.
 /// `values` and `opens`: the source's shadowed and unshadowed E at the four points.
 std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal,
                                       const DirectLight& lights, size_t s, const Visibility& vis, int areaSamples,
                                       const Rgb* values, const Rgb* opens,
-                                      const std::vector<std::array<double, 2>>& refined, bool refine) {
+                                      const std::vector<std::array<double, 2>>& refined) {
     const AreaLight& light = lights.areaSource(s);
     if (glm::length(p.centroid - light.centre) - light.radius > kAreaNearDiameters * p.diameter) return std::nullopt;
 
@@ -145,7 +145,7 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
     if (exact <= 0) return Rgb(0.0);
 
     // Visible fraction: of the four points when each sees all or nothing alike, else sampled.
-    bool agree = !refine;
+    bool agree = true;
     for (int k = 0; k < 4; ++k) agree &= std::abs(luminance(values[k]) - unshadowed[k]) <= 1e-9 * unshadowed[k];
     Rgb shadowed(0.0);
     double open = 0;
@@ -181,7 +181,7 @@ bool sameVisibleFraction(const Rgb* values, const Rgb* opens) {
 }
 
 /// Mean illuminance (lx) over patch p from area source s over the `refined` points, for
-/// a patch that a shadow's edge or the rim of a mirrored light may cross.
+/// a patch that a shadow's edge crosses.
 Rgb refinedAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
                           size_t s, const Visibility& vis, int areaSamples,
                           const std::vector<std::array<double, 2>>& refined) {
@@ -218,19 +218,22 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
         const Rgb opens[4] = {open[0][s], open[1][s], open[2][s], open[3][s]};
         const Rgb fourPoint = fourPointMean(values[3], values);
-        // A virtual light's reflected rim may cross the patch between the four points.
-        const ApertureCover cover = lights.apertureCover(s, triangle);
-        const bool partial = cover == ApertureCover::Partial;
         Rgb sourceMean = fourPoint;
-        if (cover == ApertureCover::None) {
-            sourceMean = Rgb(0.0);
-        } else if (lights.isPointSource(s)) {
-            if (fourPoint == Rgb(0.0) && !partial) continue;
-            sourceMean = pointSourceMean(mesh, p, normal, lights, s, vis, points, values, fourPoint, refined, partial);
-        } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, refined,
-                                                  partial)) {
+        if (lights.isPointSource(s)) {
+            // A virtual point light's reflected rim is sharp and may cross the patch
+            // between the four points. (An area image's rim is in its unshadowed value,
+            // which is clipped to the mirrors exactly, so the rule below follows it.)
+            const ApertureCover cover = lights.apertureCover(s, triangle);
+            if (cover == ApertureCover::None) {
+                sourceMean = Rgb(0.0);
+            } else {
+                const bool partial = cover == ApertureCover::Partial;
+                if (fourPoint == Rgb(0.0) && !partial) continue;
+                sourceMean = pointSourceMean(mesh, p, normal, lights, s, vis, points, values, fourPoint, refined, partial);
+            }
+        } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, refined)) {
             sourceMean = *near;
-        } else if (partial || !sameVisibleFraction(values, opens)) {
+        } else if (!sameVisibleFraction(values, opens)) {
             sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined);
         }
         out.mean += sourceMean - fourPoint;
