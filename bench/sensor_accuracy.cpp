@@ -1,80 +1,39 @@
 // Benchmark: the sensor gather on the paper's cube against an independent Monte Carlo
-// reference (issue 11, item 4). The cube is convex, so a path tracer needs no visibility:
-// from x, cosine-sampled directions hit the walls at y_1, y_2, … and
-//   E_ind(x) = Σ_k ρ^k E_dir(y_k),   E_dir(y) = I cosθ / d²   (the cosine and π cancel),
-// with the first bounce on Roberts' R2 sequence. Prints, per point, the reference (and how
-// far its two independent halves differ), the gathered value and its error, then RMS and
-// max over random wall points and over points 1 mm – 0.3 m from an edge or a corner.
-// Usage: build/bench/sensor_accuracy [max_edge (0.25: 19 200 triangles)] [random points (24)] [paths (200000)]
+// reference (issue 11, item 4; the path tracer is tests/cube_path_tracer.h). Prints the
+// points near an edge and a corner one by one (reference, how far its two independent
+// halves differ, gathered value, error), then RMS and max over random points on all six
+// walls (the ten worst listed), and the time of the solve and the gathers.
+// Usage: build/bench/sensor_accuracy [max_edge (0.25: 19 200 triangles)] [random points (24)]
+//        [paths per half (200000)] [gather_refine_levels (scene default)]
 #include <app/pipeline.h>
 #include <core/random.h>
+
+#include "cube_path_tracer.h"
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <string>
 #include <vector>
 
 using namespace rayrad;
+namespace cube = rayrad::test::cube;
 
 namespace {
 
-constexpr double kSide = 10, kIntensity = 50000, kRho = 2.0 / 3.0;
-const Vec3 kLight(5, 5, 5);
+double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-/// Direct illuminance at wall point y, inward normal n (lx).
-double directAt(const Vec3& y, const Vec3& n) {
-    Vec3 d = kLight - y;
-    double r2 = glm::dot(d, d);
-    return kIntensity * glm::dot(n, d) / std::sqrt(r2) / r2;
-}
-
-/// The wall hit from x (inside) along unit w: point y and inward normal n.
-void hitWall(const Vec3& x, const Vec3& w, Vec3& y, Vec3& n) {
-    double best = 1e300, side = 0;
-    int axis = 0;
-    for (int a = 0; a < 3; ++a) {
-        if (w[a] > 1e-15 && (kSide - x[a]) / w[a] < best) best = (kSide - x[a]) / w[a], axis = a, side = kSide;
-        if (w[a] < -1e-15 && -x[a] / w[a] < best) best = -x[a] / w[a], axis = a, side = 0;
-    }
-    y = x + best * w;
-    y[axis] = side;
-    n = Vec3(0.0);
-    n[axis] = side > 0 ? -1 : 1;
-}
-
-Vec3 cosineDirection(const Vec3& n, double u1, double u2) {
-    Vec3 t = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
-    Vec3 b = glm::cross(n, t);
-    double r = std::sqrt(u1), phi = 2 * kPi * u2;
-    return glm::normalize(r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1 - u1)) * n);
-}
-
-/// E_ind(x) by `paths` random walks; `stream` selects an independent half.
-double reference(const Vec3& x0, const Vec3& n0, int paths, uint64_t stream) {
-    const double g = 1.32471795724474602596;  // R2 sequence for the first bounce
-    Random rng(stream, 11);
-    double sum = 0;
-    for (int p = 0; p < paths; ++p) {
-        Vec3 x = x0, n = n0;
-        double w = 1;
-        for (int k = 0; w > 1e-7; ++k) {
-            double u1 = k == 0 ? std::fmod(0.5 * stream + (p + 1) / g, 1.0) : rng.nextDouble();
-            double u2 = k == 0 ? std::fmod(0.5 * stream + (p + 1) / (g * g), 1.0) : rng.nextDouble();
-            Vec3 y, ny;
-            hitWall(x, cosineDirection(n, u1, u2), y, ny);
-            w *= kRho;
-            sum += w * directAt(y, ny);
-            x = y, n = ny;
-        }
-    }
-    return sum / paths;
-}
+struct Point {
+    Vec3 x, n;
+    std::string kind;
+};
 
 }  // namespace
 
@@ -82,56 +41,89 @@ int main(int argc, char** argv) {
     const double maxEdge = argc > 1 ? std::atof(argv[1]) : 0.25;
     const int randomPoints = argc > 2 ? std::atoi(argv[2]) : 24;
     const int paths = argc > 3 ? std::atoi(argv[3]) : 200000;
-    // Points on the back wall z = 10 (normal −z): random ones, then near an edge and a corner.
-    struct Point {
-        Vec3 x;
-        std::string kind;
-    };
+    const int refineLevels = argc > 4 ? std::atoi(argv[4]) : -1;
+    // Near an edge and a corner of the back wall z = 10 (normal −z), then random points.
     std::vector<Point> points;
-    Random rng(2026, 1);
-    for (int i = 0; i < randomPoints; ++i)
-        points.push_back({Vec3(kSide * rng.nextDouble(), kSide * rng.nextDouble(), kSide), "random"});
     for (double d : {0.001, 0.01, 0.1, 0.3}) {
-        points.push_back({Vec3(4.37, d, kSide), fmt::format("edge {} m", d)});
-        points.push_back({Vec3(d, d, kSide), fmt::format("corner {} m", d)});
+        points.push_back({Vec3(4.37, d, cube::kSide), Vec3(0, 0, -1), fmt::format("edge {} m", d)});
+        points.push_back({Vec3(d, d, cube::kSide), Vec3(0, 0, -1), fmt::format("corner {} m", d)});
+    }
+    const size_t nearCount = points.size();
+    Random rng(2026, 1);
+    for (int i = 0; i < randomPoints; ++i) {
+        int axis = static_cast<int>(rng.nextDouble() * 3) % 3;
+        bool far = rng.nextDouble() < 0.5;
+        Vec3 x(cube::kSide * rng.nextDouble(), cube::kSide * rng.nextDouble(), cube::kSide * rng.nextDouble());
+        Vec3 n(0.0);
+        x[axis] = far ? cube::kSide : 0;
+        n[axis] = far ? -1 : 1;
+        points.push_back({x, n, "random"});
     }
     std::string sensors;
     for (size_t i = 0; i < points.size(); ++i)
-        sensors += fmt::format("{}{{\"name\": \"p{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], \"normal\": [0, 0, -1]}}",
-                               i ? ", " : "", i, points[i].x.x, points[i].x.y, points[i].x.z);
+        sensors += fmt::format("{}{{\"name\": \"p{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], \"normal\": [{}, {}, {}]}}",
+                               i ? ", " : "", i, points[i].x.x, points[i].x.y, points[i].x.z, points[i].n.x,
+                               points[i].n.y, points[i].n.z);
     const std::string path = "/tmp/rayrad_bench_sensor_accuracy.json";
-    std::ofstream(path) << fmt::format(R"({{"materials": {{"wall": {{"reflectance": 0.6666666666666666}}}},
-        "objects": [{{"type": "box", "material": "wall", "min": [0, 0, 0], "max": [10, 10, 10], "facing": "inward"}}],
-        "lights": [{{"type": "point", "position": [5, 5, 5], "intensity_cd": 50000}}],
-        "sensors": [{}], "radiosity": {{"max_edge": {}}}}})",
-                                       sensors, maxEdge);
+    std::ofstream(path) << cube::scene(sensors, maxEdge);
     app::PipelineOptions options;
     options.quiet = true;
+    if (refineLevels >= 0)
+        options.overrides.push_back({"radiosity.gather_refine_levels", std::to_string(refineLevels)});
     auto t0 = std::chrono::steady_clock::now();
+    double c0 = cpuSeconds();
     auto run = app::runPipeline(path, options);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    fmt::print("cube, max_edge {} ({} triangles): solve + {} gathers {:.1f} s wall; reference {} paths per point\n",
-               maxEdge, run.mesh.patches.size(), points.size(), seconds, 2 * paths);
-    fmt::print("{:<14} {:>26} {:>11} {:>9} {:>11} {:>8}\n", "point", "position", "reference", "±halves", "gathered", "error");
-    double sumRandom = 0, maxRandom = 0, sumNear = 0, maxNear = 0;
-    int nNear = 0;
+    double cpu = cpuSeconds() - c0;
+    double gatherSeconds = 0;
+    for (const auto& stage : run.report.stages())
+        if (stage.name.rfind("sensors", 0) == 0) gatherSeconds = stage.seconds;
+    fmt::print("cube, max_edge {} ({} triangles), gather_refine_levels {}: solve + {} gathers {:.1f} s wall, {:.1f} "
+               "CPU-s (gathers {:.1f} s wall); reference 2 x {} paths per point\n",
+               maxEdge, run.mesh.patches.size(), run.scene.solver.gatherRefineLevels, points.size(), seconds, cpu,
+               gatherSeconds, paths);
     // The references, in parallel (each point's two halves have their own streams).
     std::vector<double> halfA(points.size()), halfB(points.size());
     tbb::parallel_for(size_t(0), 2 * points.size(), [&](size_t k) {
         const size_t i = k / 2;
-        (k % 2 ? halfB[i] : halfA[i]) = reference(points[i].x, Vec3(0, 0, -1), paths, k % 2 ? 2 : 1);
+        (k % 2 ? halfB[i] : halfA[i]) = cube::indirectReference(points[i].x, points[i].n, paths, k % 2 ? 2 : 1);
     });
+    struct Row {
+        size_t i;
+        double ref, spread, gathered, err;
+    };
+    std::vector<Row> rows;
     for (size_t i = 0; i < points.size(); ++i) {
-        double a = halfA[i], b = halfB[i];
-        double ref = 0.5 * (a + b), gathered = luminance(run.sensors[i].value.indirect);
-        double err = gathered / ref - 1;
-        fmt::print("{:<14} {:>26} {:>11.2f} {:>8.3f}% {:>11.2f} {:>+7.3f}%\n", points[i].kind, toString(points[i].x), ref,
-                   100 * std::abs(a - b) / ref, gathered, 100 * err);
-        if (points[i].kind == "random") sumRandom += err * err, maxRandom = std::max(maxRandom, std::abs(err));
-        else sumNear += err * err, maxNear = std::max(maxNear, std::abs(err)), ++nNear;
+        double ref = 0.5 * (halfA[i] + halfB[i]), gathered = luminance(run.sensors[i].value.indirect);
+        rows.push_back({i, ref, std::abs(halfA[i] - halfB[i]) / ref, gathered, gathered / ref - 1});
     }
-    fmt::print("random points: RMS {:.3f} %, max {:.3f} %; near edges and corners: RMS {:.3f} %, max {:.3f} %\n",
-               100 * std::sqrt(sumRandom / std::max(1, randomPoints)), 100 * maxRandom,
-               100 * std::sqrt(sumNear / std::max(1, nNear)), 100 * maxNear);
+    auto print = [&](const Row& r) {
+        fmt::print("{:<14} {:>36} {:>11.2f} {:>8.3f}% {:>11.2f} {:>+7.3f}%\n", points[r.i].kind, toString(points[r.i].x),
+                   r.ref, 100 * r.spread, r.gathered, 100 * r.err);
+    };
+    fmt::print("{:<14} {:>36} {:>11} {:>9} {:>11} {:>8}\n", "point", "position", "reference", "±halves", "gathered",
+               "error");
+    double sumNear = 0, maxNear = 0, sumRandom = 0, maxRandom = 0, sumSpread = 0;
+    for (const Row& r : rows) {
+        bool near = r.i < nearCount;
+        (near ? sumNear : sumRandom) += r.err * r.err;
+        double& worst = near ? maxNear : maxRandom;
+        worst = std::max(worst, std::abs(r.err));
+        if (!near) sumSpread += r.spread * r.spread;
+        if (near || randomPoints <= 50) print(r);
+    }
+    if (randomPoints > 50) {
+        std::vector<Row> random(rows.begin() + static_cast<long>(nearCount), rows.end());
+        std::sort(random.begin(), random.end(),
+                  [](const Row& a, const Row& b) { return std::abs(a.err) > std::abs(b.err); });
+        fmt::print("the ten worst random points:\n");
+        for (size_t k = 0; k < 10 && k < random.size(); ++k) print(random[k]);
+    }
+    fmt::print("near edges and corners: RMS {:.3f} %, max {:.3f} %\n", 100 * std::sqrt(sumNear / nearCount),
+               100 * maxNear);
+    if (randomPoints > 0)
+        fmt::print("{} random points: RMS {:.3f} %, max {:.3f} % (reference halves differ by {:.3f} % RMS)\n",
+                   randomPoints, 100 * std::sqrt(sumRandom / randomPoints), 100 * maxRandom,
+                   100 * std::sqrt(sumSpread / randomPoints));
     return 0;
 }

@@ -71,8 +71,9 @@ class PushPullObserver {
         std::optional<radiosity::Gatherer> gatherer;
         if (gather) {
             m_lastGatherFraction = fraction;
-            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
-                             m_run.scene.solver.gatherLevels);
+            const auto& solver = m_run.scene.solver;
+            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree, solver.gatherLevels, 0.0,
+                             12, solver.gatherRefineLevels, solver.gatherRefineTolerance);
         }
         for (const auto& [s, where] : m_sensors) {
             std::optional<double> vertex;
@@ -187,8 +188,10 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
     if (wantGather) {
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
+        const auto& solver = run.scene.solver;
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                                     run.scene.solver.gatherLevels);
+                                     solver.gatherLevels, 0.0, 12, solver.gatherRefineLevels,
+                                     solver.gatherRefineTolerance);
         for (const auto& s : run.scene.sensors)
             run.sensors.push_back({s, radiosity::evaluateSensor(run.scene, run.mesh, run.solution, *run.lights,
                                                                 *run.embree, gatherer, s)});

@@ -19,6 +19,8 @@ constexpr double kNearDiameters = 2.0;
 constexpr double kSplitRatio = 2.0;
 /// A cluster farther than this many of its diameters shares one visibility ray.
 constexpr double kClusterVisibilityDiameters = 2.0;
+/// Near triangles are split at most this deep with gathered midpoints (then linearly).
+constexpr int kRefineDepth = 6;
 }  // namespace
 
 std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance) {
@@ -77,10 +79,10 @@ Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double dist
 
 Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                    const RadiositySolution& solution, const Visibility& vis, int levels, double farClusterDiameters,
-                   int maxSplitDepth)
+                   int maxSplitDepth, int refineLevels, double refineTolerance)
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_levels(levels),
       m_nudge(1e-6 * scene.diagonal()), m_farClusterDiameters(farClusterDiameters),
-      m_maxSplitDepth(maxSplitDepth) {
+      m_maxSplitDepth(maxSplitDepth), m_refineLevels(refineLevels), m_refineTolerance(refineTolerance) {
     for (const auto& c : clustering.clusters) {
         Rgb L(0.0);
         double size = 0, brightestPower = -1;
@@ -110,6 +112,50 @@ Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
     return e;
 }
 
+Gatherer::Midpoint Gatherer::midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level) {
+    // Ids above the mesh's vertex indices.
+    const uint64_t firstId = uint64_t(1) << 32;
+    auto [idAt, added] = m_midpointIds.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
+                                               firstId + m_midpointIds.size());
+    const uint64_t id = idAt->second;
+    auto it = m_midpointMemo.find({id, level});
+    if (it != m_midpointMemo.end()) return {id, it->second};
+    Rgb e = gather(nudgeInside(m_mesh, patch, y, m_nudge), m_mesh.patches[patch].normal, level);
+    m_midpointMemo.emplace(std::make_pair(id, level), e);
+    return {id, e};
+}
+
+void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePoint, 3>& c, int depth,
+                          const MidpointSource* midpoints, std::vector<NearPiece>& pieces) const {
+    const Vec3 &p0 = c[0].p, &p1 = c[1].p, &p2 = c[2].p;
+    double size = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
+    Vec3 centroid = (p0 + p1 + p2) / 3.0;
+    double dist = std::min({glm::length(centroid - x), glm::length(p0 - x), glm::length(p1 - x), glm::length(p2 - x)});
+    if (!midpoints || depth >= kRefineDepth || dist >= kSplitRatio * size) {
+        pieces.push_back({{p0, p1, p2}, {c[0].L, c[1].L, c[2].L}, depth});
+        return;
+    }
+    // Midpoint m[k] of edge (k, k+1): L = ρ (E_dir + E_ind) / π, E_dir interpolated, E_ind gathered.
+    const Rgb& rho = m_scene.materials[m_mesh.patches[patch].material].reflectance;
+    std::array<RefinePoint, 3> m;
+    double worst = 0;  // largest relative difference from the linear interpolation
+    for (int k = 0; k < 3; ++k) {
+        const RefinePoint &a = c[k], &b = c[(k + 1) % 3];
+        const Vec3 y = 0.5 * (a.p + b.p);
+        const Midpoint g = (*midpoints)(patch, a.id, b.id, y);
+        const Rgb E = 0.5 * (a.E + b.E);
+        m[k] = {y, g.id, rho * (E + g.indirect) / kPi, E};
+        double linear = luminance(0.5 * (a.L + b.L));
+        if (linear > 0) worst = std::max(worst, std::abs(luminance(m[k].L) / linear - 1));
+    }
+    // Linear enough here: the pieces go on splitting toward x with interpolated values.
+    const MidpointSource* deeper = worst >= m_refineTolerance ? midpoints : nullptr;
+    refineNear(x, patch, {c[0], m[0], m[2]}, depth + 1, deeper, pieces);
+    refineNear(x, patch, {m[0], c[1], m[1]}, depth + 1, deeper, pieces);
+    refineNear(x, patch, {m[2], m[1], c[2]}, depth + 1, deeper, pieces);
+    refineNear(x, patch, {m[0], m[1], m[2]}, depth + 1, deeper, pieces);
+}
+
 Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
                               int depth) const {
     Vec3 c = (p[0] + p[1] + p[2]) / 3.0;
@@ -133,14 +179,20 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level) {
     if (level <= 0) return gatherWith(x, n, nullptr, true);
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
     CornerSource corners = [&](size_t patch, int corner) { return cornerIndirect(patch, corner, level - 1); };
-    return gatherWith(x, n, &corners, true);
+    if (level <= m_levels - m_refineLevels) return gatherWith(x, n, &corners, true);
+    MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y) {
+        return midpointIndirect(patch, a, b, y, level - 1);
+    };
+    return gatherWith(x, n, &corners, true, &midpoints);
 }
 
-Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel) const {
-    // Near patches get linear luminance from corner values, the rest a patch-constant one.
+Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
+                         const MidpointSource* midpoints) const {
+    // Near patches get linear luminance from corner values (refined toward x with
+    // gathered midpoints when asked), the rest a patch-constant one.
     struct Near {
         uint32_t patch;
-        std::array<Rgb, 3> L;
+        std::vector<NearPiece> pieces;
     };
     std::vector<Near> near;
     std::vector<uint32_t> nearClusters;
@@ -160,10 +212,14 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 if (rho == Rgb(0.0)) continue;
                 Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
                 if (formFactorToPolygon(x, n, v, 3, p.normal) <= 0) continue;
+                std::array<RefinePoint, 3> corners;
+                for (int k = 0; k < 3; ++k) {
+                    const Rgb E = m_solution.directCorner[3 * j + k];
+                    corners[k] = {v[k], p.v[k], rho * (E + (*cornerIndirectOf)(j, k)) / kPi, E};
+                }
                 Near e{j, {}};
-                for (int k = 0; k < 3; ++k)
-                    e.L[k] = rho * (m_solution.directCorner[3 * j + k] + (*cornerIndirectOf)(j, k)) / kPi;
-                near.push_back(e);
+                refineNear(x, j, corners, 0, midpoints, e.pieces);
+                near.push_back(std::move(e));
             }
             if (near.size() > before) nearClusters.push_back(static_cast<uint32_t>(c));
         }
@@ -195,11 +251,11 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         double strongestE = -1;
         for (uint32_t j : C.patches) {
             const Patch& p = mesh.patches[j];
-            Vec3 v[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
             if (hasNear) {
                 auto it = std::find_if(near.begin(), near.end(), [j](const Near& e) { return e.patch == j; });
                 if (it != near.end()) {
-                    sum += integrateLinear(x, n, v, it->L.data(), p.normal, 0);
+                    for (const NearPiece& piece : it->pieces)
+                        sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), p.normal, piece.depth);
                     continue;
                 }
             }

@@ -9,6 +9,8 @@
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -42,6 +44,12 @@ struct SensorValue {
 /// toward x. Corner values are exact direct light plus indirect light gathered at the
 /// corner itself, recursively `levels` deep (memoised), which removes the bias of
 /// patch-constant luminance at edges and corners.
+/// Near patches of the top `refineLevels` gathers are refined further: a linear
+/// luminance misses the indirect light's fall-off into concave edges and corners (a
+/// singular derivative there), so each near triangle is split toward x and its edge
+/// midpoints take exact-direct-interpolated plus *gathered* indirect light, one level
+/// down, wherever the gathered value differs from the interpolated one by more than
+/// `refineTolerance` (relative) — a local graded re-solve around the point.
 /// Mirrors: the patches' images are gathered too (patch-constant luminance × Π Ks,
 /// seen only through the mirror polygons).
 class Gatherer {
@@ -52,9 +60,10 @@ class Gatherer {
     /// `farClusterDiameters` > 0: clusters farther than that many of their diameters
     /// count as one source (their mean reflected luminance, projected area, centroid) —
     /// cheaper, for the many gathers at mesh vertices; 0 keeps every patch (sensors).
+    /// `refineLevels` and `refineTolerance`: see above (0 levels = no refinement).
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
              const RadiositySolution& solution, const Visibility& vis, int levels, double farClusterDiameters = 0,
-             int maxSplitDepth = 12);
+             int maxSplitDepth = 12, int refineLevels = 0, double refineTolerance = 0.002);
 
     /// Indirect illuminance (lx, RGB) at x with unit normal n.
     Rgb indirectAt(const Vec3& x, const Vec3& n) { return gather(x, n, m_levels); }
@@ -64,11 +73,41 @@ class Gatherer {
     /// One gather at x. With `cornerIndirectOf`, near patches get linear luminance from
     /// exact direct light plus these indirect corner values; without, patch-constant.
     /// `parallel` false: a serial sum (for callers that are parallel themselves).
-    Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel) const;
+    /// The point y halfway between points a and b of a near patch (ids: a mesh vertex,
+    /// or an earlier midpoint): its id and its gathered indirect illuminance (lx, RGB).
+    /// Ids, not positions, say which points are the same: the two sides of a contact
+    /// line share positions but not vertices.
+    struct Midpoint {
+        uint64_t id;
+        Rgb indirect;
+    };
+    using MidpointSource = std::function<Midpoint(size_t patch, uint64_t a, uint64_t b, const Vec3& y)>;
+    /// With `midpoints` too, near patches are refined toward x with gathered indirect
+    /// light at their sub-triangles' corners (see the class comment).
+    Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
+                   const MidpointSource* midpoints = nullptr) const;
 
   private:
+    /// A piece of a near patch with the luminance at its corners (cd/m², RGB).
+    struct NearPiece {
+        std::array<Vec3, 3> p;
+        std::array<Rgb, 3> L;
+        int depth;  ///< subdivision depth already spent
+    };
+    /// A corner of a piece being refined: position, id (see Midpoint), luminance
+    /// (cd/m²) and direct illuminance (lx).
+    struct RefinePoint {
+        Vec3 p;
+        uint64_t id;
+        Rgb L, E;
+    };
     Rgb gather(const Vec3& x, const Vec3& n, int level);
     Rgb cornerIndirect(size_t patch, int corner, int level);
+    Midpoint midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level);
+    /// Splits the triangle c toward x while its gathered midpoints differ from the
+    /// linear interpolation; the pieces are appended.
+    void refineNear(const Vec3& x, size_t patch, const std::array<RefinePoint, 3>& c, int depth,
+                    const MidpointSource* midpoints, std::vector<NearPiece>& pieces) const;
     Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
                         int depth) const;
 
@@ -86,7 +125,11 @@ class Gatherer {
     /// Per cluster, the member with the most reflected power: a far cluster's one
     /// visibility ray leaves from it (the centre member may be hidden, e.g. behind a mirror).
     std::vector<uint32_t> m_brightestPatch;
+    int m_refineLevels;
+    double m_refineTolerance;
     std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect
+    std::map<std::pair<uint64_t, uint64_t>, uint64_t> m_midpointIds;  ///< (a, b) sorted → id
+    std::map<std::pair<uint64_t, int>, Rgb> m_midpointMemo;            ///< (id, level) → indirect
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
 };
 

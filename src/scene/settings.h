@@ -64,6 +64,12 @@ struct SolverOptions {
     /// Sensor gather: how many times corner values of near patches are themselves
     /// re-gathered (a local fixed-point iteration at edges and corners; 0 = patch-constant).
     int gatherLevels = 8;
+    /// Sensor gather: the top this many gather levels refine their near patches toward
+    /// the point with gathered (not interpolated) indirect light at sub-triangle corners,
+    /// where that differs from linear by more than `gatherRefineTolerance` (relative):
+    /// the indirect light's singular fall-off into concave edges and corners (0 = off).
+    int gatherRefineLevels = 2;
+    double gatherRefineTolerance = 0.002;
     /// Vertex values from centroid values: false = the paper's plain average of the
     /// triangles around the vertex; true = a least-squares plane through the centroid
     /// values of the two rings of triangles around it, evaluated at the vertex (exact for
