@@ -1,6 +1,7 @@
 #include <radiosity/mesher.h>
 
 #include <core/check.h>
+#include <radiosity/bisection.h>
 #include <radiosity/contact_lines.h>
 #include <scene/polygon.h>
 
@@ -110,42 +111,28 @@ void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int gro
         }
 }
 
-/// Splits every triangle of a group into k² triangles; edge points are created once per
-/// input edge (keyed by its sorted end points), so adjacent triangles share them.
-void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris,
-                   int group, const scene::MeshingOptions& options, double edge) {
-    double longest = 0;
-    for (const auto& t : tris)
-        for (int e = 0; e < 3; ++e)
-            longest = std::max(longest, glm::length(g.positions[t[(e + 1) % 3]] - g.positions[t[e]]));
-    int k;
-    if (options.trianglesPerSurface > 0)
-        k = std::max(1, static_cast<int>(std::lround(std::sqrt(double(options.trianglesPerSurface) / tris.size()))));
-    else
-        k = cellsFor(longest, edge);
-
-    std::map<uint32_t, uint32_t> cornerIds;
+/// Every triangle into k² lattice triangles; points on an input edge are made once per
+/// edge (keyed by its sorted end points), so adjacent triangles share them. New points
+/// are appended to `positions`.
+std::vector<std::array<uint32_t, 3>> latticeTriangles(std::vector<Vec3>& positions,
+                                                      const std::vector<std::array<uint32_t, 3>>& tris, int k) {
     std::map<std::tuple<uint32_t, uint32_t, int>, uint32_t> edgeIds;
-    auto corner = [&](uint32_t a) {
-        auto it = cornerIds.find(a);
-        if (it != cornerIds.end()) return it->second;
-        auto id = static_cast<uint32_t>(mesh.vertices.size());
-        mesh.vertices.push_back(g.positions[a]);
-        cornerIds.emplace(a, id);
-        return id;
+    auto add = [&](const Vec3& p) {
+        positions.push_back(p);
+        return static_cast<uint32_t>(positions.size() - 1);
     };
     auto onEdge = [&](uint32_t a, uint32_t b, int i) {  // point i/k of the way from a to b
-        if (i == 0) return corner(a);
-        if (i == k) return corner(b);
+        if (i == 0) return a;
+        if (i == k) return b;
         if (a > b) std::swap(a, b), i = k - i;
         auto key = std::make_tuple(a, b, i);
         auto it = edgeIds.find(key);
         if (it != edgeIds.end()) return it->second;
-        auto id = static_cast<uint32_t>(mesh.vertices.size());
-        mesh.vertices.push_back(g.positions[a] + (g.positions[b] - g.positions[a]) * (double(i) / k));
+        uint32_t id = add(positions[a] + (positions[b] - positions[a]) * (double(i) / k));
         edgeIds.emplace(key, id);
         return id;
     };
+    std::vector<std::array<uint32_t, 3>> out;
     for (const auto& t : tris) {
         // Lattice point (i, j) with i + j ≤ k: p = A + i/k (B - A) + j/k (C - A).
         std::map<std::pair<int, int>, uint32_t> local;
@@ -156,18 +143,50 @@ void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std
             auto key = std::make_pair(i, j);
             auto it = local.find(key);
             if (it != local.end()) return it->second;
-            const Vec3 &A = g.positions[t[0]], &B = g.positions[t[1]], &C = g.positions[t[2]];
-            auto id = static_cast<uint32_t>(mesh.vertices.size());
-            mesh.vertices.push_back(A + (B - A) * (double(i) / k) + (C - A) * (double(j) / k));
+            const Vec3 A = positions[t[0]], B = positions[t[1]], C = positions[t[2]];
+            uint32_t id = add(A + (B - A) * (double(i) / k) + (C - A) * (double(j) / k));
             local.emplace(key, id);
             return id;
         };
         for (int j = 0; j < k; ++j)
             for (int i = 0; i + j < k; ++i) {
-                addPatch(mesh, P(i, j), P(i + 1, j), P(i, j + 1), g.material, group);
-                if (i + j + 1 < k) addPatch(mesh, P(i + 1, j), P(i + 1, j + 1), P(i, j + 1), g.material, group);
+                out.push_back({P(i, j), P(i + 1, j), P(i, j + 1)});
+                if (i + j + 1 < k) out.push_back({P(i + 1, j), P(i + 1, j + 1), P(i, j + 1)});
             }
     }
+    return out;
+}
+
+/// Premeshing of a triangle group: each triangle by its own size (longest-edge
+/// bisection to `edge` metres, conforming), or, with `triangles_per_surface`, every
+/// triangle into the same k² lattice triangles. Vertices at the same position are one
+/// vertex first, so neighbours that repeat a corner still share their edge.
+void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris,
+                   int group, const scene::MeshingOptions& options, double edge) {
+    std::vector<Vec3> positions;
+    std::map<std::array<double, 3>, uint32_t> byPosition;
+    std::vector<std::array<uint32_t, 3>> welded;
+    for (const auto& t : tris) {
+        std::array<uint32_t, 3> w{};
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = g.positions[t[k]];
+            auto [it, added] = byPosition.emplace(std::array<double, 3>{p.x, p.y, p.z},
+                                                  static_cast<uint32_t>(positions.size()));
+            if (added) positions.push_back(p);
+            w[k] = it->second;
+        }
+        welded.push_back(w);
+    }
+    const int k = options.trianglesPerSurface > 0
+                      ? std::max(1, static_cast<int>(std::lround(std::sqrt(double(options.trianglesPerSurface) / tris.size()))))
+                      : 0;
+    const auto triangles = k > 0 ? latticeTriangles(positions, welded, k) : bisectToSize(positions, welded, edge);
+    std::vector<uint32_t> id(positions.size(), UINT32_MAX);  // local → mesh vertex, made when used
+    auto meshVertex = [&](uint32_t v) {
+        if (id[v] == UINT32_MAX) id[v] = static_cast<uint32_t>(mesh.vertices.size()), mesh.vertices.push_back(positions[v]);
+        return id[v];
+    };
+    for (const auto& t : triangles) addPatch(mesh, meshVertex(t[0]), meshVertex(t[1]), meshVertex(t[2]), g.material, group);
 }
 
 /// A group's polygons as triangles (polygons of more than three corners triangulated).
