@@ -18,6 +18,10 @@ class Visibility {
     /// itself from a point where a wall stands on the floor starts beyond the wall: the
     /// light behind the wall leaked in.) x should lie inside its own patch, not on an edge.
     virtual bool visibleFromSurface(const Vec3& x, const Vec3& /*n*/, const Vec3& to) const { return visible(x, to); }
+    /// True when another surface's front coincides with the surface at x (unit normal n)
+    /// and faces the other way, −n: back-to-back surfaces (a zero-thickness wall), where
+    /// nothing reaches x's back — the light there lands on the other surface's front.
+    virtual bool backCovered(const Vec3& /*x*/, const Vec3& /*n*/) const { return false; }
 };
 
 }  // namespace rayrad

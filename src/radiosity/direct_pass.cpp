@@ -259,8 +259,9 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
         mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
         // The back of a one-sided surface is the inside of a solid: light that still
         // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
-        // booked. A two-sided surface's back is a patch of its own.
-        if (!scene.materials[p.material].twoSided) {
+        // booked. A two-sided surface's back is a patch of its own, and a back covered by
+        // another surface's front (back-to-back quads) receives nothing: that surface does.
+        if (!scene.materials[p.material].twoSided && !vis.backCovered(p.centroid, p.normal)) {
             const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined);
             backReceived[i] = luminance(back.mean) * p.area;
             mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;

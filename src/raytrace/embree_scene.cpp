@@ -153,6 +153,14 @@ bool EmbreeScene::visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& t
     return !occluded(x + m_epsilon * n, to, 0.0);  // lifted off the surface, not shrunk there
 }
 
+bool EmbreeScene::backCovered(const Vec3& x, const Vec3& n) const {
+    // From just behind x toward its back: a front face met within a few epsilons faces −n
+    // (x's own patch is met from behind and passed).
+    const double window = 4 * m_epsilon;
+    Hit h = intersect(x - window * n, n, 0.0, 2 * window, /*frontOnly=*/true);
+    return h.found && !h.specular;
+}
+
 bool EmbreeScene::occluded(const Vec3& from, const Vec3& to, double startShrink) const {
     Vec3 d = to - from;
     double len = glm::length(d);
