@@ -47,9 +47,10 @@ struct SensorValue {
 /// Near patches of the top `refineLevels` gathers are refined further: a linear
 /// luminance misses the indirect light's fall-off into concave edges and corners (a
 /// singular derivative there), so each near triangle is split toward x and its edge
-/// midpoints take exact-direct-interpolated plus *gathered* indirect light, one level
-/// down, wherever the gathered value differs from the interpolated one by more than
-/// `refineTolerance` (relative) — a local graded re-solve around the point.
+/// midpoints take direct light interpolated from the exact corner values plus *gathered*
+/// indirect light, one level down; a piece is split further while a gathered midpoint
+/// differs from the interpolation by more than `refineTolerance` (relative), at most
+/// 6 times — a local graded re-solve around the point.
 /// Mirrors: the patches' images are gathered too (patch-constant luminance × Π Ks,
 /// seen only through the mirror polygons).
 class Gatherer {
