@@ -158,29 +158,17 @@ std::vector<std::array<uint32_t, 3>> latticeTriangles(std::vector<Vec3>& positio
 }
 
 /// Premeshing of a triangle group: each triangle by its own size (longest-edge
-/// bisection to `edge` metres, conforming), or, with `triangles_per_surface`, every
-/// triangle into the same k² lattice triangles. Vertices at the same position are one
-/// vertex first, so neighbours that repeat a corner still share their edge.
+/// bisection to `edge` metres, conforming where triangles share vertex indices), or,
+/// with `triangles_per_surface`, every triangle into the same k² lattice triangles.
+/// Corners stay as the input indexes them: a mesh that splits its vertices along a
+/// crease keeps the two sides apart, so vertex values never average across it.
 void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris,
                    int group, const scene::MeshingOptions& options, double edge) {
-    std::vector<Vec3> positions;
-    std::map<std::array<double, 3>, uint32_t> byPosition;
-    std::vector<std::array<uint32_t, 3>> welded;
-    for (const auto& t : tris) {
-        std::array<uint32_t, 3> w{};
-        for (int k = 0; k < 3; ++k) {
-            const Vec3& p = g.positions[t[k]];
-            auto [it, added] = byPosition.emplace(std::array<double, 3>{p.x, p.y, p.z},
-                                                  static_cast<uint32_t>(positions.size()));
-            if (added) positions.push_back(p);
-            w[k] = it->second;
-        }
-        welded.push_back(w);
-    }
+    std::vector<Vec3> positions = g.positions;
     const int k = options.trianglesPerSurface > 0
                       ? std::max(1, static_cast<int>(std::lround(std::sqrt(double(options.trianglesPerSurface) / tris.size()))))
                       : 0;
-    const auto triangles = k > 0 ? latticeTriangles(positions, welded, k) : bisectToSize(positions, welded, edge);
+    const auto triangles = k > 0 ? latticeTriangles(positions, tris, k) : bisectToSize(positions, tris, edge);
     std::vector<uint32_t> id(positions.size(), UINT32_MAX);  // local → mesh vertex, made when used
     auto meshVertex = [&](uint32_t v) {
         if (id[v] == UINT32_MAX) id[v] = static_cast<uint32_t>(mesh.vertices.size()), mesh.vertices.push_back(positions[v]);
