@@ -1,6 +1,7 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
 #include <app/image_output.h>
 #include <app/pipeline.h>
+#include <app/problem_size.h>
 #include <app/validate_cube.h>
 #include <app/validate_sphere.h>
 #include <app/scene_warnings.h>
@@ -178,6 +179,8 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, cons
 
 int runInfo(const CommonArgs& a) {
     auto scene = app::loadSceneFile(a.scene, overridesOf(a));
+    const double estimate = radiosity::estimatePatchCount(scene, scene.meshing);
+    app::checkPatchCount(a.scene, scene);
     auto mesh = radiosity::premesh(scene, scene.meshing);
     size_t emissive = 0;
     for (const auto& g : scene.groups)
@@ -190,10 +193,12 @@ int runInfo(const CommonArgs& a) {
                    m.isEmissive() ? fmt::format(", emits {} cd/m²", toString(m.emission)) : "");
     }
     fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
-    fmt::print("patches (premeshed triangles): {} (target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
-               mesh.patches.size(), radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(), mesh.totalArea());
+    fmt::print("patches (premeshed triangles): {} (estimated {:.0f}; target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
+               mesh.patches.size(), estimate, radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(),
+               mesh.totalArea());
     auto embree = raytrace::buildEmbreeScene(scene, mesh);
     fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters, embree.get()).statistics());
+    for (const auto& w : app::costWarnings(a.scene, scene, mesh, true)) fmt::print("warning: {}\n", w);
     for (const auto& w : app::sceneWarnings(scene, mesh, *embree)) fmt::print("warning: {}\n", w);
     fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
     for (const auto& l : scene.lights)

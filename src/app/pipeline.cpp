@@ -1,5 +1,7 @@
 #include <app/pipeline.h>
 
+#include <app/problem_size.h>
+
 #include <app/scene_warnings.h>
 
 #include <core/progress.h>
@@ -134,12 +136,14 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.report.begin("parse + build scene");
     run.scene = loadSceneFile(sceneFile, options.overrides);
 
+    checkPatchCount(sceneFile, run.scene);
     run.report.begin("premesh");
     run.mesh = radiosity::premesh(run.scene, run.scene.meshing);
+    run.warnings = costWarnings(sceneFile, run.scene, run.mesh, options.wantSensors);
 
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
-    run.warnings = sceneWarnings(run.scene, run.mesh, *run.embree);
+    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree)) run.warnings.push_back(std::move(w));
     if (!options.quiet)
         for (const auto& w : run.warnings) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
 
@@ -272,7 +276,7 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) 
     }
     j["stages"] = json::array();
     for (const auto& st : run.report.stages())
-        j["stages"].push_back({{"name", st.name}, {"seconds", st.seconds}, {"peak_bytes", st.peakBytes}});
+        j["stages"].push_back({{"name", st.name}, {"seconds", st.seconds}, {"cpu_seconds", st.cpuSeconds}, {"peak_bytes", st.peakBytes}});
     j["total_seconds"] = run.report.totalSeconds();
     j["peak_bytes"] = peakMemoryBytes();
     j["sensors"] = json::array();

@@ -1,4 +1,4 @@
-// Wall time and peak memory of each pipeline stage, printed on stderr at the end of a run.
+// Wall time, CPU time and peak memory of each pipeline stage, printed on stderr at the end of a run.
 #pragma once
 
 #include <chrono>
@@ -10,12 +10,17 @@ namespace rayrad {
 /// Peak resident set size of this process so far, in bytes (VmHWM; 0 if unknown).
 size_t peakMemoryBytes();
 
-/// Records, for each stage the pipeline ran, its wall time and the peak memory after it.
+/// CPU seconds (user + sys) this process has used so far, all threads.
+double processCpuSeconds();
+
+/// Records, for each stage the pipeline ran, its wall time, CPU time (user + sys, all
+/// threads) and the peak memory after it.
 class StageReport {
   public:
     struct Stage {
         std::string name;
-        double seconds = 0;
+        double seconds = 0;     ///< wall
+        double cpuSeconds = 0;  ///< user + sys
         size_t peakBytes = 0;
     };
 
@@ -26,11 +31,13 @@ class StageReport {
 
     const std::vector<Stage>& stages() const { return m_stages; }
     double totalSeconds() const;
+    double totalCpuSeconds() const;
     std::string toString() const;
 
   private:
     std::vector<Stage> m_stages;
     std::chrono::steady_clock::time_point m_start;
+    double m_cpuStart = 0;
     bool m_running = false;
 };
 

@@ -14,7 +14,7 @@ constexpr double kFarDiameters = 4.0;
 
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance) {
+                       double analyticDistance, double oneRayBelow) {
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
     double f = 0;
@@ -27,7 +27,8 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
     }
     if (f <= 0) return 0.0;
     int visible = 0, rays = 0;
-    for (int k = 0; k < 4; ++k) {
+    const int samples = kPi * f < oneRayBelow ? 1 : 4;
+    for (int k = 0; k < samples; ++k) {
         // Skip repeated pairs (small clusters list the same member several times).
         bool repeat = false;
         for (int m = 0; m < k; ++m) repeat |= sourceSamples[m] == sourceSamples[k] && receiver.samples[m] == receiver.samples[k];

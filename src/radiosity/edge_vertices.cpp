@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <unordered_map>
 
 #include <tbb/parallel_for.h>
@@ -42,21 +43,30 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
             if (e > brightness[v]) brightness[v] = e, patchOf[v] = static_cast<int64_t>(i);
     }
 
-    // Clusters by voxel, to find a vertex's neighbours without scanning every patch.
-    std::map<std::array<int, 3>, std::vector<uint32_t>> byVoxel;
-    for (uint32_t c = 0; c < clustering.clusters.size(); ++c) byVoxel[clustering.clusters[c].voxel].push_back(c);
-    auto voxelOf = [&](const Vec3& p) {
-        std::array<int, 3> v;
-        for (int a = 0; a < 3; ++a)
-            v[a] = std::clamp(static_cast<int>(std::floor((p[a] - clustering.origin[a]) / clustering.voxelSize)), 0,
-                              clustering.dims[a] - 1);
-        return v;
+    // Patches by size class and cell, to find a vertex's neighbours without scanning
+    // every patch: a patch touching a vertex has its centroid within 1.5 of its
+    // diameters. Class k holds the patches with 1.5 d ≤ cell_k = cell_0 · 2^k, in a grid of
+    // that cell, so the 27 cells around a vertex hold every such patch of the class.
+    double smallest = 0, largest = 0;
+    for (const Patch& p : mesh.patches)
+        if (p.diameter > 0) smallest = smallest > 0 ? std::min(smallest, p.diameter) : p.diameter, largest = std::max(largest, p.diameter);
+    const double cell0 = std::max(1.5 * smallest, 1e-9 * std::max(scene.diagonal(), 1e-300));
+    const int classes = 1 + std::max(0, static_cast<int>(std::ceil(std::log2(std::max(1.0, 1.5 * largest / cell0)))));
+    using Key = std::tuple<int, int64_t, int64_t, int64_t>;  // class, cell
+    auto keyOf = [&](int k, const Vec3& p) {
+        const double cell = std::ldexp(cell0, k);
+        auto c = [&](int a) { return static_cast<int64_t>(std::floor((p[a] - scene.boundsMin[a]) / cell)); };
+        return Key{k, c(0), c(1), c(2)};
     };
-
-    // How many voxels around a vertex can hold the centroid of a patch touching it.
-    double largestDiameter = 0;
-    for (const Patch& p : mesh.patches) largestDiameter = std::max(largestDiameter, p.diameter);
-    const int reach = static_cast<int>(std::ceil(1.5 * largestDiameter / clustering.voxelSize));
+    std::map<Key, std::vector<uint32_t>> byCell;
+    std::vector<char> classUsed(classes, 0);
+    for (uint32_t j = 0; j < mesh.patches.size(); ++j) {
+        const double d = mesh.patches[j].diameter;
+        int k = d > 0 ? std::max(0, static_cast<int>(std::ceil(std::log2(1.5 * d / cell0)))) : 0;
+        while (k + 1 < classes && 1.5 * d > std::ldexp(cell0, k)) ++k;  // rounding
+        classUsed[k] = 1;
+        byCell[keyOf(k, mesh.patches[j].centroid)].push_back(j);
+    }
 
     const double nudge = 1e-6 * scene.diagonal();
     const double seamTolerance = 1e-6 * scene.diagonal();
@@ -65,28 +75,27 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
         if (patchOf[v] < 0) continue;
         const Patch& own = mesh.patches[patchOf[v]];
         const Vec3 x = nudgeInside(mesh, patchOf[v], mesh.vertices[v], nudge);
-        auto home = voxelOf(x);
+        // A seam: the vertex lies on an edge of a patch of another surface that x sees.
+        auto seamWith = [&](uint32_t j) {
+            const Patch& p = mesh.patches[j];
+            if (p.group == own.group || glm::length(p.centroid - x) > 1.5 * p.diameter) return false;
+            Vec3 tri[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
+            bool onSeam = false;
+            for (int e = 0; e < 3; ++e)
+                onSeam |= distanceToSegment(mesh.vertices[v], tri[e], tri[(e + 1) % 3]) <= seamTolerance;
+            return onSeam && formFactorToPolygon(x, own.normal, tri, 3, p.normal) > 0;
+        };
         bool isEdge = false;
-        for (int dx = -reach; dx <= reach && !isEdge; ++dx)
-            for (int dy = -reach; dy <= reach && !isEdge; ++dy)
-                for (int dz = -reach; dz <= reach && !isEdge; ++dz) {
-                    auto it = byVoxel.find({home[0] + dx, home[1] + dy, home[2] + dz});
-                    if (it == byVoxel.end()) continue;
-                    for (uint32_t c : it->second)
-                        for (uint32_t j : clustering.clusters[c].patches) {
-                            const Patch& p = mesh.patches[j];
-                            if (p.group == own.group || glm::length(p.centroid - x) > 1.5 * p.diameter) continue;
-                            Vec3 tri[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
-                            // A seam: the vertex lies on one of the facing patch's edges.
-                            bool onSeam = false;
-                            for (int e = 0; e < 3; ++e)
-                                onSeam |= distanceToSegment(mesh.vertices[v], tri[e], tri[(e + 1) % 3]) <= seamTolerance;
-                            if (onSeam && formFactorToPolygon(x, own.normal, tri, 3, p.normal) > 0) {
-                                isEdge = true;
-                                break;
-                            }
-                        }
-                }
+        for (int k = 0; k < classes && !isEdge; ++k) {
+            if (!classUsed[k]) continue;
+            const auto [c, hx, hy, hz] = keyOf(k, x);
+            for (int64_t dx = -1; dx <= 1 && !isEdge; ++dx)
+                for (int64_t dy = -1; dy <= 1 && !isEdge; ++dy)
+                    for (int64_t dz = -1; dz <= 1 && !isEdge; ++dz) {
+                        auto it = byCell.find({c, hx + dx, hy + dy, hz + dz});
+                        if (it != byCell.end()) isEdge = std::any_of(it->second.begin(), it->second.end(), seamWith);
+                    }
+        }
         if (isEdge) edge.push_back(v);
     }
 

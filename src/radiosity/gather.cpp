@@ -195,7 +195,12 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         std::vector<NearPiece> pieces;
     };
     std::vector<Near> near;
-    std::vector<uint32_t> nearClusters;
+    /// The clusters holding near patches, in increasing order, and their range in `near`.
+    struct NearCluster {
+        uint32_t cluster;
+        size_t begin, end;
+    };
+    std::vector<NearCluster> nearClusters;
     if (cornerIndirectOf) {
         for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
             const Cluster& C = m_clustering.clusters[c];
@@ -221,7 +226,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 refineNear(x, j, corners, 0, midpoints, e.pieces);
                 near.push_back(std::move(e));
             }
-            if (near.size() > before) nearClusters.push_back(static_cast<uint32_t>(c));
+            if (near.size() > before) nearClusters.push_back({static_cast<uint32_t>(c), before, near.size()});
         }
     }
 
@@ -243,7 +248,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             bool seen = f > 0 && vis.visibleFromSurface(x, n, mesh.patches[m_brightestPatch[c]].centroid);
             return seen ? Rgb(weight * m_clusterLuminance[c] * (kPi * f)) : Rgb(0.0);  // Ks π L_C F V
         }
-        bool hasNear = real && std::find(nearClusters.begin(), nearClusters.end(), c) != nearClusters.end();
+        auto nearOf = std::lower_bound(nearClusters.begin(), nearClusters.end(), c,
+                                       [](const NearCluster& e, size_t k) { return e.cluster < k; });
+        const bool hasNear = real && nearOf != nearClusters.end() && nearOf->cluster == c;
         double far = kClusterVisibilityDiameters * C.diameter;
         bool shared = C.patches.size() > 1 && d2 > far * far;
         Rgb sum(0.0), sharedSum(0.0);
@@ -252,8 +259,10 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         for (uint32_t j : C.patches) {
             const Patch& p = mesh.patches[j];
             if (hasNear) {
-                auto it = std::find_if(near.begin(), near.end(), [j](const Near& e) { return e.patch == j; });
-                if (it != near.end()) {
+                const auto first = near.begin() + static_cast<std::ptrdiff_t>(nearOf->begin);
+                const auto last = near.begin() + static_cast<std::ptrdiff_t>(nearOf->end);
+                auto it = std::find_if(first, last, [j](const Near& e) { return e.patch == j; });
+                if (it != last) {
                     for (const NearPiece& piece : it->pieces)
                         sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), p.normal, piece.depth);
                     continue;

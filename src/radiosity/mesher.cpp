@@ -25,6 +25,43 @@ constexpr double kContactTolerance = 1e-6;
 
 int cellsFor(double length, double edge) { return std::max(1, static_cast<int>(std::ceil(length / edge - 1e-9))); }
 
+/// The longer of each pair of opposite sides of a quad v0 v1 v2 v3, m: (u, v).
+std::pair<double, double> quadSides(const std::vector<Vec3>& q) {
+    return {std::max(glm::length(q[1] - q[0]), glm::length(q[2] - q[3])),
+            std::max(glm::length(q[3] - q[0]), glm::length(q[2] - q[1]))};
+}
+
+/// Grid cells (n_u, n_v) of a quad before contact lines are added: sides of at most
+/// `edge` metres (or about trianglesPerSurface triangles), cells within maxCellAspect.
+/// In doubles, so an absurd request is counted rather than overflowing.
+std::pair<double, double> quadCells(const std::vector<Vec3>& q, const scene::MeshingOptions& options, double edge) {
+    const auto [lu, lv] = quadSides(q);
+    double nu, nv;
+    if (options.trianglesPerSurface > 0) {
+        // 2·nu·nv ≈ T with nu/nv ≈ lu/lv.
+        double cells = options.trianglesPerSurface / 2.0;
+        nu = std::max(1.0, std::round(std::sqrt(cells * lu / lv)));
+        nv = std::max(1.0, std::round(cells / nu));
+    } else {
+        nu = std::max(1.0, std::ceil(lu / edge - 1e-9));
+        nv = std::max(1.0, std::ceil(lv / edge - 1e-9));
+    }
+    // Keep cells compact: refine the long direction of thin cells.
+    double aspect = options.maxCellAspect;
+    nu = std::max(nu, std::ceil(lu / (aspect * lv / nv) - 1e-9));
+    nv = std::max(nv, std::ceil(lv / (aspect * lu / nu) - 1e-9));
+    return {nu, nv};
+}
+
+/// Triangles a longest-edge bisection to `edge` metres makes of triangle (a, b, c),
+/// estimated: the pieces' longest edges end up between edge/2 and edge, so about
+/// area / (0.3 edge²) of them, and at least one per `edge` along the longest side.
+double bisectedCount(const Vec3& a, const Vec3& b, const Vec3& c, double edge) {
+    double area = 0.5 * glm::length(glm::cross(b - a, c - a));
+    double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+    return std::max({1.0, area / (0.3 * edge * edge), std::ceil(longest / edge)});
+}
+
 void addPatch(PatchMesh& mesh, uint32_t a, uint32_t b, uint32_t c, int material, int group) {
     Patch p;
     p.v = {a, b, c};
@@ -54,22 +91,9 @@ std::vector<double> gridLines(double length, double cell, const std::vector<Cont
 /// under a wall, and vertex values never average the two sides of it.
 void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int group,
               const scene::MeshingOptions& options, double edge, const QuadContacts& contacts, double tolerance) {
-    double lu = std::max(glm::length(q[1] - q[0]), glm::length(q[2] - q[3]));
-    double lv = std::max(glm::length(q[3] - q[0]), glm::length(q[2] - q[1]));
-    int nu, nv;
-    if (options.trianglesPerSurface > 0) {
-        // 2·nu·nv ≈ T with nu/nv ≈ lu/lv.
-        double cells = options.trianglesPerSurface / 2.0;
-        nu = std::max(1, static_cast<int>(std::lround(std::sqrt(cells * lu / lv))));
-        nv = std::max(1, static_cast<int>(std::lround(cells / nu)));
-    } else {
-        nu = cellsFor(lu, edge);
-        nv = cellsFor(lv, edge);
-    }
-    // Keep cells compact: refine the long direction of thin cells.
-    double aspect = options.maxCellAspect;
-    nu = std::max(nu, static_cast<int>(std::ceil(lu / (aspect * lv / nv) - 1e-9)));
-    nv = std::max(nv, static_cast<int>(std::ceil(lv / (aspect * lu / nu) - 1e-9)));
+    const double lu = quadSides(q).first, lv = quadSides(q).second;
+    const auto [cu, cv] = quadCells(q, options, edge);
+    int nu = static_cast<int>(cu), nv = static_cast<int>(cv);  // premeshTooLarge() keeps these small
     const std::vector<double> S = gridLines(lu, lu / nu * (1 + 1e-9), contacts.constS);
     const std::vector<double> T = gridLines(lv, lv / nv * (1 + 1e-9), contacts.constT);
     nu = static_cast<int>(S.size()) - 1;
@@ -193,6 +217,31 @@ std::vector<std::array<uint32_t, 3>> groupTriangles(const SurfaceGroup& g) {
 }
 
 }  // namespace
+
+double estimatePatchCount(const scene::Scene& scene, const scene::MeshingOptions& options) {
+    const double edge = targetEdge(scene, options);
+    double count = 0;
+    for (const SurfaceGroup& g : scene.groups) {
+        if (!scene.isPatchSurface(g)) continue;
+        if (g.polygons.size() == 1 && g.polygons[0].size() == 4 && options.premesh) {
+            std::vector<Vec3> q;
+            for (uint32_t i : g.polygons[0]) q.push_back(g.positions[i]);
+            const auto [nu, nv] = quadCells(q, options, edge);
+            count += 2 * nu * nv;
+            continue;
+        }
+        const auto tris = groupTriangles(g);
+        if (!options.premesh) {
+            count += static_cast<double>(tris.size());
+        } else if (options.trianglesPerSurface > 0) {  // k² per triangle, k as meshTriangles() takes it
+            double k = std::max(1.0, std::round(std::sqrt(double(options.trianglesPerSurface) / tris.size())));
+            count += k * k * static_cast<double>(tris.size());
+        } else {
+            for (const auto& t : tris) count += bisectedCount(g.positions[t[0]], g.positions[t[1]], g.positions[t[2]], edge);
+        }
+    }
+    return count;
+}
 
 PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options) {
     PatchMesh mesh;

@@ -40,6 +40,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     if (m_area > 0) m_meanReflectance = m_meanReflectance / m_area;
     m_shotE.assign(mesh.patches.size(), V(0.0));
     m_shotPending.assign(mesh.patches.size(), V(0.0));
+    m_reached.assign(clustering.clusters.size(), 0);
     m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
@@ -201,6 +202,7 @@ V ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e
     thread_local std::vector<double> shape;
     receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
     V flux(0.0);
+    m_reached[receiver] = 1;
     for (size_t k = 0; k < D.patches.size(); ++k) {
         uint32_t j = D.patches[k];
         m_shotPending[j] += e * shape[k];
@@ -268,6 +270,7 @@ V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>&
         into[j] += deltaE;
         flux += deltaE * rec.area;
     }
+    if (flux != V(0.0)) m_reached[receiver] = 1;
     return flux;
 }
 
@@ -387,7 +390,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, c, d)) continue;
                 if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
-                    double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance);
+                    double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance,
+                                               kOneRayTransfer);
                     V flux(0.0);
                     if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
                     if (throughMirrors) deliveredTo[d] = flux;
@@ -419,7 +423,9 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
 
 template <class V>
 void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSource* delivered) {
-    const size_t n = m_clustering.clusters.size();
+    std::vector<uint32_t> reached;  // the clusters with deliveries waiting, in index order
+    for (size_t d = 0; d < m_reached.size(); ++d)
+        if (m_reached[d]) reached.push_back(static_cast<uint32_t>(d)), m_reached[d] = 0;
     // Closed scene: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1), plus what the
     // corrections took away to deliver again; through mirrors each delivery counts as it
     // left the shooter (÷ Π Ks: the mirrors absorbed the rest). The deficit δ is shared in
@@ -430,13 +436,14 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     if (m_conserve) {
         using Sums = std::pair<double, double>;  // signed and absolute received flux, lm
         Sums received = delivered ? Sums{delivered->net, delivered->magnitude} : tbb::parallel_deterministic_reduce(
-            tbb::blocked_range<size_t>(0, m_mesh.patches.size(), 1024), Sums{0.0, 0.0},
+            tbb::blocked_range<size_t>(0, reached.size(), 16), Sums{0.0, 0.0},
             [&](const tbb::blocked_range<size_t>& range, Sums sum) {
-                for (size_t j = range.begin(); j != range.end(); ++j)
-                    for (const V& e : {m_shotE[j], m_shotPending[j]}) {
-                        double flux = lum(e) * m_mesh.patches[j].area;
-                        sum.first += flux, sum.second += std::abs(flux);
-                    }
+                for (size_t k = range.begin(); k != range.end(); ++k)
+                    for (uint32_t j : m_clustering.clusters[reached[k]].patches)
+                        for (const V& e : {m_shotE[j], m_shotPending[j]}) {
+                            double flux = lum(e) * m_mesh.patches[j].area;
+                            sum.first += flux, sum.second += std::abs(flux);
+                        }
                 return sum;
             },
             [](const Sums& a, const Sums& b) { return Sums{a.first + b.first, a.second + b.second}; });
@@ -453,7 +460,8 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
         const double loss = delivered->mirrorLoss;
         m_stats.mirrorAbsorbed += loss * (1.0 + (loss < 0 ? -adjust : adjust));
     }
-    tbb::parallel_for(size_t(0), n, [&](size_t d) {
+    tbb::parallel_for(size_t(0), reached.size(), [&](size_t k) {
+        const size_t d = reached[k];
         const Cluster& D = m_clustering.clusters[d];
         V reflectedSum(0.0);
         for (uint32_t j : D.patches) {

@@ -145,6 +145,9 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per patch, this shot's deliveries in lx before they are received: patch→patch
     /// (m_shotE) and cluster→cluster (m_shotPending, joins m_pending).
     std::vector<V> m_shotE, m_shotPending;
+    /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
+    /// deliver() visits only the clusters a shot reached.
+    std::vector<char> m_reached;
     bool m_conserve = false;
     /// The mirrors' back faces (vertices reversed, normal −n): light shot into them is
     /// absorbed (a mirror's back is not a patch).

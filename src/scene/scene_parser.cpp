@@ -360,6 +360,7 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.meshing.trianglesPerSurface = r.integer("triangles_per_surface", d.meshing.trianglesPerSurface, 0, 10'000'000);
     d.meshing.maxCellAspect = r.number("max_cell_aspect", d.meshing.maxCellAspect);
     if (d.meshing.maxCellAspect < 1) r.error("max_cell_aspect", "expected a number >= 1");
+    d.meshing.maxPatches = r.positive("max_patches", d.meshing.maxPatches);
     d.solver.stopUnshot = r.number("stop_unshot", d.solver.stopUnshot);
     if (!(d.solver.stopUnshot > 0 && d.solver.stopUnshot < 1)) r.error("stop_unshot", "expected a number in (0, 1)");
     d.solver.maxShots = static_cast<int64_t>(r.nonNegative("max_shots", static_cast<double>(d.solver.maxShots)));

@@ -19,6 +19,9 @@ struct MeshingOptions {
     int trianglesPerSurface = 0;
     /// Largest aspect ratio of grid cells; thin quads get more cells across.
     double maxCellAspect = 2.0;
+    /// The most patches a scene may be premeshed into (estimated before premeshing, so a
+    /// tiny max_edge is an error rather than an allocation that fails). About 1 KiB each.
+    double maxPatches = 4e6;
 };
 
 /// Clustering for the secondary pass (a voxel grid; two levels: clusters and patches).

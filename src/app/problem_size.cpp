@@ -1,0 +1,72 @@
+#include <app/problem_size.h>
+
+#include <core/input_error.h>
+#include <radiosity/clusters.h>
+#include <radiosity/mesher.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace rayrad::app {
+
+namespace {
+/// CPU seconds per sensor and patch of a final gather with the default refinement,
+/// measured on the 19 200-patch cube (a 32×32 grid: 27 CPU-s).
+constexpr double kGatherSecondsPerPatch = 1.4e-6;
+/// Voxels per side the cluster grid can index.
+constexpr double kMaxVoxelsPerSide = 1e9;
+
+/// The setting the cluster voxel comes from (see clusterVoxelSize()).
+std::string voxelSetting(const scene::ClusterOptions& o) {
+    return o.voxelSize > 0 ? "/clusters/voxel_size"
+           : o.patchesPerCluster > 0 ? "/clusters/patches_per_cluster"
+                                     : "/clusters/size_percent";
+}
+}  // namespace
+
+void checkPatchCount(const std::string& file, const scene::Scene& scene) {
+    const double estimate = radiosity::estimatePatchCount(scene, scene.meshing);
+    if (estimate <= scene.meshing.maxPatches) return;
+    const double edge = radiosity::targetEdge(scene, scene.meshing);
+    throw InputError(placeMessage(
+        file, scene.meshing.trianglesPerSurface > 0 ? "/radiosity/triangles_per_surface" : "/radiosity/max_edge",
+        fmt::format("premeshing to {:.3g} m edges would make about {:.3g} patches (~{:.3g} GiB), more than "
+                    "radiosity.max_patches ({:.3g}); use a larger max_edge, or raise max_patches if you mean it",
+                    edge, estimate, estimate * 1024 / (1 << 30), scene.meshing.maxPatches)));
+}
+
+std::vector<std::string> costWarnings(const std::string& file, const scene::Scene& scene,
+                                      const radiosity::PatchMesh& mesh, bool gatherSensors) {
+    std::vector<std::string> out;
+    const size_t patches = mesh.patches.size();
+    if (patches == 0) return out;
+    if (scene.clusters.enabled) {
+        const double voxel = radiosity::clusterVoxelSize(scene, mesh, scene.clusters);
+        const double side = std::max(scene.boundsMax.x - scene.boundsMin.x,
+                                     std::max(scene.boundsMax.y - scene.boundsMin.y, scene.boundsMax.z - scene.boundsMin.z));
+        if (!(voxel > 0) || side / voxel > kMaxVoxelsPerSide)
+            throw InputError(placeMessage(file, voxelSetting(scene.clusters),
+                                          fmt::format("a cluster voxel of {:.3g} m makes {:.3g} voxels along the "
+                                                      "scene's {:.3g} m; the grid allows {:.0e}",
+                                                      voxel, side / voxel, side, kMaxVoxelsPerSide)));
+        // Mean patch edge from the mean area of a right isosceles triangle, A = e²/2.
+        const double meanEdge = std::sqrt(2 * mesh.totalArea() / patches);
+        if (voxel < 0.5 * meanEdge)
+            out.push_back(fmt::format(
+                "{}: a cluster voxel of {:.3g} m is smaller than the patches (mean edge {:.3g} m): nearly every "
+                "patch is a cluster of its own, so each shot visits all {} patches one by one and the secondary "
+                "pass costs about as much as with clusters off",
+                voxelSetting(scene.clusters), voxel, meanEdge, patches));
+    }
+    if (gatherSensors && !scene.sensors.empty() && scene.hasReflectance()) {
+        const double seconds = kGatherSecondsPerPatch * static_cast<double>(scene.sensors.size()) * patches;
+        if (seconds > 600)
+            out.push_back(fmt::format("/sensors: {} sensors × {} patches: the final gather will take about {:.0f} "
+                                      "CPU-minutes (each sensor visits every patch)",
+                                      scene.sensors.size(), patches, seconds / 60));
+    }
+    return out;
+}
+
+}  // namespace rayrad::app

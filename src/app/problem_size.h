@@ -1,0 +1,23 @@
+// What a scene's settings will cost, estimated before the work is allocated or started:
+// absurd settings are an error naming the setting, costly ones a warning with the figure.
+#pragma once
+
+#include <radiosity/patch_mesh.h>
+#include <scene/scene.h>
+
+#include <string>
+#include <vector>
+
+namespace rayrad::app {
+
+/// Before premeshing: throws InputError (naming `file` and the setting) when the premesh
+/// would make more than radiosity.max_patches patches (estimatePatchCount()).
+void checkPatchCount(const std::string& file, const scene::Scene& scene);
+
+/// After premeshing, one line each: a cluster voxel much smaller than the patches (every
+/// patch its own cluster, so each shot visits every patch), and sensor gathers that will
+/// take more than ten CPU-minutes. Throws InputError when the voxel grid cannot be indexed.
+std::vector<std::string> costWarnings(const std::string& file, const scene::Scene& scene,
+                                      const radiosity::PatchMesh& mesh, bool gatherSensors);
+
+}  // namespace rayrad::app
