@@ -2,6 +2,7 @@
 
 #include <radiosity/cluster_transfer.h>
 #include <radiosity/form_factor.h>
+#include <radiosity/member_groups.h>
 #include <radiosity/patch_transfer.h>
 
 #include <tbb/blocked_range.h>
@@ -23,6 +24,11 @@ constexpr double kDefaultStepFraction = 0.2;
 /// Shots without a new low of the residual before the solve counts as stalled (or a
 /// quarter of the clusters, if more).
 constexpr int64_t kStallShots = 2000;
+/// Patch→patch: a receiver this many member-group diameters away shares one visibility
+/// ray for the whole group (as the final gather does for clusters).
+constexpr double kSharedRayDiameters = 2.0;
+/// Members per group (see member_groups.h).
+constexpr size_t kGroupSize = 8;
 }  // namespace
 
 template <class V>
@@ -41,6 +47,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_shotE.assign(mesh.patches.size(), V(0.0));
     m_shotPending.assign(mesh.patches.size(), V(0.0));
     m_reached.assign(clustering.clusters.size(), 0);
+    m_memberGroups = memberGroups(mesh, clustering, kGroupSize);
     m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
@@ -258,14 +265,33 @@ V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>&
     for (uint32_t j : D.patches) {
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
-        for (size_t k = 0; k < C.patches.size(); ++k) {
-            uint32_t i = C.patches[k];
-            if ((i == j && !s.image) || amount[k] == V(0.0)) continue;  // a patch may see its own image
-            const Patch& src = s.mesh->patches[i];
-            Vec3 d = src.centroid - rec.centroid;  // both must face each other
-            if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
-            double f = visiblePatchFormFactor(*s.mesh, src, rec.centroid, rec.normal, m_options.analyticDistance, *s.vis);
-            deltaE += amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
+        for (const MemberGroup& g : m_memberGroups[c]) {
+            // A receiver farther than kSharedRayDiameters of a group's diameters sees the
+            // whole group through one visibility ray, toward the member that sends it the
+            // most; nearer, each member has its own.
+            const Vec3 toGroup = (s.image ? s.image->point(g.centroid) : g.centroid) - rec.centroid;
+            const double far = kSharedRayDiameters * g.diameter;
+            const bool shared = g.members.size() > 1 && glm::dot(toGroup, toGroup) > far * far;
+            V groupE(0.0);
+            double strongest = 0;
+            const Patch* strongestSource = nullptr;
+            for (uint32_t k : g.members) {
+                uint32_t i = C.patches[k];
+                if ((i == j && !s.image) || amount[k] == V(0.0)) continue;  // a patch may see its own image
+                const Patch& src = s.mesh->patches[i];
+                Vec3 d = src.centroid - rec.centroid;  // both must face each other
+                if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
+                double f = shared ? patchFormFactor(*s.mesh, src, rec.centroid, rec.normal, m_options.analyticDistance)
+                                  : visiblePatchFormFactor(*s.mesh, src, rec.centroid, rec.normal,
+                                                           m_options.analyticDistance, *s.vis);
+                V e = amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
+                groupE += e;
+                if (shared && std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
+            }
+            if (shared && strongestSource &&
+                !s.vis->visibleFromSurface(rec.centroid, rec.normal, strongestSource->centroid))
+                continue;
+            deltaE += groupE;
         }
         into[j] += deltaE;
         flux += deltaE * rec.area;
