@@ -133,6 +133,21 @@ expect "PLY with garbage after its header" "ply_garbage.json: /objects/0/file: m
 mkdir -p "$work/adir.json"
 expect "scene is a directory" "adir.json" -- solve "$work/adir.json"
 
+# Absurd sizes (issue 12): an error naming the setting, before anything is allocated.
+scene tiny_edge "{$good_materials, $good_box, $good_light, \"radiosity\": {\"max_edge\": 1e-5}}"
+start=$(date +%s%N)
+expect "max_edge 1e-5" "tiny_edge.json: /radiosity/max_edge: premeshing to 1e-05 m edges would make about 1.2e+11 patches" -- solve "$work/tiny_edge.json"
+elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+if [ "$elapsed_ms" -gt 5000 ]; then echo "FAIL max_edge 1e-5 took $elapsed_ms ms"; failures=$((failures + 1)); else passed=$((passed + 1)); fi
+scene tiny_voxel "{$good_materials, $good_box, $good_light, \"clusters\": {\"voxel_size\": 1e-12}}"
+expect "voxel_size 1e-12" "tiny_voxel.json: /clusters/voxel_size: a cluster voxel of 1e-12 m makes 1e+12 voxels" -- solve "$work/tiny_voxel.json"
+scene small_voxel "{$good_materials, $good_box, $good_light, \"clusters\": {\"voxel_size\": 1e-6}, \"radiosity\": {\"max_edge\": 0.25}}"
+if "$rayrad" info "$work/small_voxel.json" 2>&1 | grep -q "warning: /clusters/voxel_size: a cluster voxel of 1e-06 m is smaller than the patches"; then
+    passed=$((passed + 1))
+else
+    echo "FAIL voxel_size 1e-6: no warning from info"; failures=$((failures + 1))
+fi
+
 echo keep > "$work/keep.png"
 "$rayrad" render "$work/negative.json" -o "$work/keep.png" >/dev/null 2>&1
 if [ "$(cat "$work/keep.png")" != keep ]; then echo "FAIL existing output was overwritten"; failures=$((failures + 1)); else passed=$((passed + 1)); fi
