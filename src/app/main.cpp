@@ -179,8 +179,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, cons
 
 int runInfo(const CommonArgs& a) {
     auto scene = app::loadSceneFile(a.scene, overridesOf(a));
-    const double estimate = radiosity::estimatePatchCount(scene, scene.meshing);
-    app::checkPatchCount(a.scene, scene);
+    const double estimate = app::checkPatchCount(a.scene, scene);
     auto mesh = radiosity::premesh(scene, scene.meshing);
     size_t emissive = 0;
     for (const auto& g : scene.groups)

@@ -25,9 +25,9 @@ std::string voxelSetting(const scene::ClusterOptions& o) {
 }
 }  // namespace
 
-void checkPatchCount(const std::string& file, const scene::Scene& scene) {
+double checkPatchCount(const std::string& file, const scene::Scene& scene) {
     const double estimate = radiosity::estimatePatchCount(scene, scene.meshing);
-    if (estimate <= scene.meshing.maxPatches) return;
+    if (estimate <= scene.meshing.maxPatches) return estimate;
     const double edge = radiosity::targetEdge(scene, scene.meshing);
     throw InputError(placeMessage(
         file, scene.meshing.trianglesPerSurface > 0 ? "/radiosity/triangles_per_surface" : "/radiosity/max_edge",

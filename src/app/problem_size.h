@@ -11,8 +11,9 @@
 namespace rayrad::app {
 
 /// Before premeshing: throws InputError (naming `file` and the setting) when the premesh
-/// would make more than radiosity.max_patches patches (estimatePatchCount()).
-void checkPatchCount(const std::string& file, const scene::Scene& scene);
+/// would make more than radiosity.max_patches patches (estimatePatchCount()); returns
+/// the estimate.
+double checkPatchCount(const std::string& file, const scene::Scene& scene);
 
 /// After premeshing, one line each: a cluster voxel much smaller than the patches (every
 /// patch its own cluster, so each shot visits every patch), and sensor gathers that will

@@ -10,11 +10,13 @@ namespace rayrad::radiosity {
 
 namespace {
 constexpr double kFarDiameters = 4.0;
+/// Below this form factor one visibility ray instead of four (see the header).
+constexpr double kOneRayFormFactor = 1e-3;
 }
 
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance, double oneRayBelow) {
+                       double analyticDistance) {
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
     double f = 0;
@@ -27,7 +29,7 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
     }
     if (f <= 0) return 0.0;
     int visible = 0, rays = 0;
-    const int samples = kPi * f < oneRayBelow ? 1 : 4;
+    const int samples = f < kOneRayFormFactor ? 1 : 4;
     for (int k = 0; k < samples; ++k) {
         // Skip repeated pairs (small clusters list the same member several times).
         bool repeat = false;

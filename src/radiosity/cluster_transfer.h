@@ -17,17 +17,13 @@ namespace rayrad::radiosity {
 /// up to four rays from `sourceSamples` (member patches of the source, see
 /// powerSamples) to the receiver's sample patches.
 /// The source may be a mirror image (its own mesh, and a MirrorPath as `vis`).
-/// `oneRayBelow` (lx per cd/m²): when the unoccluded π F is below it, V comes from the
-/// first sample pair alone. Shots and the energy correction pass kOneRayTransfer, so the
-/// correction reconstructs what earlier shots delivered with the same rays.
-/// A transfer of less than this (π F: lx per cd/m², i.e. F < 10⁻³) gets one visibility
-/// ray instead of four: a wrong V costs at most a thousandth of the source's luminance,
-/// and most pairs of a room are this far apart.
-constexpr double kOneRayTransfer = 1e-3 * kPi;
-
+/// A pair with F < 10⁻³ (most pairs of a furnished room) takes V from the first sample
+/// pair alone: a wrong V there costs at most a thousandth of the source's luminance. The
+/// rule depends on geometry only, so the energy correction reconstructs what earlier
+/// shots delivered with the same rays.
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance, double oneRayBelow = 0);
+                       double analyticDistance);
 
 /// How a cluster→cluster shot from `source` is shared among the receiver's patches:
 /// shape[k] multiplies the illuminance computed at the receiver's centroid for member k.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <unordered_map>
@@ -47,11 +48,15 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
     // every patch: a patch touching a vertex has its centroid within 1.5 of its
     // diameters. Class k holds the patches with 1.5 d ≤ cell_k = cell_0 · 2^k, in a grid of
     // that cell, so the 27 cells around a vertex hold every such patch of the class.
-    double smallest = 0, largest = 0;
+    double smallest = std::numeric_limits<double>::infinity();
     for (const Patch& p : mesh.patches)
-        if (p.diameter > 0) smallest = smallest > 0 ? std::min(smallest, p.diameter) : p.diameter, largest = std::max(largest, p.diameter);
-    const double cell0 = std::max(1.5 * smallest, 1e-9 * std::max(scene.diagonal(), 1e-300));
-    const int classes = 1 + std::max(0, static_cast<int>(std::ceil(std::log2(std::max(1.0, 1.5 * largest / cell0)))));
+        if (p.diameter > 0) smallest = std::min(smallest, p.diameter);
+    const double cell0 = std::max(std::isfinite(smallest) ? 1.5 * smallest : 0.0, 1e-9 * std::max(scene.diagonal(), 1e-300));
+    auto classOf = [&](double diameter) {
+        int k = 0;
+        while (1.5 * diameter > std::ldexp(cell0, k)) ++k;
+        return k;
+    };
     using Key = std::tuple<int, int64_t, int64_t, int64_t>;  // class, cell
     auto keyOf = [&](int k, const Vec3& p) {
         const double cell = std::ldexp(cell0, k);
@@ -59,14 +64,14 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
         return Key{k, c(0), c(1), c(2)};
     };
     std::map<Key, std::vector<uint32_t>> byCell;
-    std::vector<char> classUsed(classes, 0);
+    std::vector<char> classUsed;
     for (uint32_t j = 0; j < mesh.patches.size(); ++j) {
-        const double d = mesh.patches[j].diameter;
-        int k = d > 0 ? std::max(0, static_cast<int>(std::ceil(std::log2(1.5 * d / cell0)))) : 0;
-        while (k + 1 < classes && 1.5 * d > std::ldexp(cell0, k)) ++k;  // rounding
+        const int k = classOf(mesh.patches[j].diameter);
+        if (k >= static_cast<int>(classUsed.size())) classUsed.resize(k + 1, 0);
         classUsed[k] = 1;
         byCell[keyOf(k, mesh.patches[j].centroid)].push_back(j);
     }
+    const int classes = static_cast<int>(classUsed.size());
 
     const double nudge = 1e-6 * scene.diagonal();
     const double seamTolerance = 1e-6 * scene.diagonal();

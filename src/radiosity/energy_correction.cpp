@@ -33,8 +33,7 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, s
     V shotSoFar = m_light[c].total - m_light[c].unshot;
     Correction moved;
     V received =
-        shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
-                                                     kOneRayTransfer);
+        shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);

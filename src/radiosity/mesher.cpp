@@ -53,6 +53,12 @@ std::pair<double, double> quadCells(const std::vector<Vec3>& q, const scene::Mes
     return {nu, nv};
 }
 
+/// With `triangles_per_surface`, every triangle of a group of `triangles` becomes k² lattice
+/// triangles: this k.
+int latticeFactor(const scene::MeshingOptions& options, size_t triangles) {
+    return std::max(1, static_cast<int>(std::lround(std::sqrt(double(options.trianglesPerSurface) / triangles))));
+}
+
 /// Triangles a longest-edge bisection to `edge` metres makes of triangle (a, b, c),
 /// estimated: the pieces' longest edges end up between edge/2 and edge, so about
 /// area / (0.3 edge²) of them, and at least one per `edge` along the longest side.
@@ -91,9 +97,9 @@ std::vector<double> gridLines(double length, double cell, const std::vector<Cont
 /// under a wall, and vertex values never average the two sides of it.
 void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int group,
               const scene::MeshingOptions& options, double edge, const QuadContacts& contacts, double tolerance) {
-    const double lu = quadSides(q).first, lv = quadSides(q).second;
+    const auto [lu, lv] = quadSides(q);
     const auto [cu, cv] = quadCells(q, options, edge);
-    int nu = static_cast<int>(cu), nv = static_cast<int>(cv);  // premeshTooLarge() keeps these small
+    int nu = static_cast<int>(cu), nv = static_cast<int>(cv);  // the app's checkPatchCount() keeps these small
     const std::vector<double> S = gridLines(lu, lu / nu * (1 + 1e-9), contacts.constS);
     const std::vector<double> T = gridLines(lv, lv / nv * (1 + 1e-9), contacts.constT);
     nu = static_cast<int>(S.size()) - 1;
@@ -189,9 +195,7 @@ std::vector<std::array<uint32_t, 3>> latticeTriangles(std::vector<Vec3>& positio
 void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris,
                    int group, const scene::MeshingOptions& options, double edge) {
     std::vector<Vec3> positions = g.positions;
-    const int k = options.trianglesPerSurface > 0
-                      ? std::max(1, static_cast<int>(std::lround(std::sqrt(double(options.trianglesPerSurface) / tris.size()))))
-                      : 0;
+    const int k = options.trianglesPerSurface > 0 ? latticeFactor(options, tris.size()) : 0;
     const auto triangles = k > 0 ? latticeTriangles(positions, tris, k) : bisectToSize(positions, tris, edge);
     std::vector<uint32_t> id(positions.size(), UINT32_MAX);  // local → mesh vertex, made when used
     auto meshVertex = [&](uint32_t v) {
@@ -233,8 +237,8 @@ double estimatePatchCount(const scene::Scene& scene, const scene::MeshingOptions
         const auto tris = groupTriangles(g);
         if (!options.premesh) {
             count += static_cast<double>(tris.size());
-        } else if (options.trianglesPerSurface > 0) {  // k² per triangle, k as meshTriangles() takes it
-            double k = std::max(1.0, std::round(std::sqrt(double(options.trianglesPerSurface) / tris.size())));
+        } else if (options.trianglesPerSurface > 0) {
+            const double k = latticeFactor(options, tris.size());
             count += k * k * static_cast<double>(tris.size());
         } else {
             for (const auto& t : tris) count += bisectedCount(g.positions[t[0]], g.positions[t[1]], g.positions[t[2]], edge);

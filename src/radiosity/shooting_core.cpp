@@ -262,6 +262,7 @@ V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>&
     const Cluster& D = m_clustering.clusters[receiver];
     const Cluster& C = s.clustering->clusters[c];
     V flux(0.0);
+    bool reached = false;
     for (uint32_t j : D.patches) {
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
@@ -295,8 +296,9 @@ V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>&
         }
         into[j] += deltaE;
         flux += deltaE * rec.area;
+        reached |= deltaE != V(0.0);  // deliveries of both signs may cancel in `flux`
     }
-    if (flux != V(0.0)) m_reached[receiver] = 1;
+    if (reached) m_reached[receiver] = 1;
     return flux;
 }
 
@@ -416,8 +418,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, c, d)) continue;
                 if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
-                    double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance,
-                                               kOneRayTransfer);
+                    double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance);
                     V flux(0.0);
                     if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
                     if (throughMirrors) deliveredTo[d] = flux;
