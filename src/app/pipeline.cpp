@@ -74,7 +74,7 @@ class PushPullObserver {
         if (gather) {
             m_lastGatherFraction = fraction;
             const auto& solver = m_run.scene.solver;
-            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree, solver.gatherLevels, 0.0,
+            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree, solver.gatherLevels, solver.gatherFarDiameters,
                              12, solver.gatherRefineLevels, solver.gatherRefineTolerance);
         }
         for (const auto& [s, where] : m_sensors) {
@@ -138,7 +138,10 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
     checkPatchCount(sceneFile, run.scene);
     run.report.begin("premesh");
-    run.mesh = radiosity::premesh(run.scene, run.scene.meshing);
+    {
+        Progress progress("premesh", options.quiet);
+        run.mesh = radiosity::premesh(run.scene, run.scene.meshing, [&](double f) { progress.update(f); });
+    }
     run.warnings = costWarnings(sceneFile, run.scene, run.mesh, options.wantSensors);
 
     run.report.begin("visibility (Embree BVH)");
@@ -154,8 +157,15 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.report.begin(run.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
                                                         run.lights->virtualLightCount(), run.mirrorImages)
                                           : std::string("direct light"));
-    radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples,
-                             run.solution);
+    {
+        Progress progress("direct light", options.quiet);
+        std::mutex m;
+        radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples,
+                                 run.solution, [&](double f) {
+                                     std::lock_guard<std::mutex> lock(m);
+                                     progress.update(f);
+                                 });
+    }
     if (auto w = backLightWarning(run.scene, run.solution, run.lights->emittedFlux())) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, *w);
         run.warnings.push_back(*w);
@@ -194,11 +204,16 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
         const auto& solver = run.scene.solver;
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                                     solver.gatherLevels, 0.0, 12, solver.gatherRefineLevels,
+                                     solver.gatherLevels, solver.gatherFarDiameters, 12, solver.gatherRefineLevels,
                                      solver.gatherRefineTolerance);
-        for (const auto& s : run.scene.sensors)
+        Progress progress("sensors", options.quiet);
+        const size_t count = run.scene.sensors.size();
+        for (const auto& s : run.scene.sensors) {
+            progress.update(static_cast<double>(run.sensors.size()) / count,
+                            fmt::format("{} of {}", run.sensors.size(), count));
             run.sensors.push_back({s, radiosity::evaluateSensor(run.scene, run.mesh, run.solution, *run.lights,
                                                                 *run.embree, gatherer, s)});
+        }
     } else if (options.wantSensors) {
         run.skipped.push_back("sensors (the scene has none)");
     }

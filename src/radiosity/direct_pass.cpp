@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <optional>
 
@@ -245,13 +246,15 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
 }  // namespace
 
 void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
-                   int areaSamples, RadiositySolution& solution) {
+                   int areaSamples, RadiositySolution& solution, const std::function<void(double)>& onProgress) {
     solution.directMean.assign(mesh.patches.size(), Rgb(0.0));
     solution.directCorner.assign(3 * mesh.patches.size(), Rgb(0.0));
     std::vector<double> mirrorAbsorbed(mesh.patches.size(), 0.0);  // lm, per patch
     std::vector<double> backReceived(mesh.patches.size(), 0.0);    // lm, per patch
     const auto refined = shadowSamplePoints(kShadowSamples);
+    std::atomic<size_t> done{0};
     tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
+        if (onProgress && ++done % 1024 == 0) onProgress(static_cast<double>(done) / mesh.patches.size());
         const Patch& p = mesh.patches[i];
         const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined);
         for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = front.corner[k];

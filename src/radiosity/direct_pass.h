@@ -1,6 +1,8 @@
 // The direct pass over the patches: primary light at centroids and vertices.
 #pragma once
 
+#include <functional>
+
 #include <core/visibility.h>
 #include <radiosity/direct_light.h>
 #include <radiosity/patch_mesh.h>
@@ -16,8 +18,10 @@ namespace rayrad::radiosity {
 /// of the patch). Evaluation points are pulled a hair toward the centroid so shadow rays
 /// from corners do not start inside a neighbouring wall. The backs of one-sided patches
 /// are evaluated the same way and what they receive is booked as absorbed
-/// (solution.backAbsorbedDirect). Deterministic; parallel.
+/// (solution.backAbsorbedDirect). Deterministic; parallel. `onProgress` gets the
+/// fraction of patches done, from any thread (the caller serialises it).
 void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
-                   int areaSamples, RadiositySolution& solution);
+                   int areaSamples, RadiositySolution& solution,
+                   const std::function<void(double)>& onProgress = {});
 
 }  // namespace rayrad::radiosity

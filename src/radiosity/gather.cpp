@@ -21,6 +21,8 @@ constexpr double kSplitRatio = 2.0;
 constexpr double kClusterVisibilityDiameters = 2.0;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
 constexpr int kRefineDepth = 6;
+/// Members per leaf of the far-field member trees.
+constexpr size_t kFarLeafSize = 4;
 }  // namespace
 
 std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance) {
@@ -78,26 +80,67 @@ Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double dist
 }
 
 Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                   const RadiositySolution& solution, const Visibility& vis, int levels, double farClusterDiameters,
+                   const RadiositySolution& solution, const Visibility& vis, int levels, double farDiameters,
                    int maxSplitDepth, int refineLevels, double refineTolerance)
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_levels(levels),
-      m_nudge(1e-6 * scene.diagonal()), m_farClusterDiameters(farClusterDiameters),
-      m_maxSplitDepth(maxSplitDepth), m_refineLevels(refineLevels), m_refineTolerance(refineTolerance) {
-    for (const auto& c : clustering.clusters) {
-        Rgb L(0.0);
-        double size = 0, brightestPower = -1;
-        uint32_t brightest = c.samples[0];
-        for (uint32_t j : c.patches) {
-            Rgb power = solution.reflectedLuminance(scene, mesh, j) * mesh.patches[j].area;  // cd
-            L += power;
-            size = std::max(size, mesh.patches[j].diameter);
-            if (luminance(power) > brightestPower) brightestPower = luminance(power), brightest = j;
-        }
-        m_clusterLuminance.push_back(L / c.area);
+      m_nudge(1e-6 * scene.diagonal()), m_farDiameters(farDiameters), m_maxSplitDepth(maxSplitDepth),
+      m_refineLevels(refineLevels), m_refineTolerance(refineTolerance) {
+    m_reflected.resize(mesh.patches.size());
+    for (size_t j = 0; j < mesh.patches.size(); ++j) m_reflected[j] = solution.reflectedLuminance(scene, mesh, j);
+    m_treePosition.resize(mesh.patches.size());
+    for (const auto& C : clustering.clusters) {
+        double size = 0;
+        for (uint32_t j : C.patches) size = std::max(size, mesh.patches[j].diameter);
         m_clusterPatchSize.push_back(size);
-        m_brightestPatch.push_back(brightest);
+        MemberTree tree = memberTree(mesh, C, kFarLeafSize);
+        for (uint32_t i = 0; i < tree.order.size(); ++i) m_treePosition[C.patches[tree.order[i]]] = i;
+        std::vector<FarSource> far(tree.nodes.size());
+        for (size_t i = 0; i < tree.nodes.size(); ++i) far[i] = farSource(tree, tree.nodes[i], C);
+        m_trees.push_back(std::move(tree));
+        m_far.push_back(std::move(far));
     }
     m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
+}
+
+Gatherer::FarSource Gatherer::farSource(const MemberTree& tree, const MemberNode& node, const Cluster& C) const {
+    FarSource f;
+    // Luminance-weighted centroid: the far field's first-order term vanishes there.
+    double weight = 0, brightestPower = -1;
+    Vec3 at(0.0);
+    Rgb power(0.0);
+    for (uint32_t k = node.begin; k < node.end; ++k) {
+        const uint32_t j = C.patches[tree.order[k]];
+        const Patch& p = m_mesh.patches[j];
+        const Rgb pj = m_reflected[j] * p.area;  // cd
+        for (int ch = 0; ch < 3; ++ch) f.flux[ch] += pj[ch] * p.normal;
+        power += pj;
+        weight += luminance(pj);
+        at += luminance(pj) * p.centroid;
+        if (luminance(pj) > brightestPower) brightestPower = luminance(pj), f.brightest = j;
+    }
+    f.at = weight > 0 ? at / weight : node.centroid;
+    f.share = weight > 0 ? power / weight : Rgb(0.0);
+    double r = 0;
+    for (uint32_t k = node.begin; k < node.end; ++k) {
+        const uint32_t j = C.patches[tree.order[k]];
+        const Patch& p = m_mesh.patches[j];
+        // ∫ (y − at)(y − at)ᵀ dA = A [(c − at)(c − at)ᵀ + Σ_k (v_k − c)(v_k − c)ᵀ / 12].
+        const Vec3 dc = p.centroid - f.at;
+        glm::dmat3 second = glm::outerProduct(dc, dc);
+        for (int corner = 0; corner < 3; ++corner) {
+            const Vec3 v = m_mesh.corner(p, corner);
+            second += glm::outerProduct(v - p.centroid, v - p.centroid) / 12.0;
+            r = std::max(r, glm::length(v - f.at));
+        }
+        f.moment += luminance(m_reflected[j] * p.area) * second;
+    }
+    f.reach = 2 * r;
+    // Φ of the luminance: each component is Y of the channels' components.
+    const Vec3 fluxY(luminance(Rgb(f.flux[0].x, f.flux[1].x, f.flux[2].x)),
+                     luminance(Rgb(f.flux[0].y, f.flux[1].y, f.flux[2].y)),
+                     luminance(Rgb(f.flux[0].z, f.flux[1].z, f.flux[2].z)));
+    f.normal = glm::length(fluxY) > 0 ? glm::normalize(fluxY) : Vec3(0.0);
+    return f;
 }
 
 Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
@@ -175,6 +218,34 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
 }
 
+Rgb Gatherer::farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image) {
+    // In an image: the centroid mirrored, Φ and m turned by R, M' = R M Rᵀ, times Π Ks.
+    const glm::dmat3 R = image ? glm::dmat3(image->transform) : glm::dmat3(1.0);
+    const Vec3 u = (image ? image->point(f.at) : f.at) - x;
+    const double s = glm::dot(u, u), r = std::sqrt(s);
+    const double a = glm::dot(n, u);  // r cosθ_x
+    if (a <= 0) return Rgb(0.0);
+    const Vec3 m = R * f.normal;
+    const double b = -glm::dot(m, u);  // r cosθ_y
+    // The expansion is of g(u) = a b / s², which is smooth but not clamped: a node that
+    // faces away (b ≤ 0) gives nothing, whatever its second-order term says.
+    if (b <= 0) return Rgb(0.0);
+    // ½ tr(H M), H the Hessian of g:
+    //   H = −(n mᵀ + m nᵀ)/s² − 4 (v uᵀ + u vᵀ)/s³ + 24 a b u uᵀ/s⁴ − 4 a b I/s³, v = b n − a m.
+    const glm::dmat3 M = image ? R * f.moment * glm::transpose(R) : f.moment;
+    const double s2 = s * s, ab = a * b;
+    const double trace = M[0][0] + M[1][1] + M[2][2];
+    const double trHM = -2 * glm::dot(n, M * m) / s2 - 8 * glm::dot(u, M * (b * n - a * m)) / (s2 * s) +
+                        24 * ab * glm::dot(u, M * u) / (s2 * s2) - 4 * ab * trace / (s2 * s);
+    const Rgb weight = image ? image->weight : Rgb(1.0);
+    Rgb e(0.0);
+    for (int ch = 0; ch < 3; ++ch) {
+        const double zeroth = a * std::max(0.0, -glm::dot(R * f.flux[ch], u)) / (s * r * r);  // cosθ_x (−Φ·u) / r³
+        e[ch] = weight[ch] * std::max(0.0, zeroth + f.share[ch] * 0.5 * trHM);
+    }
+    return e;
+}
+
 Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level) {
     if (level <= 0) return gatherWith(x, n, nullptr, true);
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
@@ -231,8 +302,8 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     }
 
     // Sum over clusters: near patches by sub-triangles, other patches with their own rays
-    // when close, far clusters with one shared ray (form factors still per member), or
-    // as one source beyond m_farClusterDiameters when asked.
+    // when close, far clusters with one shared ray (form factors still per member), and
+    // far member-tree nodes as one source each (see the constructor's comment).
     // Source s = 0 is the real scene, s = i + 1 its image i in the mirrors.
     auto contribution = [&](size_t s, size_t c) {
         const bool real = s == 0;
@@ -241,44 +312,73 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         const Cluster& C = real ? m_clustering.clusters[c] : view->geometry.clustering.clusters[c];
         const Visibility& vis = real ? m_vis : *view->path;
         const Rgb weight = real ? Rgb(1.0) : view->image.weight;
-        double d2 = glm::dot(C.centroid - x, C.centroid - x);
-        double asOne = m_farClusterDiameters * C.diameter;
-        if (asOne > 0 && C.patches.size() > 1 && d2 > asOne * asOne) {
-            double f = formFactorPointApprox(x, n, C.centroid, C.normal, C.projectedArea);
-            bool seen = f > 0 && vis.visibleFromSurface(x, n, mesh.patches[m_brightestPatch[c]].centroid);
-            return seen ? Rgb(weight * m_clusterLuminance[c] * (kPi * f)) : Rgb(0.0);  // Ks π L_C F V
-        }
         auto nearOf = std::lower_bound(nearClusters.begin(), nearClusters.end(), c,
                                        [](const NearCluster& e, size_t k) { return e.cluster < k; });
         const bool hasNear = real && nearOf != nearClusters.end() && nearOf->cluster == c;
-        double far = kClusterVisibilityDiameters * C.diameter;
-        bool shared = C.patches.size() > 1 && d2 > far * far;
+        const auto nearFirst = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->begin) : near.end();
+        const auto nearLast = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->end) : near.end();
+        const double d2 = glm::dot(C.centroid - x, C.centroid - x);
+        const double far = kClusterVisibilityDiameters * C.diameter;
+        const bool shared = C.patches.size() > 1 && d2 > far * far;
         Rgb sum(0.0), sharedSum(0.0);
         uint32_t strongest = C.samples[0];  // the shared ray leaves from the largest contribution
         double strongestE = -1;
-        for (uint32_t j : C.patches) {
+        // A contribution e (lx) seen along the ray to patch `rayTo`'s centroid.
+        auto add = [&](const Rgb& e, uint32_t rayTo) {
+            if (!shared) {
+                if (vis.visibleFromSurface(x, n, mesh.patches[rayTo].centroid)) sum += e;
+            } else {
+                sharedSum += e;
+                if (luminance(e) > strongestE) strongestE = luminance(e), strongest = rayTo;
+            }
+        };
+        auto addPatch = [&](uint32_t j) {
             const Patch& p = mesh.patches[j];
-            if (hasNear) {
-                const auto first = near.begin() + static_cast<std::ptrdiff_t>(nearOf->begin);
-                const auto last = near.begin() + static_cast<std::ptrdiff_t>(nearOf->end);
-                auto it = std::find_if(first, last, [j](const Near& e) { return e.patch == j; });
-                if (it != last) {
-                    for (const NearPiece& piece : it->pieces)
-                        sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), p.normal, piece.depth);
+            auto it = std::find_if(nearFirst, nearLast, [j](const Near& e) { return e.patch == j; });
+            if (it != nearLast) {
+                for (const NearPiece& piece : it->pieces)
+                    sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), p.normal, piece.depth);
+                return;
+            }
+            const Rgb L = weight * m_reflected[j];
+            if (L == Rgb(0.0)) return;
+            // Analytic within analyticDistance patch diameters, point approximation beyond.
+            const double f = patchFormFactor(mesh, p, x, n, m_scene.solver.analyticDistance);
+            if (f > 0) add(L * (kPi * f), j);  // E = π L F
+        };
+        auto addFar = [&](const FarSource& f) {
+            const Vec3 e = farField(f, x, n, real ? nullptr : &view->image);
+            if (e != Rgb(0.0)) add(e, f.brightest);
+        };
+        auto holdsNear = [&](const MemberNode& node) {
+            return std::any_of(nearFirst, nearLast, [&](const Near& e) {
+                const uint32_t k = m_treePosition[e.patch];
+                return k >= node.begin && k < node.end;
+            });
+        };
+        // Depth first through the member tree: a node far enough counts as one source.
+        const MemberTree& tree = m_trees[c];
+        const std::vector<FarSource>& farSources = m_far[c];
+        uint32_t stack[128];  // the tree is at most 32 deep (median splits of < 2³² members)
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const uint32_t i = stack[--top];
+            const MemberNode& node = tree.nodes[i];
+            const FarSource& f = farSources[i];
+            if (m_farDiameters > 0 && node.size() > 1) {
+                const Vec3 at = real ? f.at : view->image.point(f.at);
+                const double limit = m_farDiameters * f.reach;
+                if (glm::dot(at - x, at - x) > limit * limit && !holdsNear(node)) {
+                    addFar(f);
                     continue;
                 }
             }
-            Rgb L = weight * m_solution.reflectedLuminance(m_scene, m_mesh, j);
-            if (L == Rgb(0.0)) continue;
-            // Analytic within analyticDistance patch diameters, point approximation beyond.
-            double f = patchFormFactor(mesh, p, x, n, m_scene.solver.analyticDistance);
-            if (f <= 0) continue;
-            Rgb e = L * (kPi * f);  // E = π L F
-            if (!shared) {
-                if (vis.visibleFromSurface(x, n, p.centroid)) sum += e;
+            if (node.leaf()) {
+                for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             } else {
-                sharedSum += e;
-                if (luminance(e) > strongestE) strongestE = luminance(e), strongest = j;
+                stack[top++] = node.right;
+                stack[top++] = node.left;
             }
         }
         if (shared && sharedSum != Rgb(0.0) && vis.visibleFromSurface(x, n, mesh.patches[strongest].centroid))

@@ -4,12 +4,14 @@
 #include <core/visibility.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
+#include <radiosity/member_tree.h>
 #include <radiosity/mirror_images.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
 #include <array>
+#include <glm/mat3x3.hpp>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -56,14 +58,16 @@ struct SensorValue {
 class Gatherer {
   public:
     /// Clusters farther than a few of their diameters from the point share one
-    /// visibility ray (to their sample patch nearest the centroid); their members' form
-    /// factors are still summed one by one.
-    /// `farClusterDiameters` > 0: clusters farther than that many of their diameters
-    /// count as one source (their mean reflected luminance, projected area, centroid) —
-    /// cheaper, for the many gathers at mesh vertices; 0 keeps every patch (sensors).
+    /// visibility ray (to their member with the largest contribution).
+    /// `farDiameters` > 0: a node of a cluster's member tree (the whole cluster, its
+    /// halves, their halves …) farther than that many of its diameters counts as one
+    /// source, E = cosθ_x · max(0, −Φ·d) / r³ with Φ = Σ L_j A_j n_j (its luminous
+    /// vector) and d from x to its luminance-weighted centroid — a Barnes–Hut far field
+    /// whose relative error falls as (1/farDiameters)²; it takes one visibility ray.
+    /// 0 sums every patch on its own. Nodes holding a near patch are always opened.
     /// `refineLevels` and `refineTolerance`: see above (0 levels = no refinement).
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-             const RadiositySolution& solution, const Visibility& vis, int levels, double farClusterDiameters = 0,
+             const RadiositySolution& solution, const Visibility& vis, int levels, double farDiameters = 0,
              int maxSplitDepth = 12, int refineLevels = 0, double refineTolerance = 0.002);
 
     /// Indirect illuminance (lx, RGB) at x with unit normal n.
@@ -119,13 +123,27 @@ class Gatherer {
     const Visibility& m_vis;
     int m_levels;
     double m_nudge;
-    double m_farClusterDiameters;
+    double m_farDiameters;
     int m_maxSplitDepth;  ///< sub-triangle refinement toward the point
-    std::vector<Rgb> m_clusterLuminance;    ///< area-weighted mean reflected luminance per cluster
+    std::vector<Rgb> m_reflected;           ///< per patch, reflected luminance ρ E / π (cd/m²)
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
-    /// Per cluster, the member with the most reflected power: a far cluster's one
-    /// visibility ray leaves from it (the centre member may be hidden, e.g. behind a mirror).
-    std::vector<uint32_t> m_brightestPatch;
+    /// A member-tree node seen from far away as one source: its reflected light's
+    /// moments up to the second, for E ≈ W g(at) + ½ tr(H_g M) with g = cosθ_x cosθ_y / r².
+    struct FarSource {
+        Vec3 at{0.0};                 ///< luminance-weighted centroid, m
+        double reach = 0;             ///< twice the largest distance from `at` to a member corner, m
+        std::array<Vec3, 3> flux{};   ///< per channel Φ = Σ L_j A_j n_j (cd)
+        Vec3 normal{0.0};             ///< Φ's direction (luminance), unit
+        Rgb share{0.0};               ///< per channel Σ L_j A_j over the luminance sum W
+        glm::dmat3 moment{0.0};       ///< M = Σ Y(L_j) ∫_{A_j} (y − at)(y − at)ᵀ dA (cd m²)
+        uint32_t brightest = 0;       ///< member with the most reflected power: the node's ray goes there
+    };
+    FarSource farSource(const MemberTree& tree, const MemberNode& node, const Cluster& C) const;
+    /// E ≈ W g(at) + ½ tr(H_g M) per channel (lx) at x with normal n; `image` mirrors the node.
+    static Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image);
+    std::vector<MemberTree> m_trees;                 ///< per cluster
+    std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
+    std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
     int m_refineLevels;
     double m_refineTolerance;
     std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect

@@ -247,13 +247,15 @@ double estimatePatchCount(const scene::Scene& scene, const scene::MeshingOptions
     return count;
 }
 
-PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options) {
+PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options,
+                  const std::function<void(double)>& onProgress) {
     PatchMesh mesh;
     double edge = targetEdge(scene, options);
     CHECK(edge > 0);
     const auto bounds = groupBounds(scene);
     const double tolerance = kContactTolerance * scene.diagonal();
     for (size_t gi = 0; gi < scene.groups.size(); ++gi) {
+        if (onProgress) onProgress(static_cast<double>(gi) / scene.groups.size());
         const SurfaceGroup& g = scene.groups[gi];
         int group = static_cast<int>(gi);
         if (!scene.isPatchSurface(g)) continue;  // mirrors and glass: no radiosity patches

@@ -1,6 +1,8 @@
 // Premeshing: every input polygon becomes well-shaped triangles (the radiosity patches).
 #pragma once
 
+#include <functional>
+
 #include <radiosity/patch_mesh.h>
 #include <scene/scene.h>
 
@@ -12,7 +14,9 @@ namespace rayrad::radiosity {
 /// triangle bisected along its longest edge until no edge exceeds the target (its own
 /// size decides, conforming where triangles share corners: no T-junctions); with
 /// `triangles_per_surface`, every triangle of a group into the same k² lattice triangles.
-PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options);
+/// `onProgress` gets the fraction of surface groups done.
+PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options,
+                  const std::function<void(double)>& onProgress = {});
 
 /// The backs of the mirrors, as triangles (normals out of the backs) of about the
 /// premesher's size. Mirrors take no part in the radiosity, but light that reaches a

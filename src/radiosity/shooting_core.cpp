@@ -2,7 +2,7 @@
 
 #include <radiosity/cluster_transfer.h>
 #include <radiosity/form_factor.h>
-#include <radiosity/member_groups.h>
+#include <radiosity/member_tree.h>
 #include <radiosity/patch_transfer.h>
 
 #include <tbb/blocked_range.h>
@@ -27,7 +27,7 @@ constexpr int64_t kStallShots = 2000;
 /// Patch→patch: a receiver this many member-group diameters away shares one visibility
 /// ray for the whole group (as the final gather does for clusters).
 constexpr double kSharedRayDiameters = 2.0;
-/// Members per group (see member_groups.h).
+/// Members per group (see member_tree.h).
 constexpr size_t kGroupSize = 8;
 }  // namespace
 

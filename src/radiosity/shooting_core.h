@@ -3,7 +3,7 @@
 
 #include <radiosity/light_value.h>
 #include <radiosity/closure.h>
-#include <radiosity/member_groups.h>
+#include <radiosity/member_tree.h>
 #include <radiosity/mirror_images.h>
 #include <radiosity/shooting_solver.h>
 
@@ -149,7 +149,7 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
     /// deliver() visits only the clusters a shot reached.
     std::vector<char> m_reached;
-    /// Per cluster, its members in small groups (member_groups.h), in real space; an
+    /// Per cluster, its members in small groups (member_tree.h), in real space; an
     /// image's groups are the same members, their centroids mirrored.
     std::vector<std::vector<MemberGroup>> m_memberGroups;
     bool m_conserve = false;

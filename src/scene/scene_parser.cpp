@@ -370,6 +370,7 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
     d.solver.gatherRefineLevels = r.integer("gather_refine_levels", d.solver.gatherRefineLevels, 0, 8);
     d.solver.gatherRefineTolerance = r.nonNegative("gather_refine_tolerance", d.solver.gatherRefineTolerance);
+    d.solver.gatherFarDiameters = r.nonNegative("gather_far_diameters", d.solver.gatherFarDiameters);
     d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
     d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
     d.solver.conserveEnergy = r.boolean("conserve_energy").value_or(d.solver.conserveEnergy);

@@ -73,6 +73,9 @@ struct SolverOptions {
     /// the indirect light's singular fall-off into concave edges and corners (0 = off).
     int gatherRefineLevels = 2;
     double gatherRefineTolerance = 0.002;
+    /// Sensor gather: a part of a cluster (its member tree's nodes) farther than this
+    /// many of its diameters counts as one source (0 = every patch on its own).
+    double gatherFarDiameters = 3.0;
     /// Vertex values from centroid values: false = the paper's plain average of the
     /// triangles around the vertex; true = a least-squares plane through the centroid
     /// values of the two rings of triangles around it, evaluated at the vertex (exact for
