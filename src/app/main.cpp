@@ -9,6 +9,8 @@
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <radiosity/clusters.h>
+#include <radiosity/direct_light.h>
+#include <radiosity/mirror_images.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
 #include <raytrace/embree_scene.h>
@@ -206,6 +208,13 @@ int runInfo(const CommonArgs& a) {
                                           glm::degrees(std::acos(l.cosInner)), glm::degrees(std::acos(l.cosOuter)))
                             : "");
     fmt::print("sensors: {}\n", scene.sensors.size());
+    const size_t images = radiosity::mirrorImagesFor(scene).size();
+    if (!scene.mirrors.empty())
+        fmt::print("mirror images: {} ({}){}\n", images, scene.solver.mirrorImages ? "chains of reflections" : "mirrors ignored",
+                   images > 0 ? fmt::format(", {} virtual lights", radiosity::DirectLight(scene).virtualLightCount()) : "");
+    fmt::print("expected peak memory: about {:.0f} MiB ({} patches{})\n",
+               app::estimatePeakBytes(mesh.patches.size(), mesh.vertices.size(), images) / (1 << 20),
+               mesh.patches.size(), images > 0 ? fmt::format(", {} mirror images each copying them", images) : "");
     if (scene.camera) fmt::print("camera: {}x{}, vfov {} deg\n", scene.camera->width, scene.camera->height, scene.camera->verticalFovDeg);
     fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax), scene.diagonal());
     if (scene.warnings.degeneratePolygons > 0)

@@ -11,9 +11,14 @@
 namespace rayrad::app {
 
 namespace {
-/// CPU seconds per sensor and patch of a final gather with the default refinement,
-/// measured on the 19 200-patch cube (a 32×32 grid: 27 CPU-s).
-constexpr double kGatherSecondsPerPatch = 1.4e-6;
+/// CPU seconds per sensor and patch of a final gather with the default refinement and
+/// far field, measured on the 19 200-patch cube (a 32×32 grid: 10 CPU-s). The
+/// hierarchical far field grows more slowly than the patch count, so this is an upper bound.
+constexpr double kGatherSecondsPerPatch = 0.5e-6;
+/// Peak memory model, measured: the process with its libraries and Embree (cube runs
+/// start near 130 MiB), and bytes per patch at 1.2 M patches (bench/scale.sh).
+constexpr double kBaseBytes = 130.0 * (1 << 20);
+constexpr double kBytesPerPatch = 450;
 /// Voxels per side the cluster grid can index.
 constexpr double kMaxVoxelsPerSide = 1e9;
 
@@ -34,6 +39,13 @@ double checkPatchCount(const std::string& file, const scene::Scene& scene) {
         fmt::format("premeshing to {:.3g} m edges would make about {:.3g} patches (~{:.3g} GiB), more than "
                     "radiosity.max_patches ({:.3g}); use a larger max_edge, or raise max_patches if you mean it",
                     edge, estimate, estimate * 1024 / (1 << 30), scene.meshing.maxPatches)));
+}
+
+double estimatePeakBytes(size_t patches, size_t vertices, size_t mirrorImages) {
+    // An image holds its own patches, vertices and cluster member lists.
+    const double perImage = static_cast<double>(patches) * (sizeof(radiosity::Patch) + sizeof(uint32_t)) +
+                            static_cast<double>(vertices) * sizeof(Vec3);
+    return kBaseBytes + kBytesPerPatch * static_cast<double>(patches) + perImage * static_cast<double>(mirrorImages);
 }
 
 std::vector<std::string> costWarnings(const std::string& file, const scene::Scene& scene,
@@ -63,7 +75,7 @@ std::vector<std::string> costWarnings(const std::string& file, const scene::Scen
         const double seconds = kGatherSecondsPerPatch * static_cast<double>(scene.sensors.size()) * patches;
         if (seconds > 600)
             out.push_back(fmt::format("/sensors: {} sensors × {} patches: the final gather will take about {:.0f} "
-                                      "CPU-minutes (each sensor visits every patch)",
+                                      "CPU-minutes",
                                       scene.sensors.size(), patches, seconds / 60));
     }
     return out;

@@ -22,7 +22,7 @@ constexpr double kClusterVisibilityDiameters = 2.0;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
 constexpr int kRefineDepth = 6;
 /// Members per leaf of the far-field member trees.
-constexpr size_t kFarLeafSize = 4;
+constexpr size_t kFarLeafSize = 8;
 }  // namespace
 
 std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance) {
