@@ -200,6 +200,7 @@ int runInfo(const CommonArgs& a) {
     auto embree = raytrace::buildEmbreeScene(scene, mesh);
     fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters, embree.get()).statistics());
     for (const auto& w : app::costWarnings(a.scene, scene, mesh, true)) fmt::print("warning: {}\n", w);
+    std::fflush(stdout);  // before the per-sensor checks, which take a while for very many sensors
     for (const auto& w : app::sceneWarnings(scene, mesh, *embree)) fmt::print("warning: {}\n", w);
     fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
     for (const auto& l : scene.lights)

@@ -142,13 +142,17 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         Progress progress("premesh", options.quiet);
         run.mesh = radiosity::premesh(run.scene, run.scene.meshing, [&](double f) { progress.update(f); });
     }
+    // Cost warnings at once: the work they warn of may start next.
     run.warnings = costWarnings(sceneFile, run.scene, run.mesh, options.wantSensors);
+    if (!options.quiet)
+        for (const auto& w : run.warnings) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
 
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
-    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree)) run.warnings.push_back(std::move(w));
-    if (!options.quiet)
-        for (const auto& w : run.warnings) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
+    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree)) {
+        if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
+        run.warnings.push_back(std::move(w));
+    }
 
     run.lights = std::make_unique<radiosity::DirectLight>(run.scene);
     run.mirrorImages = radiosity::mirrorImagesFor(run.scene).size();
