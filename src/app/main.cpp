@@ -10,7 +10,6 @@
 #include <core/output_file.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
-#include <radiosity/mirror_images.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
 #include <raytrace/embree_scene.h>
@@ -209,10 +208,11 @@ int runInfo(const CommonArgs& a) {
                                           glm::degrees(std::acos(l.cosInner)), glm::degrees(std::acos(l.cosOuter)))
                             : "");
     fmt::print("sensors: {}\n", scene.sensors.size());
-    const size_t images = radiosity::mirrorImagesFor(scene).size();
+    const radiosity::DirectLight lights(scene);  // its virtual lights are the mirror images' copies of the lights
+    const size_t images = lights.imageCount();
     if (!scene.mirrors.empty())
         fmt::print("mirror images: {} ({}){}\n", images, scene.solver.mirrorImages ? "chains of reflections" : "mirrors ignored",
-                   images > 0 ? fmt::format(", {} virtual lights", radiosity::DirectLight(scene).virtualLightCount()) : "");
+                   images > 0 ? fmt::format(", {} virtual lights", lights.virtualLightCount()) : "");
     fmt::print("expected peak memory: about {:.0f} MiB ({} patches{})\n",
                app::estimatePeakBytes(mesh.patches.size(), mesh.vertices.size(), images) / (1 << 20),
                mesh.patches.size(), images > 0 ? fmt::format(", {} mirror images each copying them", images) : "");

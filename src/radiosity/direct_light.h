@@ -83,6 +83,7 @@ class DirectLight {
     const std::vector<scene::PointLight>& pointLights() const { return m_pointLights; }
     /// Total flux in lm emitted by all primary lights (luminance-weighted).
     double emittedFlux() const;
+    size_t imageCount() const { return m_images.size(); }
     size_t virtualLightCount() const { return m_images.size() * (m_pointLights.size() + m_areaLights.size()); }
 
   private:

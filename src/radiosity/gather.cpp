@@ -112,11 +112,12 @@ Gatherer::FarSource Gatherer::farSource(const MemberTree& tree, const MemberNode
         const uint32_t j = C.patches[tree.order[k]];
         const Patch& p = m_mesh.patches[j];
         const Rgb pj = m_reflected[j] * p.area;  // cd
+        const double y = luminance(pj);
         for (int ch = 0; ch < 3; ++ch) f.flux[ch] += pj[ch] * p.normal;
         power += pj;
-        weight += luminance(pj);
-        at += luminance(pj) * p.centroid;
-        if (luminance(pj) > brightestPower) brightestPower = luminance(pj), f.brightest = j;
+        weight += y;
+        at += y * p.centroid;
+        if (y > brightestPower) brightestPower = y, f.brightest = j;
     }
     f.at = weight > 0 ? at / weight : node.centroid;
     f.share = weight > 0 ? power / weight : Rgb(0.0);
@@ -132,7 +133,7 @@ Gatherer::FarSource Gatherer::farSource(const MemberTree& tree, const MemberNode
             second += glm::outerProduct(v - p.centroid, v - p.centroid) / 12.0;
             r = std::max(r, glm::length(v - f.at));
         }
-        f.moment += luminance(m_reflected[j] * p.area) * second;
+        f.moment += luminance(m_reflected[j]) * p.area * second;
     }
     f.reach = 2 * r;
     // Φ of the luminance: each component is Y of the channels' components.
@@ -220,18 +221,19 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
 
 Rgb Gatherer::farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image) {
     // In an image: the centroid mirrored, Φ and m turned by R, M' = R M Rᵀ, times Π Ks.
-    const glm::dmat3 R = image ? glm::dmat3(image->transform) : glm::dmat3(1.0);
+    auto turn = [image](const Vec3& v) { return image ? image->direction(v) : v; };
     const Vec3 u = (image ? image->point(f.at) : f.at) - x;
     const double s = glm::dot(u, u), r = std::sqrt(s);
     const double a = glm::dot(n, u);  // r cosθ_x
     if (a <= 0) return Rgb(0.0);
-    const Vec3 m = R * f.normal;
+    const Vec3 m = turn(f.normal);
     const double b = -glm::dot(m, u);  // r cosθ_y
     // The expansion is of g(u) = a b / s², which is smooth but not clamped: a node that
     // faces away (b ≤ 0) gives nothing, whatever its second-order term says.
     if (b <= 0) return Rgb(0.0);
     // ½ tr(H M), H the Hessian of g:
     //   H = −(n mᵀ + m nᵀ)/s² − 4 (v uᵀ + u vᵀ)/s³ + 24 a b u uᵀ/s⁴ − 4 a b I/s³, v = b n − a m.
+    const glm::dmat3 R = image ? glm::dmat3(image->transform) : glm::dmat3(1.0);
     const glm::dmat3 M = image ? R * f.moment * glm::transpose(R) : f.moment;
     const double s2 = s * s, ab = a * b;
     const double trace = M[0][0] + M[1][1] + M[2][2];
@@ -240,7 +242,7 @@ Rgb Gatherer::farField(const FarSource& f, const Vec3& x, const Vec3& n, const M
     const Rgb weight = image ? image->weight : Rgb(1.0);
     Rgb e(0.0);
     for (int ch = 0; ch < 3; ++ch) {
-        const double zeroth = a * std::max(0.0, -glm::dot(R * f.flux[ch], u)) / (s * r * r);  // cosθ_x (−Φ·u) / r³
+        const double zeroth = a * std::max(0.0, -glm::dot(turn(f.flux[ch]), u)) / (s * s);  // cosθ_x (−Φ·u) / r³
         e[ch] = weight[ch] * std::max(0.0, zeroth + f.share[ch] * 0.5 * trHM);
     }
     return e;

@@ -10,8 +10,9 @@
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
-#include <array>
 #include <glm/mat3x3.hpp>
+
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -61,10 +62,8 @@ class Gatherer {
     /// visibility ray (to their member with the largest contribution).
     /// `farDiameters` > 0: a node of a cluster's member tree (the whole cluster, its
     /// halves, their halves …) farther than that many of its diameters counts as one
-    /// source, E = cosθ_x · max(0, −Φ·d) / r³ with Φ = Σ L_j A_j n_j (its luminous
-    /// vector) and d from x to its luminance-weighted centroid — a Barnes–Hut far field
-    /// whose relative error falls as (1/farDiameters)²; it takes one visibility ray.
-    /// 0 sums every patch on its own. Nodes holding a near patch are always opened.
+    /// source with one visibility ray (a Barnes–Hut far field; see farField()). 0 sums
+    /// every patch on its own. Nodes holding a near patch are always opened.
     /// `refineLevels` and `refineTolerance`: see above (0 levels = no refinement).
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
              const RadiositySolution& solution, const Visibility& vis, int levels, double farDiameters = 0,
@@ -139,7 +138,10 @@ class Gatherer {
         uint32_t brightest = 0;       ///< member with the most reflected power: the node's ray goes there
     };
     FarSource farSource(const MemberTree& tree, const MemberNode& node, const Cluster& C) const;
-    /// E ≈ W g(at) + ½ tr(H_g M) per channel (lx) at x with normal n; `image` mirrors the node.
+    /// The node's light at x with normal n (lx, RGB): g = cosθ_x cosθ_y / r² expanded about
+    /// its luminance-weighted centroid to second order, E ≈ cosθ_x (−Φ·u)/r³ + ½ tr(H_g M)
+    /// (the first-order term vanishes there); nothing when the node faces away.
+    /// `image` (or null) mirrors the node.
     static Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image);
     std::vector<MemberTree> m_trees;                 ///< per cluster
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree

@@ -371,6 +371,9 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.gatherRefineLevels = r.integer("gather_refine_levels", d.solver.gatherRefineLevels, 0, 8);
     d.solver.gatherRefineTolerance = r.nonNegative("gather_refine_tolerance", d.solver.gatherRefineTolerance);
     d.solver.gatherFarDiameters = r.nonNegative("gather_far_diameters", d.solver.gatherFarDiameters);
+    if (d.solver.gatherFarDiameters > 0 && d.solver.gatherFarDiameters < 2)
+        r.error("gather_far_diameters", "expected 0 (every patch on its own) or at least 2 (nearer, a point sits "
+                                        "inside the node it would take as one source)");
     d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
     d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
     d.solver.conserveEnergy = r.boolean("conserve_energy").value_or(d.solver.conserveEnergy);
