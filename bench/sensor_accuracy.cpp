@@ -4,7 +4,8 @@
 // halves differ, gathered value, error), then RMS and max over random points on all six
 // walls (the ten worst listed), and the time of the solve and the gathers.
 // Usage: build/bench/sensor_accuracy [max_edge (0.25: 19 200 triangles)] [random points (24)]
-//        [paths per half (200000)] [gather_refine_levels (scene default)]
+//        [paths per half (200000)] [gather_refine_levels (scene default, -1)] [key=value ...]
+//        (the last: scene settings, as with --set, e.g. radiosity.gather_min_weight=0)
 #include <app/pipeline.h>
 #include <core/random.h>
 
@@ -70,6 +71,15 @@ int main(int argc, char** argv) {
     options.quiet = true;
     if (refineLevels >= 0)
         options.overrides.push_back({"radiosity.gather_refine_levels", std::to_string(refineLevels)});
+    for (int i = 5; i < argc; ++i) {
+        const std::string setting = argv[i];
+        const size_t eq = setting.find('=');
+        if (eq == std::string::npos) {
+            std::fprintf(stderr, "sensor_accuracy: expected key=value, got \"%s\"\n", argv[i]);
+            return 2;
+        }
+        options.overrides.push_back({setting.substr(0, eq), setting.substr(eq + 1)});
+    }
     auto t0 = std::chrono::steady_clock::now();
     double c0 = cpuSeconds();
     auto run = app::runPipeline(path, options);

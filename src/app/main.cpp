@@ -79,6 +79,9 @@ void printSolveSummary(const app::PipelineRun& run) {
         fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");
     fmt::print(stderr, "{}\n", run.clustering.statistics());
     if (run.edgeVertices > 0) fmt::print(stderr, "seam vertices (concave edges and corners) from a point gather: {}\n", run.edgeVertices);
+    if (run.sensorGathers > 0)
+        fmt::print(stderr, "sensor gathers: {} for {} sensors (corner and midpoint re-gathers near edges)\n",
+                   run.sensorGathers, run.sensors.size());
     if (run.clustering.enabled)
         fmt::print(stderr, "transfers: {} cluster→cluster, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
                    run.shooting.clusterTransfers, run.shooting.patchPairs, run.shooting.corrections,

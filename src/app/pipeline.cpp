@@ -74,8 +74,8 @@ class PushPullObserver {
         if (gather) {
             m_lastGatherFraction = fraction;
             const auto& solver = m_run.scene.solver;
-            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree, solver.gatherLevels, solver.gatherFarDiameters,
-                             12, solver.gatherRefineLevels, solver.gatherRefineTolerance);
+            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
+                             radiosity::GatherOptions::from(solver));
         }
         for (const auto& [s, where] : m_sensors) {
             std::optional<double> vertex;
@@ -208,8 +208,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
         const auto& solver = run.scene.solver;
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                                     solver.gatherLevels, solver.gatherFarDiameters, 12, solver.gatherRefineLevels,
-                                     solver.gatherRefineTolerance);
+                                     radiosity::GatherOptions::from(solver));
         Progress progress("sensors", options.quiet);
         const size_t count = run.scene.sensors.size();
         for (const auto& s : run.scene.sensors) {
@@ -218,6 +217,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
             run.sensors.push_back({s, radiosity::evaluateSensor(run.scene, run.mesh, run.solution, *run.lights,
                                                                 *run.embree, gatherer, s)});
         }
+        run.sensorGathers = gatherer.gatherCount();
     } else if (options.wantSensors) {
         run.skipped.push_back("sensors (the scene has none)");
     }

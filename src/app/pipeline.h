@@ -53,6 +53,7 @@ struct PipelineRun {
     double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
     size_t mirrorImages = 0;        ///< image chains used by the image method
     size_t edgeVertices = 0;        ///< vertices whose value came from a point gather
+    size_t sensorGathers = 0;       ///< point gathers the sensors took (their own and every re-gather)
     bool singleChannel = false;     ///< the scene is grey: one channel was solved
     std::unique_ptr<raytrace::EmbreeScene> embree;
     std::unique_ptr<radiosity::DirectLight> lights;

@@ -108,12 +108,16 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
     // with the previous round's values at the corners of near patches (the reconstruction
     // to start with, and for corners outside the set). Parallel over vertices; each
     // gather serial, so the result does not depend on the thread count.
-    Gatherer gatherer(scene, mesh, clustering, solution, vis, levels, kFarClusterDiameters, kMaxSplitDepth);
+    GatherOptions options;
+    options.levels = levels;
+    options.farDiameters = kFarClusterDiameters;
+    options.maxSplitDepth = kMaxSplitDepth;
+    Gatherer gatherer(scene, mesh, clustering, solution, vis, options);
     std::unordered_map<uint32_t, size_t> slot;
     for (size_t k = 0; k < edge.size(); ++k) slot.emplace(static_cast<uint32_t>(edge[k]), k);
     std::vector<Rgb> previous(edge.size()), current(edge.size());
     for (size_t k = 0; k < edge.size(); ++k) previous[k] = solution.vertexIndirect[edge[k]];
-    Gatherer::CornerSource corners = [&](size_t patch, int corner) {
+    Gatherer::CornerSource corners = [&](size_t patch, int corner, double /*share*/) {
         uint32_t v = mesh.patches[patch].v[corner];
         auto it = slot.find(v);
         return it != slot.end() ? previous[it->second] : solution.vertexIndirect[v];

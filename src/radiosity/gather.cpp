@@ -21,6 +21,9 @@ constexpr double kSplitRatio = 2.0;
 constexpr double kClusterVisibilityDiameters = 2.0;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
 constexpr int kRefineDepth = 6;
+/// Near patches holding at least 1/kRefineShares of the near field's ρ F are refined to
+/// the full tolerance; smaller ones to a tolerance looser in proportion.
+constexpr double kRefineShares = 20;
 /// Members per leaf of the far-field member trees.
 constexpr size_t kFarLeafSize = 8;
 }  // namespace
@@ -79,12 +82,20 @@ Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double dist
     return len > distance ? x + toward * (distance / len) : x;
 }
 
+GatherOptions GatherOptions::from(const scene::SolverOptions& solver) {
+    GatherOptions o;
+    o.levels = solver.gatherLevels;
+    o.farDiameters = solver.gatherFarDiameters;
+    o.refineLevels = solver.gatherRefineLevels;
+    o.refineTolerance = solver.gatherRefineTolerance;
+    o.minWeight = solver.gatherMinWeight;
+    return o;
+}
+
 Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                   const RadiositySolution& solution, const Visibility& vis, int levels, double farDiameters,
-                   int maxSplitDepth, int refineLevels, double refineTolerance)
-    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_levels(levels),
-      m_nudge(1e-6 * scene.diagonal()), m_farDiameters(farDiameters), m_maxSplitDepth(maxSplitDepth),
-      m_refineLevels(refineLevels), m_refineTolerance(refineTolerance) {
+                   const RadiositySolution& solution, const Visibility& vis, const GatherOptions& options)
+    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_options(options),
+      m_nudge(1e-6 * scene.diagonal()) {
     m_reflected.resize(mesh.patches.size());
     for (size_t j = 0; j < mesh.patches.size(); ++j) m_reflected[j] = solution.reflectedLuminance(scene, mesh, j);
     m_treePosition.resize(mesh.patches.size());
@@ -144,33 +155,49 @@ Gatherer::FarSource Gatherer::farSource(const MemberTree& tree, const MemberNode
     return f;
 }
 
-Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level) {
-    uint32_t v = m_mesh.patches[patch].v[corner];
-    if (level < 0) return m_solution.vertexIndirect.empty() ? m_solution.indirect[patch] : m_solution.vertexIndirect[v];
-    auto key = std::make_pair(v, level);
-    auto it = m_vertexMemo.find(key);
-    if (it != m_vertexMemo.end()) return it->second;
+Rgb Gatherer::solutionCorner(size_t patch, int corner) const {
+    if (m_solution.vertexIndirect.empty()) return m_solution.indirect[patch];
+    return m_solution.vertexIndirect[m_mesh.patches[patch].v[corner]];
+}
+
+int Gatherer::weightClass(double weight) const {
+    if (m_options.minWeight <= 0 || weight >= 1) return 0;
+    return static_cast<int>(std::floor(-std::log10(weight)));
+}
+
+const Rgb* Gatherer::recall(const std::map<MemoKey, Memo>& memo, const MemoKey& key, int weightClass) {
+    auto it = memo.find(key);
+    return it != memo.end() && it->second.weightClass <= weightClass ? &it->second.indirect : nullptr;
+}
+
+Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level, int weightClass) {
+    if (level < 0) return solutionCorner(patch, corner);
+    const uint32_t v = m_mesh.patches[patch].v[corner];
+    const MemoKey key{v, level};
+    if (const Rgb* known = recall(m_vertexMemo, key, weightClass)) return *known;
     const Patch& p = m_mesh.patches[patch];
-    Rgb e = gather(nudgeInside(m_mesh, patch, m_mesh.vertices[v], m_nudge), p.normal, level);
-    m_vertexMemo.emplace(key, e);
+    Rgb e = gather(nudgeInside(m_mesh, patch, m_mesh.vertices[v], m_nudge), p.normal, level, weightClass);
+    m_vertexMemo[key] = {e, weightClass};
     return e;
 }
 
-Gatherer::Midpoint Gatherer::midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level) {
+Gatherer::Midpoint Gatherer::midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level,
+                                              int weightClass) {
     // Ids above the mesh's vertex indices.
     const uint64_t firstId = uint64_t(1) << 32;
     auto [idAt, added] = m_midpointIds.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
                                                firstId + m_midpointIds.size());
     const uint64_t id = idAt->second;
-    auto it = m_midpointMemo.find({id, level});
-    if (it != m_midpointMemo.end()) return {id, it->second};
-    Rgb e = gather(nudgeInside(m_mesh, patch, y, m_nudge), m_mesh.patches[patch].normal, level);
-    m_midpointMemo.emplace(std::make_pair(id, level), e);
+    const MemoKey key{id, level};
+    if (const Rgb* known = recall(m_midpointMemo, key, weightClass)) return {id, *known};
+    Rgb e = gather(nudgeInside(m_mesh, patch, y, m_nudge), m_mesh.patches[patch].normal, level, weightClass);
+    m_midpointMemo[key] = {e, weightClass};
     return {id, e};
 }
 
 void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePoint, 3>& c, int depth,
-                          const MidpointSource* midpoints, std::vector<NearPiece>& pieces) const {
+                          const MidpointSource* midpoints, double share, double tolerance,
+                          std::vector<NearPiece>& pieces) const {
     const Vec3 &p0 = c[0].p, &p1 = c[1].p, &p2 = c[2].p;
     double size = std::max({glm::length(p1 - p0), glm::length(p2 - p1), glm::length(p0 - p2)});
     Vec3 centroid = (p0 + p1 + p2) / 3.0;
@@ -186,18 +213,18 @@ void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePo
     for (int k = 0; k < 3; ++k) {
         const RefinePoint &a = c[k], &b = c[(k + 1) % 3];
         const Vec3 y = 0.5 * (a.p + b.p);
-        const Midpoint g = (*midpoints)(patch, a.id, b.id, y);
+        const Midpoint g = (*midpoints)(patch, a.id, b.id, y, share);
         const Rgb E = 0.5 * (a.E + b.E);
         m[k] = {y, g.id, rho * (E + g.indirect) / kPi, E};
         double linear = luminance(0.5 * (a.L + b.L));
         if (linear > 0) worst = std::max(worst, std::abs(luminance(m[k].L) / linear - 1));
     }
     // Linear enough here: the pieces go on splitting toward x with interpolated values.
-    const MidpointSource* deeper = worst >= m_refineTolerance ? midpoints : nullptr;
-    refineNear(x, patch, {c[0], m[0], m[2]}, depth + 1, deeper, pieces);
-    refineNear(x, patch, {m[0], c[1], m[1]}, depth + 1, deeper, pieces);
-    refineNear(x, patch, {m[2], m[1], c[2]}, depth + 1, deeper, pieces);
-    refineNear(x, patch, {m[0], m[1], m[2]}, depth + 1, deeper, pieces);
+    const MidpointSource* deeper = worst >= tolerance ? midpoints : nullptr;
+    refineNear(x, patch, {c[0], m[0], m[2]}, depth + 1, deeper, share, tolerance, pieces);
+    refineNear(x, patch, {m[0], c[1], m[1]}, depth + 1, deeper, share, tolerance, pieces);
+    refineNear(x, patch, {m[2], m[1], c[2]}, depth + 1, deeper, share, tolerance, pieces);
+    refineNear(x, patch, {m[0], m[1], m[2]}, depth + 1, deeper, share, tolerance, pieces);
 }
 
 Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
@@ -205,7 +232,7 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
     Vec3 c = (p[0] + p[1] + p[2]) / 3.0;
     double size = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
     double dist = std::min({glm::length(c - x), glm::length(p[0] - x), glm::length(p[1] - x), glm::length(p[2] - x)});
-    if (depth < m_maxSplitDepth && dist < kSplitRatio * size) {
+    if (depth < m_options.maxSplitDepth && dist < kSplitRatio * size) {
         Vec3 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
         Rgb l01 = 0.5 * (L[0] + L[1]), l12 = 0.5 * (L[1] + L[2]), l20 = 0.5 * (L[2] + L[0]);
         const Vec3 t[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};
@@ -223,7 +250,7 @@ Rgb Gatherer::farField(const FarSource& f, const Vec3& x, const Vec3& n, const M
     // In an image: the centroid mirrored, Φ and m turned by R, M' = R M Rᵀ, times Π Ks.
     auto turn = [image](const Vec3& v) { return image ? image->direction(v) : v; };
     const Vec3 u = (image ? image->point(f.at) : f.at) - x;
-    const double s = glm::dot(u, u), r = std::sqrt(s);
+    const double s = glm::dot(u, u);  // r²
     const double a = glm::dot(n, u);  // r cosθ_x
     if (a <= 0) return Rgb(0.0);
     const Vec3 m = turn(f.normal);
@@ -248,39 +275,53 @@ Rgb Gatherer::farField(const FarSource& f, const Vec3& x, const Vec3& n, const M
     return e;
 }
 
-Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level) {
+Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass) {
+    ++m_gathers;
     if (level <= 0) return gatherWith(x, n, nullptr, true);
+    // This gather's error reaches the sensor with weight w; a near patch's corners and
+    // midpoints with w ρ F. Those below the minimum weight are not worth a gather.
+    const double weight = std::pow(10.0, -weightClass);
+    const double floor = m_options.minWeight / weight;
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
-    CornerSource corners = [&](size_t patch, int corner) { return cornerIndirect(patch, corner, level - 1); };
-    if (level <= m_levels - m_refineLevels) return gatherWith(x, n, &corners, true);
-    MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y) {
-        return midpointIndirect(patch, a, b, y, level - 1);
+    CornerSource corners = [&](size_t patch, int corner, double share) {
+        return cornerIndirect(patch, corner, level - 1, this->weightClass(weight * share));
     };
-    return gatherWith(x, n, &corners, true, &midpoints);
+    if (level <= m_options.levels - m_options.refineLevels) return gatherWith(x, n, &corners, true, nullptr, floor);
+    MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share) {
+        return midpointIndirect(patch, a, b, y, level - 1, this->weightClass(weight * share));
+    };
+    return gatherWith(x, n, &corners, true, &midpoints, floor);
 }
 
 Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                         const MidpointSource* midpoints) const {
+                         const MidpointSource* midpoints, double detailFloor) const {
     // Near patches get linear luminance from corner values (refined toward x with
     // gathered midpoints when asked), the rest a patch-constant one.
     struct Near {
         uint32_t patch;
+        uint32_t position;  ///< in its cluster's member tree order
         std::vector<NearPiece> pieces;
     };
     std::vector<Near> near;
-    /// The clusters holding near patches, in increasing order, and their range in `near`.
+    /// The clusters holding near patches, in increasing order, and their range in `near`
+    /// (sorted by tree position: a node's near patches are a contiguous run).
     struct NearCluster {
         uint32_t cluster;
         size_t begin, end;
     };
     std::vector<NearCluster> nearClusters;
     if (cornerIndirectOf) {
+        // The near patches that face x, in cluster order, with their form factors.
+        struct Candidate {
+            uint32_t cluster, patch;
+            double F, share;  ///< share = ρ F: how much of an error in its corner values reaches x
+        };
+        std::vector<Candidate> candidates;
         for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
             const Cluster& C = m_clustering.clusters[c];
             // Only clusters that can hold a patch within kNearDiameters of x.
             double reach = 0.5 * C.diameter + kNearDiameters * m_clusterPatchSize[c];
             if (glm::dot(C.centroid - x, C.centroid - x) > reach * reach) continue;
-            size_t before = near.size();
             for (uint32_t j : C.patches) {
                 const Patch& p = m_mesh.patches[j];
                 double r = kNearDiameters * p.diameter;
@@ -288,19 +329,48 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 if (glm::dot(d, d) > r * r) continue;
                 const Rgb& rho = m_scene.materials[p.material].reflectance;
                 if (rho == Rgb(0.0)) continue;
-                Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
-                if (formFactorToPolygon(x, n, v, 3, p.normal) <= 0) continue;
-                std::array<RefinePoint, 3> corners;
-                for (int k = 0; k < 3; ++k) {
-                    const Rgb E = m_solution.directCorner[3 * j + k];
-                    corners[k] = {v[k], p.v[k], rho * (E + (*cornerIndirectOf)(j, k)) / kPi, E};
-                }
-                Near e{j, {}};
-                refineNear(x, j, corners, 0, midpoints, e.pieces);
-                near.push_back(std::move(e));
+                const Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+                const double F = formFactorToPolygon(x, n, v, 3, p.normal);
+                if (F > 0) candidates.push_back({static_cast<uint32_t>(c), j, F, std::max({rho[0], rho[1], rho[2]}) * F});
             }
-            if (near.size() > before) nearClusters.push_back({static_cast<uint32_t>(c), before, near.size()});
         }
+        // The smallest shares whose sum stays within the floor keep the solution's corner
+        // values: what their error can bring to x is bounded by the floor, whatever their number.
+        std::vector<double> shares;
+        double shareSum = 0;
+        for (const Candidate& e : candidates) shares.push_back(e.share), shareSum += e.share;
+        std::sort(shares.begin(), shares.end());
+        double detailFrom = 0, pruned = 0;
+        for (double share : shares) {
+            if (pruned + share > detailFloor) break;
+            pruned += share;
+            detailFrom = std::nextafter(share, 2.0);
+        }
+        for (const Candidate& e : candidates) {
+            const uint32_t j = e.patch;
+            const Patch& p = m_mesh.patches[j];
+            const Rgb& rho = m_scene.materials[p.material].reflectance;
+            const bool detailed = e.share >= detailFrom;
+            std::array<RefinePoint, 3> corners;
+            for (int k = 0; k < 3; ++k) {
+                const Rgb E = m_solution.directCorner[3 * j + k];
+                const Rgb indirect = detailed ? (*cornerIndirectOf)(j, k, e.share) : solutionCorner(j, k);
+                corners[k] = {m_mesh.corner(p, k), p.v[k], rho * (E + indirect) / kPi, E};
+            }
+            if (nearClusters.empty() || nearClusters.back().cluster != e.cluster)
+                nearClusters.push_back({e.cluster, near.size(), near.size()});
+            near.push_back({j, m_treePosition[j], {}});
+            // A piece is refined while its midpoints depart from linear by more than the
+            // tolerance; patches holding less than 1/kRefineShares of the near field's share
+            // may depart more, in proportion (400 slivers of a sofa do not each need it).
+            const double tolerance =
+                m_options.refineTolerance * std::max(1.0, shareSum / (kRefineShares * e.share));
+            refineNear(x, j, corners, 0, detailed ? midpoints : nullptr, e.share, tolerance, near.back().pieces);
+            nearClusters.back().end = near.size();
+        }
+        for (const NearCluster& c : nearClusters)
+            std::sort(near.begin() + static_cast<std::ptrdiff_t>(c.begin), near.begin() + static_cast<std::ptrdiff_t>(c.end),
+                      [](const Near& a, const Near& b) { return a.position < b.position; });
     }
 
     // Sum over clusters: near patches by sub-triangles, other patches with their own rays
@@ -334,10 +404,14 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 if (luminance(e) > strongestE) strongestE = luminance(e), strongest = rayTo;
             }
         };
+        // The first near patch at or after tree position k.
+        auto nearFrom = [&](uint32_t k) {
+            return std::lower_bound(nearFirst, nearLast, k, [](const Near& e, uint32_t at) { return e.position < at; });
+        };
         auto addPatch = [&](uint32_t j) {
             const Patch& p = mesh.patches[j];
-            auto it = std::find_if(nearFirst, nearLast, [j](const Near& e) { return e.patch == j; });
-            if (it != nearLast) {
+            auto it = hasNear ? nearFrom(m_treePosition[j]) : nearLast;
+            if (it != nearLast && it->patch == j) {
                 for (const NearPiece& piece : it->pieces)
                     sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), p.normal, piece.depth);
                 return;
@@ -353,10 +427,8 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             if (e != Rgb(0.0)) add(e, f.brightest);
         };
         auto holdsNear = [&](const MemberNode& node) {
-            return std::any_of(nearFirst, nearLast, [&](const Near& e) {
-                const uint32_t k = m_treePosition[e.patch];
-                return k >= node.begin && k < node.end;
-            });
+            auto it = nearFrom(node.begin);
+            return it != nearLast && it->position < node.end;
         };
         // Depth first through the member tree: a node far enough counts as one source.
         const MemberTree& tree = m_trees[c];
@@ -368,9 +440,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const uint32_t i = stack[--top];
             const MemberNode& node = tree.nodes[i];
             const FarSource& f = farSources[i];
-            if (m_farDiameters > 0 && node.size() > 1) {
+            if (m_options.farDiameters > 0 && node.size() > 1) {
                 const Vec3 at = real ? f.at : view->image.point(f.at);
-                const double limit = m_farDiameters * f.reach;
+                const double limit = m_options.farDiameters * f.reach;
                 if (glm::dot(at - x, at - x) > limit * limit && !holdsNear(node)) {
                     addFar(f);
                     continue;

@@ -38,6 +38,23 @@ struct SensorValue {
     std::optional<Rgb> indirectVertex;  ///< interpolated vertex values, when on a surface
 };
 
+/// How deep and how finely the gather works (see Gatherer).
+struct GatherOptions {
+    int levels = 0;             ///< corner values re-gathered this many times (0 = patch-constant)
+    /// A node of a cluster's member tree farther than this many of its diameters counts
+    /// as one source (0 = every patch on its own).
+    double farDiameters = 0;
+    int maxSplitDepth = 12;     ///< sub-triangle refinement toward the point
+    int refineLevels = 0;       ///< top levels that refine near patches with gathered midpoints
+    double refineTolerance = 0.002;
+    /// A corner or midpoint value is re-gathered only while its weight (how much of an
+    /// error in it reaches the sensor: the product of ρ F along the chain of gathers) is
+    /// at least this; below, it is the solution's vertex value (0 = always).
+    double minWeight = 0;
+    /// The sensor gather as the scene's settings ask for it.
+    static GatherOptions from(const scene::SolverOptions& solver);
+};
+
 /// Final gather of the indirect illuminance into a differential area at x:
 ///   E_ind(x) = Σ_j ∫_{A_j} L_j(y) cosθ_x cosθ_y / r² V(x, y) dA_y,  L_j = ρ_j E_j / π.
 /// Far patches: L_j constant (ρ_j (Ē_dir,j + E_ind,j) / π) with the analytic form factor.
@@ -52,7 +69,8 @@ struct SensorValue {
 /// singular derivative there), so each near triangle is split toward x and its edge
 /// midpoints take direct light interpolated from the exact corner values plus *gathered*
 /// indirect light, one level down; a piece is split further while a gathered midpoint
-/// differs from the interpolation by more than `refineTolerance` (relative), at most
+/// differs from the interpolation by more than `refineTolerance` (relative; looser in
+/// proportion for triangles holding less than 1/20 of the near field's ρ F), at most
 /// 6 times — a local graded re-solve around the point.
 /// Mirrors: the patches' images are gathered too (patch-constant luminance × Π Ks,
 /// seen only through the mirror polygons).
@@ -60,20 +78,31 @@ class Gatherer {
   public:
     /// Clusters farther than a few of their diameters from the point share one
     /// visibility ray (to their member with the largest contribution).
-    /// `farDiameters` > 0: a node of a cluster's member tree (the whole cluster, its
-    /// halves, their halves …) farther than that many of its diameters counts as one
-    /// source with one visibility ray (a Barnes–Hut far field; see farField()). 0 sums
-    /// every patch on its own. Nodes holding a near patch are always opened.
-    /// `refineLevels` and `refineTolerance`: see above (0 levels = no refinement).
+    /// `options.farDiameters` > 0: a node of a cluster's member tree (the whole cluster,
+    /// its halves, their halves …) farther than that many of its diameters counts as one
+    /// source with one visibility ray (a Barnes–Hut far field; see farField()). Nodes
+    /// holding a near patch are always opened.
+    /// `options.minWeight` > 0: corner and midpoint values are re-gathered only where an
+    /// error in them can still reach the sensor by that fraction. Without it, a point
+    /// beside a dense mesh (near patches by the hundred, each re-gathering its corners,
+    /// `levels` deep) costs thousands of gathers; with it, the recursion follows the walls
+    /// of concave edges and corners, and leaves a sofa's slivers at their solution values.
+    /// Weights are rounded up to a power of ten (a weight class). A memoised value
+    /// gathered for a larger weight (in more detail) serves a smaller one, so a sensor's
+    /// value can depend on the sensors gathered before it, by less than the minimum
+    /// weight times the error of a vertex value (1e-3 × 1 % at a cube corner: 1e-5).
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-             const RadiositySolution& solution, const Visibility& vis, int levels, double farDiameters = 0,
-             int maxSplitDepth = 12, int refineLevels = 0, double refineTolerance = 0.002);
+             const RadiositySolution& solution, const Visibility& vis, const GatherOptions& options);
 
     /// Indirect illuminance (lx, RGB) at x with unit normal n.
-    Rgb indirectAt(const Vec3& x, const Vec3& n) { return gather(x, n, m_levels); }
+    Rgb indirectAt(const Vec3& x, const Vec3& n) { return gather(x, n, m_options.levels, 0); }
+    /// Point gathers taken so far: the sensors' own and every corner and midpoint re-gather.
+    size_t gatherCount() const { return m_gathers; }
 
-    /// Indirect illuminance of a patch corner (patch, corner index) — lx, RGB.
-    using CornerSource = std::function<Rgb(size_t, int)>;
+    /// Indirect illuminance of a patch corner (patch, corner index) — lx, RGB. `share`:
+    /// ρ F of the patch seen from the gathering point, the part of an error in the value
+    /// that reaches that gather.
+    using CornerSource = std::function<Rgb(size_t patch, int corner, double share)>;
     /// One gather at x. With `cornerIndirectOf`, near patches get linear luminance from
     /// exact direct light plus these indirect corner values; without, patch-constant.
     /// `parallel` false: a serial sum (for callers that are parallel themselves).
@@ -85,11 +114,14 @@ class Gatherer {
         uint64_t id;
         Rgb indirect;
     };
-    using MidpointSource = std::function<Midpoint(size_t patch, uint64_t a, uint64_t b, const Vec3& y)>;
+    using MidpointSource =
+        std::function<Midpoint(size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share)>;
     /// With `midpoints` too, near patches are refined toward x with gathered indirect
     /// light at their sub-triangles' corners (see the class comment).
+    /// The near patches of smallest share (ρ F), as many as keep the sum of their shares
+    /// within `detailFloor`, take their corner values from the solution and are not refined.
     Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                   const MidpointSource* midpoints = nullptr) const;
+                   const MidpointSource* midpoints = nullptr, double detailFloor = 0) const;
 
   private:
     /// A piece of a near patch with the luminance at its corners (cd/m², RGB).
@@ -105,13 +137,22 @@ class Gatherer {
         uint64_t id;
         Rgb L, E;
     };
-    Rgb gather(const Vec3& x, const Vec3& n, int level);
-    Rgb cornerIndirect(size_t patch, int corner, int level);
-    Midpoint midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level);
+    /// A gather whose error reaches the sensor with weight at most 10^−weightClass.
+    Rgb gather(const Vec3& x, const Vec3& n, int level, int weightClass);
+    /// The class of a weight: k with 10^−(k+1) < weight ≤ 10^−k, so a class's weight is at
+    /// least that of its members (always 0 without a minimum weight: every gather is then
+    /// in full detail).
+    int weightClass(double weight) const;
+    Rgb cornerIndirect(size_t patch, int corner, int level, int weightClass);
+    Midpoint midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level, int weightClass);
+    /// The solution's own indirect illuminance at a patch corner (lx): the vertex value,
+    /// or the patch's when there are none.
+    Rgb solutionCorner(size_t patch, int corner) const;
     /// Splits the triangle c toward x while its gathered midpoints differ from the
     /// linear interpolation; the pieces are appended.
     void refineNear(const Vec3& x, size_t patch, const std::array<RefinePoint, 3>& c, int depth,
-                    const MidpointSource* midpoints, std::vector<NearPiece>& pieces) const;
+                    const MidpointSource* midpoints, double share, double tolerance,
+                    std::vector<NearPiece>& pieces) const;
     Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
                         int depth) const;
 
@@ -120,10 +161,9 @@ class Gatherer {
     const Clustering& m_clustering;
     const RadiositySolution& m_solution;
     const Visibility& m_vis;
-    int m_levels;
+    GatherOptions m_options;
     double m_nudge;
-    double m_farDiameters;
-    int m_maxSplitDepth;  ///< sub-triangle refinement toward the point
+    size_t m_gathers = 0;  ///< gather() calls (serial: the memo is filled serially)
     std::vector<Rgb> m_reflected;           ///< per patch, reflected luminance ρ E / π (cd/m²)
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     /// A member-tree node seen from far away as one source: its reflected light's
@@ -146,11 +186,18 @@ class Gatherer {
     std::vector<MemberTree> m_trees;                 ///< per cluster
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
-    int m_refineLevels;
-    double m_refineTolerance;
-    std::map<std::pair<uint32_t, int>, Rgb> m_vertexMemo;  ///< (vertex, level) → indirect
+    /// A re-gathered value and the finest weight class it was gathered for.
+    struct Memo {
+        Rgb indirect;
+        int weightClass;
+    };
+    /// (vertex or midpoint id, level) → indirect (lx, RGB).
+    using MemoKey = std::pair<uint64_t, int>;
+    /// The memoised value for `key` if it was gathered in at least the detail of `weightClass`.
+    static const Rgb* recall(const std::map<MemoKey, Memo>& memo, const MemoKey& key, int weightClass);
+    std::map<MemoKey, Memo> m_vertexMemo;
     std::map<std::pair<uint64_t, uint64_t>, uint64_t> m_midpointIds;  ///< (a, b) sorted → id
-    std::map<std::pair<uint64_t, int>, Rgb> m_midpointMemo;            ///< (id, level) → indirect
+    std::map<MemoKey, Memo> m_midpointMemo;
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
 };
 

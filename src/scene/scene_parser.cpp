@@ -374,6 +374,9 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     if (d.solver.gatherFarDiameters > 0 && d.solver.gatherFarDiameters < 2)
         r.error("gather_far_diameters", "expected 0 (every patch on its own) or at least 2 (nearer, a point sits "
                                         "inside the node it would take as one source)");
+    d.solver.gatherMinWeight = r.number("gather_min_weight", d.solver.gatherMinWeight);
+    if (!(d.solver.gatherMinWeight >= 0 && d.solver.gatherMinWeight < 1))
+        r.error("gather_min_weight", "expected a number in [0, 1)");
     d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
     d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
     d.solver.conserveEnergy = r.boolean("conserve_energy").value_or(d.solver.conserveEnergy);

@@ -76,6 +76,11 @@ struct SolverOptions {
     /// Sensor gather: a part of a cluster (its member tree's nodes) farther than this
     /// many of its diameters counts as one source (0 = every patch on its own).
     double gatherFarDiameters = 3.0;
+    /// Sensor gather: a near patch's corner and midpoint values are re-gathered only
+    /// while their weight — the part of an error in them that reaches the sensor, the
+    /// product of ρ F along the chain of gathers, rounded up to a power of ten — is at
+    /// least this; below, they are the solution's vertex values (0 = always).
+    double gatherMinWeight = 1e-2;
     /// Vertex values from centroid values: false = the paper's plain average of the
     /// triangles around the vertex; true = a least-squares plane through the centroid
     /// values of the two rings of triangles around it, evaluated at the vertex (exact for
