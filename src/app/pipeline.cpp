@@ -73,9 +73,8 @@ class PushPullObserver {
         std::optional<radiosity::Gatherer> gatherer;
         if (gather) {
             m_lastGatherFraction = fraction;
-            const auto& solver = m_run.scene.solver;
             gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
-                             radiosity::GatherOptions::from(solver));
+                             radiosity::GatherOptions::from(m_run.scene.solver));
         }
         for (const auto& [s, where] : m_sensors) {
             std::optional<double> vertex;
@@ -206,9 +205,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
     if (wantGather) {
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
-        const auto& solver = run.scene.solver;
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                                     radiosity::GatherOptions::from(solver));
+                                     radiosity::GatherOptions::from(run.scene.solver));
         Progress progress("sensors", options.quiet);
         const size_t count = run.scene.sensors.size();
         for (const auto& s : run.scene.sensors) {

@@ -160,7 +160,7 @@ Rgb Gatherer::solutionCorner(size_t patch, int corner) const {
     return m_solution.vertexIndirect[m_mesh.patches[patch].v[corner]];
 }
 
-int Gatherer::weightClass(double weight) const {
+int Gatherer::classOf(double weight) const {
     if (m_options.minWeight <= 0 || weight >= 1) return 0;
     return static_cast<int>(std::floor(-std::log10(weight)));
 }
@@ -284,11 +284,11 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass) {
     const double floor = m_options.minWeight / weight;
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
     CornerSource corners = [&](size_t patch, int corner, double share) {
-        return cornerIndirect(patch, corner, level - 1, this->weightClass(weight * share));
+        return cornerIndirect(patch, corner, level - 1, classOf(weight * share));
     };
     if (level <= m_options.levels - m_options.refineLevels) return gatherWith(x, n, &corners, true, nullptr, floor);
     MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share) {
-        return midpointIndirect(patch, a, b, y, level - 1, this->weightClass(weight * share));
+        return midpointIndirect(patch, a, b, y, level - 1, classOf(weight * share));
     };
     return gatherWith(x, n, &corners, true, &midpoints, floor);
 }
@@ -311,10 +311,10 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     };
     std::vector<NearCluster> nearClusters;
     if (cornerIndirectOf) {
-        // The near patches that face x, in cluster order, with their form factors.
+        // The near patches that face x, in cluster order.
         struct Candidate {
             uint32_t cluster, patch;
-            double F, share;  ///< share = ρ F: how much of an error in its corner values reaches x
+            double share;  ///< ρ F: how much of an error in its corner values reaches x
         };
         std::vector<Candidate> candidates;
         for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
@@ -331,20 +331,24 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 if (rho == Rgb(0.0)) continue;
                 const Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
                 const double F = formFactorToPolygon(x, n, v, 3, p.normal);
-                if (F > 0) candidates.push_back({static_cast<uint32_t>(c), j, F, std::max({rho[0], rho[1], rho[2]}) * F});
+                if (F > 0) candidates.push_back({static_cast<uint32_t>(c), j, std::max({rho[0], rho[1], rho[2]}) * F});
             }
         }
         // The smallest shares whose sum stays within the floor keep the solution's corner
         // values: what their error can bring to x is bounded by the floor, whatever their number.
-        std::vector<double> shares;
         double shareSum = 0;
-        for (const Candidate& e : candidates) shares.push_back(e.share), shareSum += e.share;
-        std::sort(shares.begin(), shares.end());
-        double detailFrom = 0, pruned = 0;
-        for (double share : shares) {
-            if (pruned + share > detailFloor) break;
-            pruned += share;
-            detailFrom = std::nextafter(share, 2.0);
+        for (const Candidate& e : candidates) shareSum += e.share;
+        double detailFrom = 0;  // shares from here on are gathered
+        if (detailFloor > 0) {
+            std::vector<double> shares;
+            for (const Candidate& e : candidates) shares.push_back(e.share);
+            std::sort(shares.begin(), shares.end());
+            double pruned = 0;
+            for (double share : shares) {
+                if (pruned + share > detailFloor) break;
+                pruned += share;
+                detailFrom = std::nextafter(share, 2.0);
+            }
         }
         for (const Candidate& e : candidates) {
             const uint32_t j = e.patch;

@@ -142,7 +142,7 @@ class Gatherer {
     /// The class of a weight: k with 10^−(k+1) < weight ≤ 10^−k, so a class's weight is at
     /// least that of its members (always 0 without a minimum weight: every gather is then
     /// in full detail).
-    int weightClass(double weight) const;
+    int classOf(double weight) const;
     Rgb cornerIndirect(size_t patch, int corner, int level, int weightClass);
     Midpoint midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level, int weightClass);
     /// The solution's own indirect illuminance at a patch corner (lx): the vertex value,
