@@ -200,7 +200,8 @@ int runInfo(const CommonArgs& a) {
                mesh.patches.size(), estimate, radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(),
                mesh.totalArea());
     auto embree = raytrace::buildEmbreeScene(scene, mesh);
-    fmt::print("{}\n", radiosity::buildClusters(scene, mesh, scene.clusters, embree.get()).statistics());
+    const radiosity::Clustering clustering = radiosity::buildClusters(scene, mesh, scene.clusters, embree.get());
+    fmt::print("{}\n", clustering.statistics());
     for (const auto& w : app::costWarnings(a.scene, scene, mesh, true)) fmt::print("warning: {}\n", w);
     std::fflush(stdout);  // before the per-sensor checks, which take a while for very many sensors
     for (const auto& w : app::sceneWarnings(scene, mesh, *embree)) fmt::print("warning: {}\n", w);
@@ -216,9 +217,10 @@ int runInfo(const CommonArgs& a) {
     if (!scene.mirrors.empty())
         fmt::print("mirror images: {} ({}){}\n", images, scene.solver.mirrorImages ? "chains of reflections" : "mirrors ignored",
                    images > 0 ? fmt::format(", {} virtual lights", lights.virtualLightCount()) : "");
-    fmt::print("expected peak memory: about {:.0f} MiB ({} patches{})\n",
-               app::estimatePeakBytes(mesh.patches.size(), mesh.vertices.size(), images) / (1 << 20),
-               mesh.patches.size(), images > 0 ? fmt::format(", {} mirror images each copying them", images) : "");
+    fmt::print("expected peak memory: about {:.0f} MiB ({} patches, {} clusters{})\n",
+               app::estimatePeakBytes(mesh.patches.size(), clustering.clusters.size(), images) / (1 << 20),
+               mesh.patches.size(), clustering.clusters.size(),
+               images > 0 ? fmt::format(", {} mirror images", images) : "");
     if (scene.camera) fmt::print("camera: {}x{}, vfov {} deg\n", scene.camera->width, scene.camera->height, scene.camera->verticalFovDeg);
     fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax), scene.diagonal());
     if (scene.warnings.degeneratePolygons > 0)

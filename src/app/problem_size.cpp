@@ -41,10 +41,10 @@ double checkPatchCount(const std::string& file, const scene::Scene& scene) {
                     edge, estimate, estimate * 1024 / (1 << 30), scene.meshing.maxPatches)));
 }
 
-double estimatePeakBytes(size_t patches, size_t vertices, size_t mirrorImages) {
-    // An image holds its own patches, vertices and cluster member lists.
-    const double perImage = static_cast<double>(patches) * (sizeof(radiosity::Patch) + sizeof(uint32_t)) +
-                            static_cast<double>(vertices) * sizeof(Vec3);
+double estimatePeakBytes(size_t patches, size_t clusters, size_t mirrorImages) {
+    // An image mirrors patches as they are used; it keeps two flags per cluster (which
+    // clusters can send and receive through its chain).
+    const double perImage = 2.0 * static_cast<double>(clusters);
     return kBaseBytes + kBytesPerPatch * static_cast<double>(patches) + perImage * static_cast<double>(mirrorImages);
 }
 

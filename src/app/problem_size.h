@@ -18,9 +18,9 @@ double checkPatchCount(const std::string& file, const scene::Scene& scene);
 /// After premeshing, one line each: a cluster voxel much smaller than the patches (every
 /// patch its own cluster, so each shot visits every patch), and sensor gathers that will
 /// take more than ten CPU-minutes. Throws InputError when the voxel grid cannot be indexed.
-/// Expected peak memory of a solve, bytes: the process's base, the patches, and one copy
-/// of the patches per mirror image (images are copies of the mesh today).
-double estimatePeakBytes(size_t patches, size_t vertices, size_t mirrorImages);
+/// Expected peak memory of a solve, bytes: the process's base, the patches, and a few
+/// bytes per cluster and mirror image.
+double estimatePeakBytes(size_t patches, size_t clusters, size_t mirrorImages);
 
 std::vector<std::string> costWarnings(const std::string& file, const scene::Scene& scene,
                                       const radiosity::PatchMesh& mesh, bool gatherSensors);

@@ -24,16 +24,16 @@ namespace rayrad::radiosity {
 /// A mirror image of C (source s) is corrected the same way, with its own geometry,
 /// its path visibility and its weight Π Ks.
 template <class V>
-typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, size_t c, size_t d,
-                                                             const ClusterSamples& shotSamples,
+typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, const Shooter& from, size_t c,
+                                                             size_t d, const ClusterSamples& shotSamples,
                                                              const std::vector<V>& totalOfSource) {
-    const Cluster& C = s.clustering->clusters[c];
+    const Cluster& C = from.cluster();
     const Cluster& D = m_clustering.clusters[d];
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
     V shotSoFar = m_light[c].total - m_light[c].unshot;
     Correction moved;
     V received =
-        shotSoFar * s.weight * clusterTransfer(*s.mesh, C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
+        shotSoFar * s.weight * clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
@@ -43,15 +43,15 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, s
             moved.removed += received * shape[k] * m_mesh.patches[j].area;
         }
     }
-    moved.delivered = shootPatches(s, c, totalOfSource, d, m_shotE);
+    moved.delivered = shootPatches(s, from, c, totalOfSource, d, m_shotE);
     pull(d);
     return moved;
 }
 
-template ShootingCore<double>::Correction ShootingCore<double>::correct(const Source&, size_t, size_t,
+template ShootingCore<double>::Correction ShootingCore<double>::correct(const Source&, const Shooter&, size_t, size_t,
                                                                        const ClusterSamples&,
                                                                        const std::vector<double>&);
-template ShootingCore<Rgb>::Correction ShootingCore<Rgb>::correct(const Source&, size_t, size_t, const ClusterSamples&,
-                                                                 const std::vector<Rgb>&);
+template ShootingCore<Rgb>::Correction ShootingCore<Rgb>::correct(const Source&, const Shooter&, size_t, size_t,
+                                                                 const ClusterSamples&, const std::vector<Rgb>&);
 
 }  // namespace rayrad::radiosity

@@ -110,7 +110,7 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         m_trees.push_back(std::move(tree));
         m_far.push_back(std::move(far));
     }
-    m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis);
+    m_mirrorViews = mirrorViewsFor(scene, vis);
 }
 
 Gatherer::FarSource Gatherer::farSource(const MemberTree& tree, const MemberNode& node, const Cluster& C) const {
@@ -383,26 +383,31 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     // Source s = 0 is the real scene, s = i + 1 its image i in the mirrors.
     auto contribution = [&](size_t s, size_t c) {
         const bool real = s == 0;
-        const MirrorView* view = real ? nullptr : m_mirrorViews[s - 1].get();
-        const PatchMesh& mesh = real ? m_mesh : view->geometry.mesh;
-        const Cluster& C = real ? m_clustering.clusters[c] : view->geometry.clustering.clusters[c];
-        const Visibility& vis = real ? m_vis : *view->path;
-        const Rgb weight = real ? Rgb(1.0) : view->image.weight;
+        const MirrorImage* image = real ? nullptr : &m_mirrorViews[s - 1]->image;
+        const Cluster& C = m_clustering.clusters[c];  // members mirrored as they are used
+        const Visibility& vis = real ? m_vis : *m_mirrorViews[s - 1]->path;
+        const Rgb weight = real ? Rgb(1.0) : image->weight;
         auto nearOf = std::lower_bound(nearClusters.begin(), nearClusters.end(), c,
                                        [](const NearCluster& e, size_t k) { return e.cluster < k; });
         const bool hasNear = real && nearOf != nearClusters.end() && nearOf->cluster == c;
         const auto nearFirst = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->begin) : near.end();
         const auto nearLast = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->end) : near.end();
-        const double d2 = glm::dot(C.centroid - x, C.centroid - x);
+        const Vec3 centroid = real ? C.centroid : image->point(C.centroid);
+        if (!real && !m_mirrorViews[s - 1]->path->mayPass(centroid, 0.5 * C.diameter, x, 0)) return Rgb(0.0);
+        const double d2 = glm::dot(centroid - x, centroid - x);
         const double far = kClusterVisibilityDiameters * C.diameter;
         const bool shared = C.patches.size() > 1 && d2 > far * far;
         Rgb sum(0.0), sharedSum(0.0);
         uint32_t strongest = C.samples[0];  // the shared ray leaves from the largest contribution
         double strongestE = -1;
+        // Where the ray to patch j goes: its centroid in this source.
+        auto rayTarget = [&](uint32_t j) {
+            return real ? m_mesh.patches[j].centroid : imagePatch(m_mesh, m_mesh.patches[j], *image).patch.centroid;
+        };
         // A contribution e (lx) seen along the ray to patch `rayTo`'s centroid.
         auto add = [&](const Rgb& e, uint32_t rayTo) {
             if (!shared) {
-                if (vis.visibleFromSurface(x, n, mesh.patches[rayTo].centroid)) sum += e;
+                if (vis.visibleFromSurface(x, n, rayTarget(rayTo))) sum += e;
             } else {
                 sharedSum += e;
                 if (luminance(e) > strongestE) strongestE = luminance(e), strongest = rayTo;
@@ -412,22 +417,28 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         auto nearFrom = [&](uint32_t k) {
             return std::lower_bound(nearFirst, nearLast, k, [](const Near& e, uint32_t at) { return e.position < at; });
         };
+        // F from patch j in this source: analytic within analyticDistance patch diameters,
+        // the point approximation beyond.
+        auto formFactor = [&](uint32_t j) {
+            const double within = m_scene.solver.analyticDistance;
+            if (real) return patchFormFactor(m_mesh, m_mesh.patches[j], x, n, within);
+            const ImagePatch p = imagePatch(m_mesh, m_mesh.patches[j], *image);
+            return patchFormFactor(p.corners, p.patch, x, n, within);
+        };
         auto addPatch = [&](uint32_t j) {
-            const Patch& p = mesh.patches[j];
             auto it = hasNear ? nearFrom(m_treePosition[j]) : nearLast;
             if (it != nearLast && it->patch == j) {
                 for (const NearPiece& piece : it->pieces)
-                    sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), p.normal, piece.depth);
+                    sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[j].normal, piece.depth);
                 return;
             }
             const Rgb L = weight * m_reflected[j];
             if (L == Rgb(0.0)) return;
-            // Analytic within analyticDistance patch diameters, point approximation beyond.
-            const double f = patchFormFactor(mesh, p, x, n, m_scene.solver.analyticDistance);
+            const double f = formFactor(j);
             if (f > 0) add(L * (kPi * f), j);  // E = π L F
         };
         auto addFar = [&](const FarSource& f) {
-            const Vec3 e = farField(f, x, n, real ? nullptr : &view->image);
+            const Vec3 e = farField(f, x, n, image);
             if (e != Rgb(0.0)) add(e, f.brightest);
         };
         auto holdsNear = [&](const MemberNode& node) {
@@ -445,7 +456,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const MemberNode& node = tree.nodes[i];
             const FarSource& f = farSources[i];
             if (m_options.farDiameters > 0 && node.size() > 1) {
-                const Vec3 at = real ? f.at : view->image.point(f.at);
+                const Vec3 at = real ? f.at : image->point(f.at);
                 const double limit = m_options.farDiameters * f.reach;
                 if (glm::dot(at - x, at - x) > limit * limit && !holdsNear(node)) {
                     addFar(f);
@@ -459,7 +470,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 stack[top++] = node.left;
             }
         }
-        if (shared && sharedSum != Rgb(0.0) && vis.visibleFromSurface(x, n, mesh.patches[strongest].centroid))
+        if (shared && sharedSum != Rgb(0.0) && vis.visibleFromSurface(x, n, rayTarget(strongest)))
             sum += sharedSum;
         return sum;
     };

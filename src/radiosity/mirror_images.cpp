@@ -74,6 +74,14 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
         MirrorImage next = image;
         next.chain.push_back(k);
         next.transform = reflection(mirrors[k]) * image.transform;
+        // The new last mirror is seen directly; the earlier ones are now seen in it too.
+        const glm::dmat4 r = reflection(mirrors[k]);
+        next.apertures = {MirrorImage::Aperture(mirrors[k].polygon, mirrors[k].normal)};
+        for (const auto& a : image.apertures) {
+            std::vector<Vec3> seen;
+            for (const Vec3& v : a.polygon) seen.push_back(Vec3(r * glm::dvec4(v, 1.0)));
+            next.apertures.emplace_back(std::move(seen), glm::normalize(Vec3(r * glm::dvec4(a.normal, 0.0))));
+        }
         next.weight = image.weight * mirrors[k].specular;
         if (static_cast<int>(next.chain.size()) > limits.maxDepth || luminance(next.weight) < limits.minWeight) {
             truncated = true;
@@ -85,6 +93,13 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
 }
 
 }  // namespace
+
+MirrorImage::Aperture::Aperture(std::vector<Vec3> vertices, const Vec3& n)
+    : polygon(std::move(vertices)), normal(n), centre(0.0), radius(0) {
+    for (const Vec3& v : polygon) centre += v;
+    centre /= static_cast<double>(polygon.size());
+    for (const Vec3& v : polygon) radius = std::max(radius, glm::length(v - centre));
+}
 
 std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limits,
                                                bool* truncated) {
@@ -101,20 +116,42 @@ std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene, bool* trunca
     return enumerateMirrorImages(scene.mirrors, {scene.solver.mirrorDepth, scene.solver.mirrorMinWeight}, truncated);
 }
 
-MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& clustering, const MirrorImage& image) {
-    MirroredGeometry g{mesh, clustering};
-    for (auto& v : g.mesh.vertices) v = image.point(v);
-    for (auto& p : g.mesh.patches) {
-        if (image.reversesWinding()) std::swap(p.v[1], p.v[2]);
-        computeGeometry(g.mesh, p);
+ImagePatch imagePatch(const PatchMesh& mesh, const Patch& p, const MirrorImage& image) {
+    ImagePatch out{p, {image.point(mesh.corner(p, 0)), image.point(mesh.corner(p, 1)), image.point(mesh.corner(p, 2))}};
+    if (image.reversesWinding()) std::swap(out.corners[1], out.corners[2]);
+    computeGeometry(out.corners, out.patch);
+    return out;
+}
+
+ImageCluster imageCluster(const PatchMesh& mesh, const Clustering& clustering, size_t c, const MirrorImage& image) {
+    const Cluster& real = clustering.clusters[c];
+    ImageCluster out;
+    out.cluster = real;
+    out.mesh.vertices.reserve(3 * real.patches.size());
+    out.mesh.patches.reserve(real.patches.size());
+    for (size_t k = 0; k < real.patches.size(); ++k) {
+        ImagePatch p = imagePatch(mesh, mesh.patches[real.patches[k]], image);
+        const uint32_t first = static_cast<uint32_t>(out.mesh.vertices.size());
+        out.mesh.vertices.insert(out.mesh.vertices.end(), p.corners.begin(), p.corners.end());
+        p.patch.v = {first, first + 1, first + 2};
+        out.mesh.patches.push_back(p.patch);
+        out.cluster.patches[k] = static_cast<uint32_t>(k);
     }
-    for (auto& c : g.clustering.clusters) {
-        c.centroid = image.point(c.centroid);
-        c.normal = image.direction(c.normal);
-        for (int a = 0; a < 3 && clustering.voxelSize > 0; ++a)
-            c.voxel[a] = static_cast<int>(std::floor((c.centroid[a] - clustering.origin[a]) / clustering.voxelSize));
-    }
-    return g;
+    Cluster& C = out.cluster;
+    C.centroid = image.point(real.centroid);
+    C.normal = image.direction(real.normal);
+    for (int a = 0; a < 3 && clustering.voxelSize > 0; ++a)
+        C.voxel[a] = static_cast<int>(std::floor((C.centroid[a] - clustering.origin[a]) / clustering.voxelSize));
+    C.samples = out.local(real, real.samples);
+    return out;
+}
+
+ClusterSamples ImageCluster::local(const Cluster& real, const ClusterSamples& samples) const {
+    ClusterSamples out{};
+    for (size_t m = 0; m < samples.size(); ++m)
+        out[m] = static_cast<uint32_t>(std::find(real.patches.begin(), real.patches.end(), samples[m]) -
+                                       real.patches.begin());
+    return out;
 }
 
 bool throughApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image, const Vec3& imagePoint,
@@ -159,37 +196,41 @@ std::vector<Vec3> clipToHalfSpace(const std::vector<Vec3>& poly, const Vec3& m, 
 
 }  // namespace
 
-std::vector<Vec3> clipToApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image,
-                                  std::vector<Vec3> source, const Vec3& x) {
-    // Mirror chain[k] as x sees it: reflected in every later mirror of the chain,
-    // T = R_{n−1} ∘ … ∘ R_{k+1}.
-    glm::dmat4 unfold(1.0);
-    for (size_t k = image.chain.size(); k-- > 0 && source.size() >= 3;) {
-        const scene::Mirror& m = mirrors[image.chain[k]];
-        std::vector<Vec3> aperture;
-        Vec3 centre(0.0);
-        for (const Vec3& v : m.polygon) {
-            aperture.push_back(Vec3(unfold * glm::dvec4(v, 1.0)));
-            centre += aperture.back();
-        }
-        centre /= static_cast<double>(aperture.size());
+std::vector<Vec3> clipToApertures(const MirrorImage& image, std::vector<Vec3> source, const Vec3& x) {
+    for (const MirrorImage::Aperture& a : image.apertures) {
+        if (source.size() < 3) break;
+        const Vec3& centre = a.centre;
         // Behind the (unfolded) mirror, seen from x.
-        const Vec3 normal = glm::normalize(Vec3(unfold * glm::dvec4(m.normal, 0.0)));
-        const double xSide = glm::dot(normal, x - centre);
-        if (xSide <= 0) return {};
-        source = clipToHalfSpace(source, -normal, centre);
+        if (glm::dot(a.normal, x - centre) <= 0) return {};
+        source = clipToHalfSpace(source, -a.normal, centre);
         // Inside the cone from x through the aperture: on the aperture's side of the
         // plane through x and each edge.
-        for (size_t e = 0; e < aperture.size() && source.size() >= 3; ++e) {
-            const Vec3 &a = aperture[e], &b = aperture[(e + 1) % aperture.size()];
-            Vec3 plane = glm::cross(b - a, x - a);
-            if (glm::dot(plane, centre - a) < 0) plane = -plane;
-            source = clipToHalfSpace(source, plane, a);
+        for (size_t e = 0; e < a.polygon.size() && source.size() >= 3; ++e) {
+            const Vec3 &p = a.polygon[e], &q = a.polygon[(e + 1) % a.polygon.size()];
+            Vec3 plane = glm::cross(q - p, x - p);
+            if (glm::dot(plane, centre - p) < 0) plane = -plane;
+            source = clipToHalfSpace(source, plane, p);
         }
-        unfold = unfold * reflection(m);  // the next (earlier) mirror is seen reflected in this one
     }
     if (source.size() < 3) return {};
     return source;
+}
+
+bool MirrorPath::mayPass(const Vec3& imageCentre, double imageRadius, const Vec3& receiver,
+                         double receiverRadius) const {
+    const double reach = std::max(imageRadius, receiverRadius) + 1e-9;  // m, with rounding's margin
+    // First against each aperture's bounding ball (a few flops), then exactly.
+    const Vec3 d = receiver - imageCentre;
+    const double length2 = glm::dot(d, d);
+    for (const MirrorImage::Aperture& a : m_image.apertures) {
+        const double t = length2 > 0 ? std::clamp(glm::dot(a.centre - imageCentre, d) / length2, 0.0, 1.0) : 0.0;
+        const Vec3 off = imageCentre + t * d - a.centre;
+        const double limit = reach + a.radius;
+        if (glm::dot(off, off) > limit * limit) return false;
+    }
+    for (const MirrorImage::Aperture& a : m_image.apertures)
+        if (scene::segmentPolygonDistance(imageCentre, receiver, a.polygon, a.normal) > reach) return false;
+    return true;
 }
 
 bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving, const Vec3* receiverNormal) const {
@@ -221,14 +262,12 @@ bool MirrorPath::visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to
     return false;
 }
 
-std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const PatchMesh& mesh,
-                                                        const Clustering& clustering, const Visibility& vis,
+std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const Visibility& vis,
                                                         bool* truncated) {
     std::vector<std::unique_ptr<MirrorView>> views;
     for (auto& image : mirrorImagesFor(scene, truncated)) {
         auto view = std::make_unique<MirrorView>();
         view->image = std::move(image);
-        view->geometry = mirrorGeometry(mesh, clustering, view->image);
         view->path = std::make_unique<MirrorPath>(scene.mirrors, view->image, vis);
         views.push_back(std::move(view));
     }

@@ -19,6 +19,17 @@ namespace rayrad::radiosity {
 /// chain's mirror polygons, last mirror first, carrying the product of their Ks.
 struct MirrorImage {
     std::vector<int> chain;      ///< indices into Scene::mirrors
+    /// Mirror chain[k] as a receiver sees it, reflected in every later mirror of the
+    /// chain (R_{n−1} ∘ … ∘ R_{k+1}), last mirror first: the straight (unfolded) path
+    /// from a receiver to an image point crosses each.
+    struct Aperture {
+        std::vector<Vec3> polygon;
+        Vec3 normal;  ///< unit, the mirror's front
+        Vec3 centre;  ///< of the polygon's vertices
+        double radius;  ///< largest distance of a vertex from the centre, m
+        Aperture(std::vector<Vec3> polygon, const Vec3& normal);
+    };
+    std::vector<Aperture> apertures;
     glm::dmat4 transform{1.0};   ///< world → image (a product of reflections)
     Rgb weight{1.0};             ///< Π Ks along the chain
     Vec3 point(const Vec3& p) const { return Vec3(transform * glm::dvec4(p, 1.0)); }
@@ -45,16 +56,27 @@ std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>&
 /// The images the scene's settings ask for: none when mirrors are ignored.
 std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene, bool* truncated = nullptr);
 
-/// The patches and clusters as seen in one image: positions, normals and centroids
-/// mirrored, each triangle's winding reversed after an odd number of reflections so
-/// its front stays its front, cluster
-/// voxels recomputed on the real grid (they may lie outside it). Same indices as the
-/// real mesh and clustering, so light values index both.
-struct MirroredGeometry {
-    PatchMesh mesh;
-    Clustering clustering;
+/// One patch as an image shows it, mirrored on demand (images hold no copy of the
+/// mesh): corners counter-clockwise from its front (an odd number of reflections swaps
+/// two, so its front stays its front), normal, centroid, area and diameter from them.
+/// `patch.v` keeps the real vertex indices.
+struct ImagePatch {
+    Patch patch;
+    std::array<Vec3, 3> corners;
 };
-MirroredGeometry mirrorGeometry(const PatchMesh& mesh, const Clustering& clustering, const MirrorImage& image);
+ImagePatch imagePatch(const PatchMesh& mesh, const Patch& p, const MirrorImage& image);
+
+/// One cluster as an image shows it, with its own copy of its members: `mesh` holds
+/// them alone, member k as patch k, so `cluster.patches` is 0 … m−1 (the real cluster's
+/// order). Centroid and normal mirrored, the voxel recomputed on the real grid (it may
+/// lie outside it). What a shot from an image works with: O(members), built per shot.
+struct ImageCluster {
+    PatchMesh mesh;
+    Cluster cluster;
+    /// The real cluster's patch indices (e.g. from powerSamples) as positions in `mesh`.
+    ClusterSamples local(const Cluster& real, const ClusterSamples& samples) const;
+};
+ImageCluster imageCluster(const PatchMesh& mesh, const Clustering& clustering, size_t c, const MirrorImage& image);
 
 class MirrorPath;
 
@@ -64,8 +86,7 @@ class MirrorPath;
 /// image's space as x sees it) and to the mirror's back. Empty when x sees none of it.
 /// The mirror polygons must be convex (isConvexAround); the cone of a convex polygon is
 /// the intersection of the half spaces through x and each of its edges.
-std::vector<Vec3> clipToApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image,
-                                  std::vector<Vec3> source, const Vec3& x);
+std::vector<Vec3> clipToApertures(const MirrorImage& image, std::vector<Vec3> source, const Vec3& x);
 
 /// The unfolded path from a receiver to an image point through the chain's mirror
 /// polygons, ignoring occluders: false unless the segment toward each successive image
@@ -74,24 +95,23 @@ std::vector<Vec3> clipToApertures(const std::vector<scene::Mirror>& mirrors, con
 bool throughApertures(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image, const Vec3& imagePoint,
                       const Vec3& receiver, std::vector<Vec3>* hits = nullptr);
 
-/// One image of the scene ready for transfers: the chain, the mirrored patches and
-/// clusters, and visibility through the chain (which refers to `image`, so views are
-/// held by pointer and never move).
+/// One image of the scene ready for transfers: the chain and visibility through it
+/// (which refers to `image`, so views are held by pointer and never move). Its patches
+/// and clusters are mirrored when used (imagePatch, imageCluster): memory per image is
+/// O(chain length), not O(patches).
 struct MirrorView {
     MirrorImage image;
-    MirroredGeometry geometry;
     std::unique_ptr<MirrorPath> path;
 };
 /// `truncated` as for enumerateMirrorImages().
-std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const PatchMesh& mesh,
-                                                        const Clustering& clustering, const Visibility& vis,
+std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const Visibility& vis,
                                                         bool* truncated = nullptr);
 
 /// Visibility through a mirror chain, as an adaptor of the scene's: `visible(a, b)` is
 /// true when one end is an image point (behind the last mirror) and the other a real
 /// receiver, the unfolded segment between them crosses every mirror polygon of the
 /// chain in order (last mirror first), and every real leg of the path is unoccluded.
-/// Built per query; holds references only.
+/// Holds references only.
 class MirrorPath final : public Visibility {
   public:
     MirrorPath(const std::vector<scene::Mirror>& mirrors, const MirrorImage& image, const Visibility& scene)
@@ -105,6 +125,13 @@ class MirrorPath final : public Visibility {
     /// `receiverNormal` (if given): the receiver is a surface point (see Visibility).
     bool trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving = nullptr,
                const Vec3* receiverNormal = nullptr) const;
+    /// False when no segment from a point within `imageRadius` of `imageCentre` (image
+    /// space) to one within `receiverRadius` of `receiver` crosses every mirror polygon
+    /// of the chain as the receiver sees it (unfolded): then no light passes between the
+    /// two balls, whatever the occluders. A segment between the balls stays within
+    /// max(radii) of the segment between the centres, so that distance to each
+    /// aperture decides. Cheap: the chain's length times its polygons' edges.
+    bool mayPass(const Vec3& imageCentre, double imageRadius, const Vec3& receiver, double receiverRadius) const;
 
   private:
     const std::vector<scene::Mirror>& m_mirrors;

@@ -13,7 +13,11 @@ double PatchMesh::totalArea() const {
 }
 
 void computeGeometry(const PatchMesh& mesh, Patch& p) {
-    const Vec3 &a = mesh.vertices[p.v[0]], &b = mesh.vertices[p.v[1]], &c = mesh.vertices[p.v[2]];
+    computeGeometry({mesh.vertices[p.v[0]], mesh.vertices[p.v[1]], mesh.vertices[p.v[2]]}, p);
+}
+
+void computeGeometry(const std::array<Vec3, 3>& corners, Patch& p) {
+    const Vec3 &a = corners[0], &b = corners[1], &c = corners[2];
     Vec3 n = glm::cross(b - a, c - a);
     double len = glm::length(n);
     p.area = 0.5 * len;

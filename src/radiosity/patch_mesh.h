@@ -36,6 +36,8 @@ struct PatchMesh {
 
 /// Fills normal, centroid, area and diameter from the vertex positions.
 void computeGeometry(const PatchMesh& mesh, Patch& p);
+/// The same from the three corners, counter-clockwise seen from the front.
+void computeGeometry(const std::array<Vec3, 3>& corners, Patch& p);
 
 std::string toString(const Patch& p);
 

@@ -12,6 +12,9 @@ namespace rayrad::radiosity {
 /// corners), the point approximation beyond. 0 when either side faces away.
 double patchFormFactor(const PatchMesh& mesh, const Patch& source, const Vec3& x, const Vec3& n,
                        double analyticDistance);
+/// The same for a source given by its corners (a patch as a mirror image shows it).
+double patchFormFactor(const std::array<Vec3, 3>& corners, const Patch& source, const Vec3& x, const Vec3& n,
+                       double analyticDistance);
 
 /// The same, multiplied by the visibility between x and the source centroid.
 double visiblePatchFormFactor(const PatchMesh& mesh, const Patch& source, const Vec3& x, const Vec3& n,

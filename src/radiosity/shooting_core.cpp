@@ -48,13 +48,12 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_shotPending.assign(mesh.patches.size(), V(0.0));
     m_reached.assign(clustering.clusters.size(), 0);
     m_memberGroups = memberGroups(mesh, clustering, kGroupSize);
-    m_sources.push_back({&mesh, &clustering, &vis, V(1.0), nullptr, {}, {}});
-    m_mirrorViews = mirrorViewsFor(scene, mesh, clustering, vis, &m_mirrorChainsTruncated);
+    m_sources.push_back({&vis, V(1.0), nullptr, nullptr, {}, {}});
+    m_mirrorViews = mirrorViewsFor(scene, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
         for (const auto& m : scene.mirrors) m_mirrorBacks.emplace_back(m.polygon.rbegin(), m.polygon.rend());
     for (const auto& view : m_mirrorViews) {
-        Source s{&view->geometry.mesh, &view->geometry.clustering, view->path.get(), fromRgb<V>(view->image.weight),
-                 &view->image, {}, {}};
+        Source s{view->path.get(), fromRgb<V>(view->image.weight), &view->image, view->path.get(), {}, {}};
         const scene::Mirror& first = scene.mirrors[view->image.chain.front()];
         const scene::Mirror& last = scene.mirrors[view->image.chain.back()];
         for (const Cluster& C : clustering.clusters) {
@@ -257,10 +256,10 @@ V ShootingCore<V>::ambientIlluminance() const {
 }
 
 template <class V>
-V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver,
-                                std::vector<V>& into) {
+V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, const std::vector<V>& amount,
+                                size_t receiver, std::vector<V>& into) {
     const Cluster& D = m_clustering.clusters[receiver];
-    const Cluster& C = s.clustering->clusters[c];
+    const Cluster& C = from.cluster();
     V flux(0.0);
     bool reached = false;
     for (uint32_t j : D.patches) {
@@ -270,7 +269,9 @@ V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>&
             // A receiver farther than kSharedRayDiameters of a group's diameters sees the
             // whole group through one visibility ray, toward the member that sends it the
             // most; nearer, each member has its own.
-            const Vec3 toGroup = (s.image ? s.image->point(g.centroid) : g.centroid) - rec.centroid;
+            const Vec3 groupAt = s.image ? s.image->point(g.centroid) : g.centroid;
+            if (s.image && !s.path->mayPass(groupAt, 0.5 * g.diameter, rec.centroid, 0)) continue;  // no light through
+            const Vec3 toGroup = groupAt - rec.centroid;
             const double far = kSharedRayDiameters * g.diameter;
             const bool shared = g.members.size() > 1 && glm::dot(toGroup, toGroup) > far * far;
             V groupE(0.0);
@@ -279,11 +280,11 @@ V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>&
             for (uint32_t k : g.members) {
                 uint32_t i = C.patches[k];
                 if ((i == j && !s.image) || amount[k] == V(0.0)) continue;  // a patch may see its own image
-                const Patch& src = s.mesh->patches[i];
+                const Patch& src = from.mesh().patches[i];
                 Vec3 d = src.centroid - rec.centroid;  // both must face each other
                 if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
-                double f = shared ? patchFormFactor(*s.mesh, src, rec.centroid, rec.normal, m_options.analyticDistance)
-                                  : visiblePatchFormFactor(*s.mesh, src, rec.centroid, rec.normal,
+                double f = shared ? patchFormFactor(from.mesh(), src, rec.centroid, rec.normal, m_options.analyticDistance)
+                                  : visiblePatchFormFactor(from.mesh(), src, rec.centroid, rec.normal,
                                                            m_options.analyticDistance, *s.vis);
                 V e = amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
                 groupE += e;
@@ -300,6 +301,13 @@ V ShootingCore<V>::shootPatches(const Source& s, size_t c, const std::vector<V>&
     }
     if (reached) m_reached[receiver] = 1;
     return flux;
+}
+
+template <class V>
+typename ShootingCore<V>::Shooter ShootingCore<V>::shooter(const Source& s, size_t c) const {
+    const Cluster& C = m_clustering.clusters[c];
+    if (!s.image) return {m_mesh, C, std::nullopt};
+    return {m_mesh, C, imageCluster(m_mesh, m_clustering, c, *s.image)};
 }
 
 template <class V>
@@ -354,17 +362,20 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         const ClusterSamples shotSamples = powerSamples(C, shotPower);
         for (size_t si = 0; si < m_sources.size(); ++si) {
             const Source& s = m_sources[si];
-            const Cluster& Cs = s.clustering->clusters[c];
+            if (s.image && !s.sends[c]) continue;  // nothing of c passes this chain
+            const Shooter from = shooter(s, c);
+            const Cluster& Cs = from.cluster();
+            const ClusterSamples localShotSamples = from.local(shotSamples);
             std::vector<size_t> ring;
             for (size_t d = 0; d < n; ++d) {
                 if (d == c && !s.image) continue;
                 int dist = m_clustering.voxelDistance(Cs, m_clustering.clusters[d]) - imageMargin(s);
-                if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, c, d))
+                if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, Cs, c, d))
                     ring.push_back(d);
             }
             std::vector<Correction> moved(ring.size());
             tbb::parallel_for(size_t(0), ring.size(),
-                              [&](size_t k) { moved[k] = correct(s, c, ring[k], shotSamples, total); });
+                              [&](size_t k) { moved[k] = correct(s, from, c, ring[k], localShotSamples, total); });
             for (const Correction& m : moved) {
                 redelivered += lum(atSource(m.removed, s.weight));
                 if (throughMirrors) delivered.add(lum(atSource(m.delivered, s.weight)));
@@ -404,7 +415,10 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
 
     for (size_t si = 0; si < m_sources.size(); ++si) {
         const Source& s = m_sources[si];
-        const Cluster& Cs = s.clustering->clusters[c];
+        if (s.image && !s.sends[c]) continue;  // nothing of c passes this chain
+        const Shooter from = shooter(s, c);
+        const Cluster& Cs = from.cluster();
+        const ClusterSamples localSamples = from.local(samples);
         std::atomic<int64_t> clusterTransfers{0}, patchPairs{0};
         // Deliveries per receiver when shooting through mirrors too, for the mirrors'
         // account and the conservation (summed in order).
@@ -416,15 +430,15 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 const Cluster& D = m_clustering.clusters[d];
                 bool self = d == c && !s.image;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
-                if (!canReach(s, c, d)) continue;
+                if (!canReach(s, Cs, c, d)) continue;
                 if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
-                    double t = clusterTransfer(*s.mesh, Cs, samples, m_mesh, D, *s.vis, m_options.analyticDistance);
+                    double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
                     V flux(0.0);
                     if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
                     if (throughMirrors) deliveredTo[d] = flux;
                     ++cc;
                 } else {
-                    V flux = shootPatches(s, c, unshot, d, m_shotE);
+                    V flux = shootPatches(s, from, c, unshot, d, m_shotE);
                     if (throughMirrors) deliveredTo[d] = flux;
                     pp += static_cast<int64_t>(C.patches.size() * D.patches.size());
                 }

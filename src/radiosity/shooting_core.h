@@ -10,6 +10,7 @@
 #include <cmath>
 #include <chrono>
 #include <memory>
+#include <optional>
 
 namespace rayrad::radiosity {
 
@@ -55,15 +56,28 @@ class ShootingCore final : public ShootingCoreBase {
     /// (virtual shooters: mirrored patches and clusters, weight Π Ks, seen only through
     /// the mirrors). Receivers are always the real patches.
     struct Source {
-        const PatchMesh* mesh;
-        const Clustering* clustering;
         const Visibility* vis;
         V weight;
         const MirrorImage* image;  ///< null for the real scene
+        const MirrorPath* path;    ///< = vis for an image; null for the real scene
         /// Images only, per cluster: some patch in front of the chain's first mirror (it
         /// can send through the chain) / of its last mirror (it can receive). Static.
         std::vector<char> sends, receives;
     };
+    /// The shooting cluster as one source shows it: the real cluster and mesh, or an
+    /// image's copy of the cluster alone (built per shot; see imageCluster).
+    struct Shooter {
+        const PatchMesh& realMesh;
+        const Cluster& real;
+        std::optional<ImageCluster> copy;  ///< images: the mirrored members
+        const PatchMesh& mesh() const { return copy ? copy->mesh : realMesh; }
+        const Cluster& cluster() const { return copy ? copy->cluster : real; }
+        /// Sample patches of the real cluster as indices into mesh().
+        ClusterSamples local(const ClusterSamples& samples) const {
+            return copy ? copy->local(real, samples) : samples;
+        }
+    };
+    Shooter shooter(const Source& s, size_t c) const;
 
     struct Light {
         V unshot{0.0}, total{0.0}, pendingReflected{0.0};
@@ -98,9 +112,10 @@ class ShootingCore final : public ShootingCoreBase {
     /// delivered, Σ e shape_k A_k (lm per channel).
     V addPending(const Cluster& source, size_t receiver, const V& e);
     void receive(size_t j, const V& deltaE);
-    /// Patch→patch from cluster c of source s to the receiver's patches: adds ΔE_j to
-    /// into[j]. Returns the flux delivered, Σ ΔE_j A_j (lm per channel).
-    V shootPatches(const Source& s, size_t c, const std::vector<V>& amount, size_t receiver, std::vector<V>& into);
+    /// Patch→patch from cluster c of source s (as `from` shows it) to the receiver's
+    /// patches: adds ΔE_j to into[j]. Returns the flux delivered, Σ ΔE_j A_j (lm per channel).
+    V shootPatches(const Source& s, const Shooter& from, size_t c, const std::vector<V>& amount, size_t receiver,
+                   std::vector<V>& into);
     /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
     /// the flux shot when conserving.
     /// Flux a shot delivered, counted where it left the shooter (through mirrors:
@@ -121,11 +136,18 @@ class ShootingCore final : public ShootingCoreBase {
     struct Correction {
         V removed{0.0}, delivered{0.0};
     };
-    Correction correct(const Source& s, size_t c, size_t d, const ClusterSamples& shotSamples,
+    Correction correct(const Source& s, const Shooter& from, size_t c, size_t d, const ClusterSamples& shotSamples,
                        const std::vector<V>& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
-    /// False when no light of cluster c can pass through s's mirrors to cluster d.
-    static bool canReach(const Source& s, size_t c, size_t d) { return !s.image || (s.sends[c] && s.receives[d]); }
+    /// False when no light of cluster c (as source s shows it: Cs) can pass through s's
+    /// mirrors to cluster d: c lies behind the chain's first mirror, d behind its last,
+    /// or no segment between their bounding balls crosses the chain's mirror polygons.
+    bool canReach(const Source& s, const Cluster& Cs, size_t c, size_t d) const {
+        if (!s.image) return true;
+        const Cluster& D = m_clustering.clusters[d];
+        return s.sends[c] && s.receives[d] &&
+               s.path->mayPass(Cs.centroid, 0.5 * Cs.diameter, D.centroid, 0.5 * D.diameter);
+    }
     /// Image voxels are the mirrored centroids' cells on the real grid, which the mirror
     /// plane need not be aligned with: a receiver touching an image across the mirror can
     /// be one voxel away. Image distances count one voxel less, so touching clusters

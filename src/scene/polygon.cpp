@@ -1,6 +1,8 @@
 #include <scene/polygon.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rayrad::scene {
 
@@ -89,6 +91,43 @@ bool polygonContains(const std::vector<Vec3>& v, const Vec3& normal, const Vec3&
         if ((wi > p[w]) != (wj > p[w]) && p[u] < (uj - ui) * (p[w] - wi) / (wj - wi) + ui) inside = !inside;
     }
     return inside;
+}
+
+double segmentDistance(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
+    // Closest points p + t d1, r + u d2 with t, u in [0, 1] (Ericson, Real-Time Collision
+    // Detection, 5.1.9): minimise over t for the best u, clamping each in turn.
+    const Vec3 d1 = q - p, d2 = s - r, w = p - r;
+    const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, w);
+    double t = 0, u = 0;
+    if (a <= 0 && e <= 0) return glm::length(w);
+    if (a <= 0) {
+        u = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = glm::dot(d1, w);
+        if (e <= 0) {
+            t = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = glm::dot(d1, d2), denom = a * e - b * b;
+            t = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            u = (b * t + f) / e;
+            if (u < 0) u = 0, t = std::clamp(-c / a, 0.0, 1.0);
+            else if (u > 1) u = 1, t = std::clamp((b - c) / a, 0.0, 1.0);
+        }
+    }
+    return glm::length((p + t * d1) - (r + u * d2));
+}
+
+double segmentPolygonDistance(const Vec3& a, const Vec3& b, const std::vector<Vec3>& v, const Vec3& normal) {
+    const double da = glm::dot(normal, a - v[0]), db = glm::dot(normal, b - v[0]);
+    if ((da <= 0) != (db <= 0) || da == 0) {
+        const Vec3 crossing = da == db ? a : a + (da / (da - db)) * (b - a);
+        if (polygonContains(v, normal, crossing)) return 0;
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& [end, d] : {std::pair{a, da}, std::pair{b, db}})
+        if (polygonContains(v, normal, end - d * normal)) best = std::min(best, std::abs(d));  // over the face
+    for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) best = std::min(best, segmentDistance(a, b, v[j], v[i]));
+    return best;
 }
 
 }  // namespace rayrad::scene

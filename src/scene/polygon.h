@@ -21,6 +21,12 @@ bool isConvexAround(const std::vector<Vec3>& v, const Vec3& normal);
 /// True when p (a point in the polygon's plane) lies inside the polygon: the crossing
 /// rule in the projection that drops the normal's largest axis.
 bool polygonContains(const std::vector<Vec3>& v, const Vec3& normal, const Vec3& p);
+/// Distance in metres between segment ab and a convex planar polygon (0 when the
+/// segment crosses it). The closest pair lies at a crossing, at an end of the segment
+/// against the polygon's face, or between the segment and an edge.
+double segmentPolygonDistance(const Vec3& a, const Vec3& b, const std::vector<Vec3>& v, const Vec3& normal);
+/// Distance in metres between segments pq and rs.
+double segmentDistance(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s);
 /// Ear-clipping triangulation of a simple planar polygon; indices into v.
 std::vector<std::array<uint32_t, 3>> triangulate(const std::vector<Vec3>& v);
 
