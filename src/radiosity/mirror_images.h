@@ -32,6 +32,10 @@ struct MirrorImage {
     std::vector<Aperture> apertures;
     glm::dmat4 transform{1.0};   ///< world → image (a product of reflections)
     Rgb weight{1.0};             ///< Π Ks along the chain
+    /// An estimate of the chain's étendue, m² sr: ∫∫ cosθ cosθ' / r² over the rays that
+    /// cross every aperture, bounded by the smallest étendue of two of its apertures
+    /// (π A for a single mirror). Light of luminance L carries at most L·G through it.
+    double etendue = 0;
     Vec3 point(const Vec3& p) const { return Vec3(transform * glm::dvec4(p, 1.0)); }
     Vec3 direction(const Vec3& d) const { return Vec3(transform * glm::dvec4(d, 0.0)); }
     /// An odd number of reflections turns a counter-clockwise polygon clockwise.
@@ -42,9 +46,20 @@ struct MirrorImage {
 struct MirrorLimits {
     int maxDepth = 4;          ///< reflections per chain
     double minWeight = 1e-3;   ///< drop a chain once Y(Π Ks) falls below this
+    /// Drop a chain once Y(Π Ks) G / (π A) falls below this: the share of a uniformly
+    /// bright room's light (luminance L̄ everywhere: π L̄ A leaves the surfaces) it can
+    /// carry. 0 keeps every chain.
+    double minShare = 0;
+    double surfaceArea = 0;    ///< A, m² (the scene's surfaces)
 };
 
-/// Every chain up to the limits: no mirror twice in a row, and each next mirror must
+/// ∫_from π F(dA → to) dA in m² sr: the étendue between two convex polygons, `to`
+/// seen from `from`'s side `facing` and lit on its front `toFront`; the inner integral
+/// analytic, the outer a midpoint rule on `from` (a few hundred points).
+double polygonEtendue(const std::vector<Vec3>& from, const Vec3& facing, const std::vector<Vec3>& to,
+                      const Vec3& toFront);
+
+/// Every chain up to the limits (weight, étendue share, depth): no mirror twice in a row, and each next mirror must
 /// have part of its polygon in front of the previous one (and the previous in front of
 /// it), so the light can travel between them. Two facing mirrors give two chains per
 /// depth, so the count is bounded by the depth and by the weight. `truncated` (if given)

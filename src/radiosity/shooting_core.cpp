@@ -98,7 +98,7 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
                                   : m_stats.escapeFraction >= kClosedEscapeFraction ? "open scene"
                                   : m_scene.mirrors.empty()                         ? ""
                                   : !m_options.mirrorImages                         ? "mirrors ignored"
-                                  : m_mirrorChainsTruncated ? "mirror chains cut by mirror_depth or mirror_min_weight"
+                                  : m_mirrorChainsTruncated ? "mirror chains cut by mirror_depth, mirror_min_weight or mirror_min_share"
                                                             : "";
     m_conserve = conservationOff.empty();
     m_light.assign(m_clustering.clusters.size(), Light{});

@@ -390,6 +390,9 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.solver.mirrorMinWeight = r.number("mirror_min_weight", d.solver.mirrorMinWeight);
     if (!(d.solver.mirrorMinWeight > 0 && d.solver.mirrorMinWeight < 1))
         r.error("mirror_min_weight", "expected a number in (0, 1)");
+    d.solver.mirrorMinShare = r.number("mirror_min_share", d.solver.mirrorMinShare);
+    if (!(d.solver.mirrorMinShare >= 0 && d.solver.mirrorMinShare < 1))
+        r.error("mirror_min_share", "expected a number in [0, 1)");
     if (auto rec = r.string("reconstruction")) {
         if (*rec == "linear") d.solver.linearReconstruction = true;
         else if (*rec == "average") d.solver.linearReconstruction = false;

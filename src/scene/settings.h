@@ -99,6 +99,9 @@ struct SolverOptions {
     bool mirrorImages = true;
     int mirrorDepth = 4;             ///< reflections per image chain
     double mirrorMinWeight = 1e-3;   ///< drop chains whose Π Ks falls below this
+    /// Drop chains that could carry less than this share of a uniformly bright room's
+    /// light: Π Ks · G / (π A), G the chain's étendue (m² sr), A the surface area.
+    double mirrorMinShare = 1e-5;
     /// Per-shot energy conservation in closed scenes (with mirrors only when every chain
     /// of reflections is modelled): each shot's deliveries (and what the energy
     /// corrections redeliver; through mirrors counted ÷ Π Ks) are scaled so the flux

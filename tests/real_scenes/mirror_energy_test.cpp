@@ -22,7 +22,9 @@ namespace {
 /// ρ = 0.5, the five mirror quads (Ks 0.9) `gap` metres in front of the wall at their
 /// rim, and a 24-gon lamp (1 000 cd/m², radius 0.5 m) 3 cm below the ceiling or a
 /// 100 cd point light.
-std::string mirrorRoom(double height, bool areaLight, double gap) {
+/// `extra`: more members of the scene object (after a comma), `moreObjects`: more objects.
+std::string mirrorRoom(double height, bool areaLight, double gap, const std::string& moreObjects = "",
+                       const std::string& extra = "") {
     const double rim = -gap, inner = -gap - 0.004025;  // the bevel strips fall 4 mm
     const std::string quads[5] = {
         fmt::format("[[2.242764, 0.94999, {0}], [1.513164, 0.94999, {0}], [1.553164, 0.98999, {1}], "
@@ -38,6 +40,7 @@ std::string mirrorRoom(double height, bool areaLight, double gap) {
     std::string objects = fmt::format(
         R"({{"type": "box", "material": "wall", "min": [0, 0, -3], "max": [6, {}, 0], "facing": "inward"}})", height);
     for (const auto& q : quads) objects += fmt::format(R"(, {{"type": "quad", "material": "mirror", "vertices": {}}})", q);
+    objects += moreObjects;
     std::string lights = "[]";
     if (areaLight) {
         std::string vertices;
@@ -54,8 +57,8 @@ std::string mirrorRoom(double height, bool areaLight, double gap) {
     return fmt::format(R"({{"materials": {{"wall": {{"reflectance": 0.5}},
         "lamp": {{"type": "emissive", "luminance_cd_m2": 1000}},
         "mirror": {{"type": "mirror", "specular_reflectance": 0.9}}}},
-        "objects": [{}], "lights": {}}})",
-                       objects, lights);
+        "objects": [{}], "lights": {}{}}})",
+                       objects, lights, extra);
 }
 
 }  // namespace
@@ -98,4 +101,35 @@ TEST_CASE("light on the back of a mirror wound backwards is booked as absorbed t
     bool warned = false;
     for (const auto& w : run.warnings) warned |= w.find("backs of one-sided surfaces") != std::string::npos;
     CHECK(warned);
+}
+
+TEST_CASE("mirror chains that can carry almost no light are cut by their etendue share, and the sensors hardly move",
+          "[real_scenes]") {
+    // The wall mirror with its bevel strips facing a 2 × 1.5 m mirror on the opposite
+    // wall: chains between the big mirrors carry light, those through the 4 cm strips
+    // and back almost none (rays at grazing angles through a few square centimetres).
+    const std::string facing =
+        R"(, {"type": "quad", "material": "mirror", "vertices": [[1, 0.8, -2.99], [3, 0.8, -2.99], [3, 2.3, -2.99], [1, 2.3, -2.99]]})";
+    const std::string sensors = R"(, "sensors": [
+        {"name": "floor", "position": [2, 0, -1.5], "normal": [0, 1, 0]},
+        {"name": "side wall", "position": [0, 1.5, -1.5], "normal": [1, 0, 0]},
+        {"name": "ceiling", "position": [4, 2.9, -1], "normal": [0, -1, 0]}],
+        "radiosity": {"max_edge": 0.5, "mirror_depth": 3, "mirror_min_share": )";
+    auto runWith = [&](double share) {
+        return app::runPipeline(test::writeTempScene(fmt::format("mirror_share_{}", share),
+                                                     mirrorRoom(2.9, false, 0.019778, facing,
+                                                                sensors + fmt::format("{}}}", share))),
+                                quiet());
+    };
+    auto all = runWith(0), cut = runWith(1e-5);
+    INFO("images: " << all.mirrorImages << " all, " << cut.mirrorImages << " with the cut");
+    CHECK(cut.mirrorImages >= 6);  // the five single mirrors, the facing one and its chains with the big mirror
+    CHECK(cut.mirrorImages * 3 < all.mirrorImages * 2);  // 46 -> 22 when written
+    REQUIRE(all.sensors.size() == cut.sensors.size());
+    for (size_t k = 0; k < all.sensors.size(); ++k) {
+        const double a = luminance(all.sensors[k].value.direct + all.sensors[k].value.indirect);
+        const double c = luminance(cut.sensors[k].value.direct + cut.sensors[k].value.indirect);
+        INFO(all.sensors[k].sensor.name << ": " << a << " lx with every chain, " << c << " lx with the cut");
+        CHECK(c == Approx(a).epsilon(1e-4));
+    }
 }
