@@ -393,7 +393,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         const auto nearFirst = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->begin) : near.end();
         const auto nearLast = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->end) : near.end();
         const Vec3 centroid = real ? C.centroid : image->point(C.centroid);
-        if (!real && !m_mirrorViews[s - 1]->path->mayPass(centroid, 0.5 * C.diameter, x, 0)) return Rgb(0.0);
+        if (!real && !image->mayPass(centroid, 0.5 * C.diameter, x, 0)) return Rgb(0.0);
         const double d2 = glm::dot(centroid - x, centroid - x);
         const double far = kClusterVisibilityDiameters * C.diameter;
         const bool shared = C.patches.size() > 1 && d2 > far * far;

@@ -255,19 +255,19 @@ std::vector<Vec3> clipToApertures(const MirrorImage& image, std::vector<Vec3> so
     return source;
 }
 
-bool MirrorPath::mayPass(const Vec3& imageCentre, double imageRadius, const Vec3& receiver,
-                         double receiverRadius) const {
+bool MirrorImage::mayPass(const Vec3& imageCentre, double imageRadius, const Vec3& receiver,
+                          double receiverRadius) const {
     const double reach = std::max(imageRadius, receiverRadius) + 1e-9;  // m, with rounding's margin
     // First against each aperture's bounding ball (a few flops), then exactly.
     const Vec3 d = receiver - imageCentre;
     const double length2 = glm::dot(d, d);
-    for (const MirrorImage::Aperture& a : m_image.apertures) {
+    for (const Aperture& a : apertures) {
         const double t = length2 > 0 ? std::clamp(glm::dot(a.centre - imageCentre, d) / length2, 0.0, 1.0) : 0.0;
         const Vec3 off = imageCentre + t * d - a.centre;
         const double limit = reach + a.radius;
         if (glm::dot(off, off) > limit * limit) return false;
     }
-    for (const MirrorImage::Aperture& a : m_image.apertures)
+    for (const Aperture& a : apertures)
         if (scene::segmentPolygonDistance(imageCentre, receiver, a.polygon, a.normal) > reach) return false;
     return true;
 }

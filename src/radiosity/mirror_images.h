@@ -40,6 +40,13 @@ struct MirrorImage {
     Vec3 direction(const Vec3& d) const { return Vec3(transform * glm::dvec4(d, 0.0)); }
     /// An odd number of reflections turns a counter-clockwise polygon clockwise.
     bool reversesWinding() const { return chain.size() % 2 == 1; }
+    /// False when no segment from a point within `imageRadius` of `imageCentre` (image
+    /// space) to one within `receiverRadius` of `receiver` crosses every aperture: then
+    /// no light passes between the two balls through the chain, whatever the occluders.
+    /// A segment between the balls stays within max(radii) of the segment between the
+    /// centres, so that distance to each aperture decides. Cheap: the chain's length
+    /// times its polygons' edges.
+    bool mayPass(const Vec3& imageCentre, double imageRadius, const Vec3& receiver, double receiverRadius) const;
 };
 
 /// How far images of images go.
@@ -140,14 +147,6 @@ class MirrorPath final : public Visibility {
     /// `receiverNormal` (if given): the receiver is a surface point (see Visibility).
     bool trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving = nullptr,
                const Vec3* receiverNormal = nullptr) const;
-    /// False when no segment from a point within `imageRadius` of `imageCentre` (image
-    /// space) to one within `receiverRadius` of `receiver` crosses every mirror polygon
-    /// of the chain as the receiver sees it (unfolded): then no light passes between the
-    /// two balls, whatever the occluders. A segment between the balls stays within
-    /// max(radii) of the segment between the centres, so that distance to each
-    /// aperture decides. Cheap: the chain's length times its polygons' edges.
-    bool mayPass(const Vec3& imageCentre, double imageRadius, const Vec3& receiver, double receiverRadius) const;
-
   private:
     const std::vector<scene::Mirror>& m_mirrors;
     const MirrorImage& m_image;

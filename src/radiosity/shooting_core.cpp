@@ -48,12 +48,12 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_shotPending.assign(mesh.patches.size(), V(0.0));
     m_reached.assign(clustering.clusters.size(), 0);
     m_memberGroups = memberGroups(mesh, clustering, kGroupSize);
-    m_sources.push_back({&vis, V(1.0), nullptr, nullptr, {}, {}});
+    m_sources.push_back({&vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
         for (const auto& m : scene.mirrors) m_mirrorBacks.emplace_back(m.polygon.rbegin(), m.polygon.rend());
     for (const auto& view : m_mirrorViews) {
-        Source s{view->path.get(), fromRgb<V>(view->image.weight), &view->image, view->path.get(), {}, {}};
+        Source s{view->path.get(), fromRgb<V>(view->image.weight), &view->image, {}, {}};
         const scene::Mirror& first = scene.mirrors[view->image.chain.front()];
         const scene::Mirror& last = scene.mirrors[view->image.chain.back()];
         for (const Cluster& C : clustering.clusters) {
@@ -270,7 +270,7 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
             // whole group through one visibility ray, toward the member that sends it the
             // most; nearer, each member has its own.
             const Vec3 groupAt = s.image ? s.image->point(g.centroid) : g.centroid;
-            if (s.image && !s.path->mayPass(groupAt, 0.5 * g.diameter, rec.centroid, 0)) continue;  // no light through
+            if (s.image && !s.image->mayPass(groupAt, 0.5 * g.diameter, rec.centroid, 0)) continue;  // no light through
             const Vec3 toGroup = groupAt - rec.centroid;
             const double far = kSharedRayDiameters * g.diameter;
             const bool shared = g.members.size() > 1 && glm::dot(toGroup, toGroup) > far * far;

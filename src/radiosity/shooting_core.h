@@ -59,7 +59,6 @@ class ShootingCore final : public ShootingCoreBase {
         const Visibility* vis;
         V weight;
         const MirrorImage* image;  ///< null for the real scene
-        const MirrorPath* path;    ///< = vis for an image; null for the real scene
         /// Images only, per cluster: some patch in front of the chain's first mirror (it
         /// can send through the chain) / of its last mirror (it can receive). Static.
         std::vector<char> sends, receives;
@@ -146,7 +145,7 @@ class ShootingCore final : public ShootingCoreBase {
         if (!s.image) return true;
         const Cluster& D = m_clustering.clusters[d];
         return s.sends[c] && s.receives[d] &&
-               s.path->mayPass(Cs.centroid, 0.5 * Cs.diameter, D.centroid, 0.5 * D.diameter);
+               s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, D.centroid, 0.5 * D.diameter);
     }
     /// Image voxels are the mirrored centroids' cells on the real grid, which the mirror
     /// plane need not be aligned with: a receiver touching an image across the mirror can
