@@ -73,16 +73,23 @@ TEST_CASE("two facing mirrors: images of images stop at the depth and weight lim
     CHECK_FALSE(truncated);
 }
 
-TEST_CASE("a 90-degree mirror corner: light meets each mirror at most once, so the chains end", "[mirrors]") {
-    // The floor z = 0 (front +z) and the wall y = 0 (front +y), 1 m × 1 m, sharing the x edge.
+namespace {
+/// A 90° mirror corner: the floor z = 0 (front +z) and the wall y = 0 (front +y),
+/// 1 m × 1 m, sharing the x edge, Ks 0.9.
+std::vector<scene::Mirror> mirrorCorner() {
     scene::Mirror floor, wall;
     floor.polygon = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     floor.normal = {0, 0, 1};
     wall.polygon = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}};
     wall.normal = {0, 1, 0};
     floor.specular = wall.specular = Rgb(0.9);
+    return {floor, wall};
+}
+}  // namespace
+
+TEST_CASE("a 90-degree mirror corner: light meets each mirror at most once, so the chains end", "[mirrors]") {
     bool truncated = true;
-    auto images = radiosity::enumerateMirrorImages({floor, wall}, {8, 1e-3}, &truncated);
+    auto images = radiosity::enumerateMirrorImages(mirrorCorner(), {8, 1e-3}, &truncated);
     // (floor), (wall), (floor, wall), (wall, floor): after two reflections the light
     // moves away from both planes.
     CHECK(images.size() == 4);
@@ -104,13 +111,7 @@ TEST_CASE("MirrorImage::mayPass never rejects two balls between which light pass
     // The 90° corner's chain (floor, wall): random balls in image space and receivers in
     // front of the wall; wherever a sampled pair of points inside the balls sees through
     // both apertures (throughApertures), mayPass must say the balls may exchange light.
-    scene::Mirror floor, wall;
-    floor.polygon = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    floor.normal = {0, 0, 1};
-    wall.polygon = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}};
-    wall.normal = {0, 1, 0};
-    floor.specular = wall.specular = Rgb(0.9);
-    const std::vector<scene::Mirror> mirrors = {floor, wall};
+    const std::vector<scene::Mirror> mirrors = mirrorCorner();
     auto images = radiosity::enumerateMirrorImages(mirrors, {8, 1e-3});
     Random rng(7);
     auto inBall = [&](const Vec3& c, double r) {
