@@ -87,4 +87,25 @@ double triangleSolidAngle(const Vec3& p, const Vec3& v0, const Vec3& v1, const V
     return 2 * std::atan2(numerator, denominator);  // atan2 keeps Ω > π when the denominator is negative
 }
 
+double polygonEtendue(const std::vector<Vec3>& from, const Vec3& facing, const std::vector<Vec3>& to,
+                      const Vec3& toFront) {
+    // Midpoint rule: each fan triangle of `from` split into k² similar triangles (k(k+1)/2
+    // upright, k(k−1)/2 inverted), π F at each one's centroid.
+    constexpr int k = 12;
+    double sum = 0;
+    for (size_t t = 1; t + 1 < from.size(); ++t) {
+        const Vec3 a = from[0], u = (from[t] - a) / double(k), v = (from[t + 1] - a) / double(k);
+        const double area = 0.5 * glm::length(glm::cross(u, v));  // one small triangle, m²
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; i + j < k; ++j) {
+                const Vec3 corner = a + double(i) * u + double(j) * v;
+                sum += area * formFactorToPolygon(corner + (u + v) / 3.0, facing, to.data(), int(to.size()), toFront);
+                if (i + j + 1 < k)
+                    sum += area * formFactorToPolygon(corner + 2.0 * (u + v) / 3.0, facing, to.data(), int(to.size()),
+                                                      toFront);
+            }
+    }
+    return kPi * sum;
+}
+
 }  // namespace rayrad::radiosity

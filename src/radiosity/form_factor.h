@@ -3,6 +3,8 @@
 
 #include <core/math.h>
 
+#include <vector>
+
 namespace rayrad::radiosity {
 
 /// Form factor F(dA_x → polygon), unoccluded, from a differential area at x with unit
@@ -21,5 +23,11 @@ double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, c
 ///   tan(Ω/2) = |a·(b×c)| / (|a||b||c| + (a·b)|c| + (a·c)|b| + (b·c)|a|).
 /// An isotropic point source of intensity I sends I Ω lumens onto the triangle.
 double triangleSolidAngle(const Vec3& p, const Vec3& v0, const Vec3& v1, const Vec3& v2);
+
+/// ∫_from π F(dA → to) dA in m² sr: the étendue between two convex polygons, `to`
+/// seen from `from`'s side `facing` and lit on its front `toFront`; the inner integral
+/// analytic, the outer a midpoint rule on `from` (a few hundred points).
+double polygonEtendue(const std::vector<Vec3>& from, const Vec3& facing, const std::vector<Vec3>& to,
+                      const Vec3& toFront);
 
 }  // namespace rayrad::radiosity

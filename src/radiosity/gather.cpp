@@ -402,7 +402,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         double strongestE = -1;
         // Where the ray to patch j goes: its centroid in this source.
         auto rayTarget = [&](uint32_t j) {
-            return real ? m_mesh.patches[j].centroid : imagePatch(m_mesh, m_mesh.patches[j], *image).patch.centroid;
+            return real ? m_mesh.patches[j].centroid : image->point(m_mesh.patches[j].centroid);
         };
         // A contribution e (lx) seen along the ray to patch `rayTo`'s centroid.
         auto add = [&](const Rgb& e, uint32_t rayTo) {

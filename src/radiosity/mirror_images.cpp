@@ -74,9 +74,9 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
         }
         MirrorImage next = image;
         next.chain.push_back(k);
-        next.transform = reflection(mirrors[k]) * image.transform;
-        // The new last mirror is seen directly; the earlier ones are now seen in it too.
         const glm::dmat4 r = reflection(mirrors[k]);
+        next.transform = r * image.transform;
+        // The new last mirror is seen directly; the earlier ones are now seen in it too.
         next.apertures = {MirrorImage::Aperture(mirrors[k].polygon, mirrors[k].normal)};
         for (const auto& a : image.apertures) {
             std::vector<Vec3> seen;
@@ -84,6 +84,10 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
             next.apertures.emplace_back(std::move(seen), glm::normalize(Vec3(r * glm::dvec4(a.normal, 0.0))));
         }
         next.weight = image.weight * mirrors[k].specular;
+        if (static_cast<int>(next.chain.size()) > limits.maxDepth || luminance(next.weight) < limits.minWeight) {
+            truncated = true;
+            continue;
+        }
         // A ray through the chain is one straight line through every (unfolded) aperture,
         // so the étendue of any two bounds it: the new last mirror, seen back toward each
         // earlier one (whose front faces it), and the pairs the chain had already
@@ -94,8 +98,7 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
                                                                  next.apertures[j].polygon, next.apertures[j].normal));
         const double share =
             limits.surfaceArea > 0 ? luminance(next.weight) * next.etendue / (kPi * limits.surfaceArea) : 1.0;
-        if (static_cast<int>(next.chain.size()) > limits.maxDepth || luminance(next.weight) < limits.minWeight ||
-            share < limits.minShare) {
+        if (share < limits.minShare) {
             truncated = true;
             continue;
         }
@@ -105,27 +108,6 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
 }
 
 }  // namespace
-
-double polygonEtendue(const std::vector<Vec3>& from, const Vec3& facing, const std::vector<Vec3>& to,
-                      const Vec3& toFront) {
-    // Midpoint rule: each fan triangle of `from` split into k² similar triangles (k² / 2
-    // upright and as many inverted), π F at each one's centroid.
-    constexpr int k = 12;
-    double sum = 0;
-    for (size_t t = 1; t + 1 < from.size(); ++t) {
-        const Vec3 a = from[0], u = (from[t] - a) / double(k), v = (from[t + 1] - a) / double(k);
-        const double area = 0.5 * glm::length(glm::cross(u, v));  // one small triangle, m²
-        for (int i = 0; i < k; ++i)
-            for (int j = 0; i + j < k; ++j) {
-                const Vec3 corner = a + double(i) * u + double(j) * v;
-                sum += area * formFactorToPolygon(corner + (u + v) / 3.0, facing, to.data(), int(to.size()), toFront);
-                if (i + j + 1 < k)
-                    sum += area * formFactorToPolygon(corner + 2.0 * (u + v) / 3.0, facing, to.data(), int(to.size()),
-                                                      toFront);
-            }
-    }
-    return kPi * sum;
-}
 
 MirrorImage::Aperture::Aperture(std::vector<Vec3> vertices, const Vec3& n)
     : polygon(std::move(vertices)), normal(n), centre(0.0), radius(0) {

@@ -60,15 +60,9 @@ struct MirrorLimits {
     double surfaceArea = 0;    ///< A, m² (the scene's surfaces)
 };
 
-/// ∫_from π F(dA → to) dA in m² sr: the étendue between two convex polygons, `to`
-/// seen from `from`'s side `facing` and lit on its front `toFront`; the inner integral
-/// analytic, the outer a midpoint rule on `from` (a few hundred points).
-double polygonEtendue(const std::vector<Vec3>& from, const Vec3& facing, const std::vector<Vec3>& to,
-                      const Vec3& toFront);
-
-/// Every chain up to the limits (weight, étendue share, depth): no mirror twice in a row, and each next mirror must
-/// have part of its polygon in front of the previous one (and the previous in front of
-/// it), so the light can travel between them. Two facing mirrors give two chains per
+/// Every chain up to the limits (depth, weight, étendue share): no mirror twice in a
+/// row, and each next mirror must have part of its polygon in front of the previous one
+/// (and the previous in front of it), so the light can travel between them. Two facing mirrors give two chains per
 /// depth, so the count is bounded by the depth and by the weight. `truncated` (if given)
 /// tells whether a limit cut a chain light could follow: then some light reflected more
 /// often is not modelled, and the chains do not account for all the light a mirror gets.

@@ -342,6 +342,11 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         uint32_t i = C.patches[k];
         if (isLit(i)) overshoot[k] = m_reflectance[i] * ambient / kPi;
     }
+    // The shooter as each source shows it (an image: its mirrored copy), built once per
+    // shot; none where nothing of c passes the source's chain.
+    std::vector<std::optional<Shooter>> shooters(m_sources.size());
+    for (size_t si = 0; si < m_sources.size(); ++si)
+        if (!m_sources[si].image || m_sources[si].sends[c]) shooters[si].emplace(shooter(m_sources[si], c));
     // corrected[s][d]: receiver d already got source s's total in a correction.
     std::vector<std::vector<char>> corrected(m_sources.size(), std::vector<char>(n, 0));
     const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
@@ -362,8 +367,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         const ClusterSamples shotSamples = powerSamples(C, shotPower);
         for (size_t si = 0; si < m_sources.size(); ++si) {
             const Source& s = m_sources[si];
-            if (s.image && !s.sends[c]) continue;  // nothing of c passes this chain
-            const Shooter from = shooter(s, c);
+            if (!shooters[si]) continue;
+            const Shooter& from = *shooters[si];
             const Cluster& Cs = from.cluster();
             const ClusterSamples localShotSamples = from.local(shotSamples);
             std::vector<size_t> ring;
@@ -415,8 +420,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
 
     for (size_t si = 0; si < m_sources.size(); ++si) {
         const Source& s = m_sources[si];
-        if (s.image && !s.sends[c]) continue;  // nothing of c passes this chain
-        const Shooter from = shooter(s, c);
+        if (!shooters[si]) continue;
+        const Shooter& from = *shooters[si];
         const Cluster& Cs = from.cluster();
         const ClusterSamples localSamples = from.local(samples);
         std::atomic<int64_t> clusterTransfers{0}, patchPairs{0};
