@@ -16,8 +16,8 @@ namespace rayrad::radiosity {
 ///     (this includes the current ΔL_i, so D takes no part in this step's regular shot);
 ///     like the regular shot's, these deliveries wait in m_shotE for deliver();
 ///  4. push-pull D.
-/// `totalOfSource[k]` is what C's k-th member will have shipped after this shot: L_i,
-/// plus its overshoot. Touches only D's state, so receivers can be corrected in
+/// `totalOfSource.amount[k]` is what C's k-th member will have shipped after this shot:
+/// L_i, plus its overshoot. Touches only D's state, so receivers can be corrected in
 /// parallel. Returns the flux taken away in step 2 (it was delivered by earlier shots,
 /// and a conserving shot must deliver it again: step 3 re-estimates it together with
 /// this shot's share, and deliver() scales the two as one) and the flux step 3 delivers.
@@ -26,7 +26,7 @@ namespace rayrad::radiosity {
 template <class V>
 typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, const Shooter& from, size_t c,
                                                              size_t d, const ClusterSamples& shotSamples,
-                                                             const std::vector<V>& totalOfSource) {
+                                                             const Emission& totalOfSource) {
     const Cluster& C = from.cluster();
     const Cluster& D = m_clustering.clusters[d];
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
@@ -43,15 +43,16 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
             moved.removed += received * shape[k] * m_mesh.patches[j].area;
         }
     }
-    moved.delivered = shootPatches(s, from, c, totalOfSource, d, m_shotE);
+    int64_t terms = 0;
+    moved.delivered = shootPatches(s, from, c, totalOfSource, d, m_shotE, terms);
     pull(d);
     return moved;
 }
 
 template ShootingCore<double>::Correction ShootingCore<double>::correct(const Source&, const Shooter&, size_t, size_t,
                                                                        const ClusterSamples&,
-                                                                       const std::vector<double>&);
+                                                                       const Emission&);
 template ShootingCore<Rgb>::Correction ShootingCore<Rgb>::correct(const Source&, const Shooter&, size_t, size_t,
-                                                                 const ClusterSamples&, const std::vector<Rgb>&);
+                                                                 const ClusterSamples&, const Emission&);
 
 }  // namespace rayrad::radiosity

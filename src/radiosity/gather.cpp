@@ -105,54 +105,12 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         m_clusterPatchSize.push_back(size);
         MemberTree tree = memberTree(mesh, C, kFarLeafSize);
         for (uint32_t i = 0; i < tree.order.size(); ++i) m_treePosition[C.patches[tree.order[i]]] = i;
-        std::vector<FarSource> far(tree.nodes.size());
-        for (size_t i = 0; i < tree.nodes.size(); ++i) far[i] = farSource(tree, tree.nodes[i], C);
+        std::vector<Rgb> luminance(C.patches.size());
+        for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = m_reflected[C.patches[k]];
+        m_far.push_back(farSources(mesh, C, tree, luminance));
         m_trees.push_back(std::move(tree));
-        m_far.push_back(std::move(far));
     }
     m_mirrorViews = mirrorViewsFor(scene, vis);
-}
-
-Gatherer::FarSource Gatherer::farSource(const MemberTree& tree, const MemberNode& node, const Cluster& C) const {
-    FarSource f;
-    // Luminance-weighted centroid: the far field's first-order term vanishes there.
-    double weight = 0, brightestPower = -1;
-    Vec3 at(0.0);
-    Rgb power(0.0);
-    for (uint32_t k = node.begin; k < node.end; ++k) {
-        const uint32_t j = C.patches[tree.order[k]];
-        const Patch& p = m_mesh.patches[j];
-        const Rgb pj = m_reflected[j] * p.area;  // cd
-        const double y = luminance(pj);
-        for (int ch = 0; ch < 3; ++ch) f.flux[ch] += pj[ch] * p.normal;
-        power += pj;
-        weight += y;
-        at += y * p.centroid;
-        if (y > brightestPower) brightestPower = y, f.brightest = j;
-    }
-    f.at = weight > 0 ? at / weight : node.centroid;
-    f.share = weight > 0 ? power / weight : Rgb(0.0);
-    double r = 0;
-    for (uint32_t k = node.begin; k < node.end; ++k) {
-        const uint32_t j = C.patches[tree.order[k]];
-        const Patch& p = m_mesh.patches[j];
-        // ∫ (y − at)(y − at)ᵀ dA = A [(c − at)(c − at)ᵀ + Σ_k (v_k − c)(v_k − c)ᵀ / 12].
-        const Vec3 dc = p.centroid - f.at;
-        glm::dmat3 second = glm::outerProduct(dc, dc);
-        for (int corner = 0; corner < 3; ++corner) {
-            const Vec3 v = m_mesh.corner(p, corner);
-            second += glm::outerProduct(v - p.centroid, v - p.centroid) / 12.0;
-            r = std::max(r, glm::length(v - f.at));
-        }
-        f.moment += luminance(m_reflected[j]) * p.area * second;
-    }
-    f.reach = 2 * r;
-    // Φ of the luminance: each component is Y of the channels' components.
-    const Vec3 fluxY(luminance(Rgb(f.flux[0].x, f.flux[1].x, f.flux[2].x)),
-                     luminance(Rgb(f.flux[0].y, f.flux[1].y, f.flux[2].y)),
-                     luminance(Rgb(f.flux[0].z, f.flux[1].z, f.flux[2].z)));
-    f.normal = glm::length(fluxY) > 0 ? glm::normalize(fluxY) : Vec3(0.0);
-    return f;
 }
 
 Rgb Gatherer::solutionCorner(size_t patch, int corner) const {
@@ -244,35 +202,6 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
     double f = formFactorToPolygon(x, n, p, 3, normal);
     if (f <= 0 || !m_vis.visibleFromSurface(x, n, c)) return Rgb(0.0);
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
-}
-
-Rgb Gatherer::farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image) {
-    // In an image: the centroid mirrored, Φ and m turned by R, M' = R M Rᵀ, times Π Ks.
-    auto turn = [image](const Vec3& v) { return image ? image->direction(v) : v; };
-    const Vec3 u = (image ? image->point(f.at) : f.at) - x;
-    const double s = glm::dot(u, u);  // r²
-    const double a = glm::dot(n, u);  // r cosθ_x
-    if (a <= 0) return Rgb(0.0);
-    const Vec3 m = turn(f.normal);
-    const double b = -glm::dot(m, u);  // r cosθ_y
-    // The expansion is of g(u) = a b / s², which is smooth but not clamped: a node that
-    // faces away (b ≤ 0) gives nothing, whatever its second-order term says.
-    if (b <= 0) return Rgb(0.0);
-    // ½ tr(H M), H the Hessian of g:
-    //   H = −(n mᵀ + m nᵀ)/s² − 4 (v uᵀ + u vᵀ)/s³ + 24 a b u uᵀ/s⁴ − 4 a b I/s³, v = b n − a m.
-    const glm::dmat3 R = image ? glm::dmat3(image->transform) : glm::dmat3(1.0);
-    const glm::dmat3 M = image ? R * f.moment * glm::transpose(R) : f.moment;
-    const double s2 = s * s, ab = a * b;
-    const double trace = M[0][0] + M[1][1] + M[2][2];
-    const double trHM = -2 * glm::dot(n, M * m) / s2 - 8 * glm::dot(u, M * (b * n - a * m)) / (s2 * s) +
-                        24 * ab * glm::dot(u, M * u) / (s2 * s2) - 4 * ab * trace / (s2 * s);
-    const Rgb weight = image ? image->weight : Rgb(1.0);
-    Rgb e(0.0);
-    for (int ch = 0; ch < 3; ++ch) {
-        const double zeroth = a * std::max(0.0, -glm::dot(turn(f.flux[ch]), u)) / (s * s);  // cosθ_x (−Φ·u) / r³
-        e[ch] = weight[ch] * std::max(0.0, zeroth + f.share[ch] * 0.5 * trHM);
-    }
-    return e;
 }
 
 Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass) {
@@ -439,7 +368,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         };
         auto addFar = [&](const FarSource& f) {
             const Vec3 e = farField(f, x, n, image);
-            if (e != Rgb(0.0)) add(e, f.brightest);
+            if (e != Rgb(0.0)) add(e, C.patches[f.brightest]);
         };
         auto holdsNear = [&](const MemberNode& node) {
             auto it = nearFrom(node.begin);

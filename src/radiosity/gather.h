@@ -4,13 +4,13 @@
 #include <core/visibility.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
+#include <radiosity/far_field.h>
 #include <radiosity/member_tree.h>
 #include <radiosity/mirror_images.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
-#include <glm/mat3x3.hpp>
 
 #include <array>
 #include <cstdint>
@@ -80,7 +80,7 @@ class Gatherer {
     /// visibility ray (to their member with the largest contribution).
     /// `options.farDiameters` > 0: a node of a cluster's member tree (the whole cluster,
     /// its halves, their halves …) farther than that many of its diameters counts as one
-    /// source with one visibility ray (a Barnes–Hut far field; see farField()). Nodes
+    /// source with one visibility ray (a Barnes–Hut far field; see far_field.h). Nodes
     /// holding a near patch are always opened.
     /// `options.minWeight` > 0: corner and midpoint values are re-gathered only where an
     /// error in them can still reach the sensor by that fraction. Without it, a point
@@ -166,23 +166,6 @@ class Gatherer {
     size_t m_gathers = 0;  ///< gather() calls (serial: the memo is filled serially)
     std::vector<Rgb> m_reflected;           ///< per patch, reflected luminance ρ E / π (cd/m²)
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
-    /// A member-tree node seen from far away as one source: its reflected light's
-    /// moments up to the second, for E ≈ W g(at) + ½ tr(H_g M) with g = cosθ_x cosθ_y / r².
-    struct FarSource {
-        Vec3 at{0.0};                 ///< luminance-weighted centroid, m
-        double reach = 0;             ///< twice the largest distance from `at` to a member corner, m
-        std::array<Vec3, 3> flux{};   ///< per channel Φ = Σ L_j A_j n_j (cd)
-        Vec3 normal{0.0};             ///< Φ's direction (luminance), unit
-        Rgb share{0.0};               ///< per channel Σ L_j A_j over the luminance sum W
-        glm::dmat3 moment{0.0};       ///< M = Σ Y(L_j) ∫_{A_j} (y − at)(y − at)ᵀ dA (cd m²)
-        uint32_t brightest = 0;       ///< member with the most reflected power: the node's ray goes there
-    };
-    FarSource farSource(const MemberTree& tree, const MemberNode& node, const Cluster& C) const;
-    /// The node's light at x with normal n (lx, RGB): g = cosθ_x cosθ_y / r² expanded about
-    /// its luminance-weighted centroid to second order, E ≈ cosθ_x (−Φ·u)/r³ + ½ tr(H_g M)
-    /// (the first-order term vanishes there); nothing when the node faces away.
-    /// `image` (or null) mirrors the node.
-    static Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image);
     std::vector<MemberTree> m_trees;                 ///< per cluster
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order

@@ -55,17 +55,4 @@ MemberTree memberTree(const PatchMesh& mesh, const Cluster& cluster, size_t leaf
     return tree;
 }
 
-std::vector<std::vector<MemberGroup>> memberGroups(const PatchMesh& mesh, const Clustering& clustering, size_t maxSize) {
-    std::vector<std::vector<MemberGroup>> out(clustering.clusters.size());
-    for (size_t c = 0; c < clustering.clusters.size(); ++c) {
-        const MemberTree tree = memberTree(mesh, clustering.clusters[c], maxSize);
-        for (const MemberNode& node : tree.nodes) {
-            if (!node.leaf()) continue;
-            out[c].push_back({std::vector<uint32_t>(tree.order.begin() + node.begin, tree.order.begin() + node.end),
-                              node.centroid, node.diameter});
-        }
-    }
-    return out;
-}
-
 }  // namespace rayrad::radiosity

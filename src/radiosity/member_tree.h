@@ -31,13 +31,4 @@ struct MemberTree {
 
 MemberTree memberTree(const PatchMesh& mesh, const Cluster& cluster, size_t leafSize);
 
-struct MemberGroup {
-    std::vector<uint32_t> members;  ///< positions k in Cluster::patches
-    Vec3 centroid{0.0};             ///< area-weighted, m
-    double diameter = 0;            ///< twice the largest centroid-to-corner distance, m
-};
-
-/// Per cluster, its members in groups of at most `maxSize`: the leaves of its member tree.
-std::vector<std::vector<MemberGroup>> memberGroups(const PatchMesh& mesh, const Clustering& clustering, size_t maxSize);
-
 }  // namespace rayrad::radiosity

@@ -29,6 +29,7 @@ constexpr int64_t kStallShots = 2000;
 constexpr double kSharedRayDiameters = 2.0;
 /// Members per group (see member_tree.h).
 constexpr size_t kGroupSize = 8;
+
 }  // namespace
 
 template <class V>
@@ -47,7 +48,8 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_shotE.assign(mesh.patches.size(), V(0.0));
     m_shotPending.assign(mesh.patches.size(), V(0.0));
     m_reached.assign(clustering.clusters.size(), 0);
-    m_memberGroups = memberGroups(mesh, clustering, kGroupSize);
+    m_trees.reserve(clustering.clusters.size());
+    for (const Cluster& C : clustering.clusters) m_trees.push_back(memberTree(mesh, C, kGroupSize));
     m_sources.push_back({&vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
@@ -256,30 +258,72 @@ V ShootingCore<V>::ambientIlluminance() const {
 }
 
 template <class V>
-V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, const std::vector<V>& amount,
-                                size_t receiver, std::vector<V>& into) {
+typename ShootingCore<V>::Emission ShootingCore<V>::emission(const Shooter& from, size_t c,
+                                                            const std::vector<V>& amount) const {
+    Emission e{amount, {}};
+    const MemberTree& tree = m_trees[c];
+    if (tree.nodes.size() > 1 && m_options.shootFarDiameters > 0) {
+        std::vector<Rgb> luminance(amount.size());
+        for (size_t k = 0; k < amount.size(); ++k) luminance[k] = toRgb(amount[k]);
+        e.far = farSources(from.mesh(), from.cluster(), tree, luminance);
+    }
+    return e;
+}
+
+template <class V>
+V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, const Emission& light,
+                                size_t receiver, std::vector<V>& into, int64_t& terms) {
     const Cluster& D = m_clustering.clusters[receiver];
     const Cluster& C = from.cluster();
+    const MemberTree& tree = m_trees[c];
+    const std::vector<V>& amount = light.amount;
     V flux(0.0);
     bool reached = false;
     for (uint32_t j : D.patches) {
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
-        for (const MemberGroup& g : m_memberGroups[c]) {
-            // A receiver farther than kSharedRayDiameters of a group's diameters sees the
+        // Depth first through the shooter's member tree: a node far enough sends as one
+        // source with one visibility ray (toward its brightest member); a leaf (a member
+        // group) otherwise member by member.
+        uint32_t stack[128];  // the tree is at most 32 deep (median splits of < 2³² members)
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const MemberNode& node = tree.nodes[stack[--top]];
+            if (!light.far.empty()) {
+                const FarSource& f = light.far[&node - tree.nodes.data()];
+                const double limit = m_options.shootFarDiameters * f.reach;
+                if (node.size() > 1 && !f.mixed && glm::dot(f.at - rec.centroid, f.at - rec.centroid) > limit * limit) {
+                    ++terms;
+                    if (s.image && !s.image->mayPass(f.at, 0.5 * f.reach, rec.centroid, 0)) continue;
+                    const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
+                    if (e != V(0.0) &&
+                        s.vis->visibleFromSurface(rec.centroid, rec.normal, from.mesh().patches[C.patches[f.brightest]].centroid))
+                        deltaE += e;
+                    continue;
+                }
+            }
+            if (!node.leaf()) {
+                stack[top++] = node.right;
+                stack[top++] = node.left;
+                continue;
+            }
+            // A receiver farther than kSharedRayDiameters of the group's diameters sees the
             // whole group through one visibility ray, toward the member that sends it the
             // most; nearer, each member has its own.
-            const Vec3 groupAt = s.image ? s.image->point(g.centroid) : g.centroid;
-            if (s.image && !s.image->mayPass(groupAt, 0.5 * g.diameter, rec.centroid, 0)) continue;  // no light through
+            const Vec3 groupAt = s.image ? s.image->point(node.centroid) : node.centroid;
+            if (s.image && !s.image->mayPass(groupAt, 0.5 * node.diameter, rec.centroid, 0)) continue;  // no light through
             const Vec3 toGroup = groupAt - rec.centroid;
-            const double far = kSharedRayDiameters * g.diameter;
-            const bool shared = g.members.size() > 1 && glm::dot(toGroup, toGroup) > far * far;
+            const double far = kSharedRayDiameters * node.diameter;
+            const bool shared = node.size() > 1 && glm::dot(toGroup, toGroup) > far * far;
             V groupE(0.0);
             double strongest = 0;
             const Patch* strongestSource = nullptr;
-            for (uint32_t k : g.members) {
+            for (uint32_t m = node.begin; m < node.end; ++m) {
+                const uint32_t k = tree.order[m];
                 uint32_t i = C.patches[k];
                 if ((i == j && !s.image) || amount[k] == V(0.0)) continue;  // a patch may see its own image
+                ++terms;
                 const Patch& src = from.mesh().patches[i];
                 Vec3 d = src.centroid - rec.centroid;  // both must face each other
                 if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
@@ -379,8 +423,12 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                     ring.push_back(d);
             }
             std::vector<Correction> moved(ring.size());
-            tbb::parallel_for(size_t(0), ring.size(),
-                              [&](size_t k) { moved[k] = correct(s, from, c, ring[k], localShotSamples, total); });
+            if (!ring.empty()) {
+                const Emission totalLight = emission(from, c, total);
+                tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) {
+                    moved[k] = correct(s, from, c, ring[k], localShotSamples, totalLight);
+                });
+            }
             for (const Correction& m : moved) {
                 redelivered += lum(atSource(m.removed, s.weight));
                 if (throughMirrors) delivered.add(lum(atSource(m.delivered, s.weight)));
@@ -428,29 +476,44 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         // Deliveries per receiver when shooting through mirrors too, for the mirrors'
         // account and the conservation (summed in order).
         std::vector<V> deliveredTo(throughMirrors ? n : 0, V(0.0));
+        // Cluster→cluster now; the receivers within r_v are listed for patch→patch.
+        std::vector<char> isNear(n, 0);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
-            int64_t cc = 0, pp = 0;
+            int64_t cc = 0;
             for (size_t d = range.begin(); d != range.end(); ++d) {
                 if (corrected[si][d]) continue;
                 const Cluster& D = m_clustering.clusters[d];
                 bool self = d == c && !s.image;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
-                if (!self && m_clustering.voxelDistance(Cs, D) - imageMargin(s) >= r) {
-                    double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
-                    V flux(0.0);
-                    if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
-                    if (throughMirrors) deliveredTo[d] = flux;
-                    ++cc;
-                } else {
-                    V flux = shootPatches(s, from, c, unshot, d, m_shotE);
-                    if (throughMirrors) deliveredTo[d] = flux;
-                    pp += static_cast<int64_t>(C.patches.size() * D.patches.size());
+                if (self || m_clustering.voxelDistance(Cs, D) - imageMargin(s) < r) {
+                    isNear[d] = 1;
+                    continue;
                 }
+                double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
+                V flux(0.0);
+                if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
+                if (throughMirrors) deliveredTo[d] = flux;
+                ++cc;
             }
             clusterTransfers += cc;
-            patchPairs += pp;
         });
+        std::vector<size_t> nearReceivers;
+        for (size_t d = 0; d < n; ++d)
+            if (isNear[d]) nearReceivers.push_back(d);
+        if (!nearReceivers.empty()) {
+            const Emission light = emission(from, c, unshot);
+            tbb::parallel_for(tbb::blocked_range<size_t>(0, nearReceivers.size(), 4),
+                              [&](const tbb::blocked_range<size_t>& range) {
+                int64_t pp = 0;
+                for (size_t k = range.begin(); k != range.end(); ++k) {
+                    const size_t d = nearReceivers[k];
+                    V flux = shootPatches(s, from, c, light, d, m_shotE, pp);
+                    if (throughMirrors) deliveredTo[d] = flux;
+                }
+                patchPairs += pp;
+            });
+        }
         m_stats.clusterTransfers += clusterTransfers;
         m_stats.patchPairs += patchPairs;
         for (const V& flux : deliveredTo) {

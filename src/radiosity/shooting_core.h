@@ -3,6 +3,7 @@
 
 #include <radiosity/light_value.h>
 #include <radiosity/closure.h>
+#include <radiosity/far_field.h>
 #include <radiosity/member_tree.h>
 #include <radiosity/mirror_images.h>
 #include <radiosity/shooting_solver.h>
@@ -77,6 +78,14 @@ class ShootingCore final : public ShootingCoreBase {
         }
     };
     Shooter shooter(const Source& s, size_t c) const;
+    /// What a shooter sends patch→patch: per member position k its luminance (cd/m²),
+    /// and for a cluster larger than one member group the far field of each node of its
+    /// member tree (far_field.h), in the shooter's space (an image's: mirrored).
+    struct Emission {
+        const std::vector<V>& amount;
+        std::vector<FarSource> far;  ///< per node of m_trees[c]; empty: every member on its own
+    };
+    Emission emission(const Shooter& from, size_t c, const std::vector<V>& amount) const;
 
     struct Light {
         V unshot{0.0}, total{0.0}, pendingReflected{0.0};
@@ -113,8 +122,9 @@ class ShootingCore final : public ShootingCoreBase {
     void receive(size_t j, const V& deltaE);
     /// Patch→patch from cluster c of source s (as `from` shows it) to the receiver's
     /// patches: adds ΔE_j to into[j]. Returns the flux delivered, Σ ΔE_j A_j (lm per channel).
-    V shootPatches(const Source& s, const Shooter& from, size_t c, const std::vector<V>& amount, size_t receiver,
-                   std::vector<V>& into);
+    /// `terms` counts the source terms evaluated (members and far nodes, per receiver patch).
+    V shootPatches(const Source& s, const Shooter& from, size_t c, const Emission& light, size_t receiver,
+                   std::vector<V>& into, int64_t& terms);
     /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
     /// the flux shot when conserving.
     /// Flux a shot delivered, counted where it left the shooter (through mirrors:
@@ -136,7 +146,7 @@ class ShootingCore final : public ShootingCoreBase {
         V removed{0.0}, delivered{0.0};
     };
     Correction correct(const Source& s, const Shooter& from, size_t c, size_t d, const ClusterSamples& shotSamples,
-                       const std::vector<V>& totalOfSource);  // energy_correction.cpp
+                       const Emission& totalOfSource);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
     /// False when no light of cluster c (as source s shows it: Cs) can pass through s's
     /// mirrors to cluster d: c lies behind the chain's first mirror, d behind its last,
@@ -170,9 +180,10 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
     /// deliver() visits only the clusters a shot reached.
     std::vector<char> m_reached;
-    /// Per cluster, its members in small groups (member_tree.h), in real space; an
-    /// image's groups are the same members, their centroids mirrored.
-    std::vector<std::vector<MemberGroup>> m_memberGroups;
+    /// Per cluster, its member tree (member_tree.h) in real space; its leaves are the
+    /// member groups that share a visibility ray; an image's tree is the same members,
+    /// their centroids mirrored.
+    std::vector<MemberTree> m_trees;
     bool m_conserve = false;
     /// The mirrors' back faces (vertices reversed, normal −n): light shot into them is
     /// absorbed (a mirror's back is not a patch).

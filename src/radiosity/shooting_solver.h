@@ -32,7 +32,7 @@ constexpr double kConservationBound = 3.0;
 /// Counters of what the solve did.
 struct ShootingStatistics {
     int64_t clusterTransfers = 0;  ///< cluster→cluster receivers
-    int64_t patchPairs = 0;        ///< patch→patch source/receiver pairs evaluated
+    int64_t patchPairs = 0;        ///< patch→patch terms evaluated: per receiver patch, each sending member or far member-tree node
     int64_t corrections = 0;       ///< receiver clusters corrected
     int64_t pushPulls = 0;         ///< global push-pulls
     double escapeFraction = 0;     ///< of rays leaving the surfaces (0: a closed scene)

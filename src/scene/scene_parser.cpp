@@ -374,6 +374,10 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     if (d.solver.gatherFarDiameters > 0 && d.solver.gatherFarDiameters < 2)
         r.error("gather_far_diameters", "expected 0 (every patch on its own) or at least 2 (nearer, a point sits "
                                         "inside the node it would take as one source)");
+    d.solver.shootFarDiameters = r.nonNegative("shoot_far_diameters", d.solver.shootFarDiameters);
+    if (d.solver.shootFarDiameters > 0 && d.solver.shootFarDiameters < 2)
+        r.error("shoot_far_diameters", "expected 0 (every member on its own) or at least 2 (nearer, a receiver sits "
+                                       "inside the node it would take as one source)");
     d.solver.gatherMinWeight = r.number("gather_min_weight", d.solver.gatherMinWeight);
     if (!(d.solver.gatherMinWeight >= 0 && d.solver.gatherMinWeight < 1))
         r.error("gather_min_weight", "expected a number in [0, 1)");

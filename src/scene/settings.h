@@ -76,6 +76,9 @@ struct SolverOptions {
     /// Sensor gather: a part of a cluster (its member tree's nodes) farther than this
     /// many of its diameters counts as one source (0 = every patch on its own).
     double gatherFarDiameters = 3.0;
+    /// Shooting, patch→patch: a node of the shooter's member tree farther from a receiver
+    /// than this many of its diameters sends as one source (0 = every member on its own).
+    double shootFarDiameters = 3.0;
     /// Sensor gather: a near patch's corner and midpoint values are re-gathered only
     /// while their weight — the part of an error in them that reaches the sensor, the
     /// product of ρ F along the chain of gathers, rounded up to a power of ten — is at

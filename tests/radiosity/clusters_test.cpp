@@ -93,6 +93,7 @@ TEST_CASE("push-pull conserves energy", "[clusters]") {
 
 TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the total energy", "[clusters]") {
     auto s = parse(kTwoQuads);
+    s.solver.shootFarDiameters = 0;  // member by member, as the expected sum below (far field: 0.13 % off here)
     auto mesh = premesh(s, s.meshing);
     auto clustering = buildClusters(s, mesh, s.clusters);
     REQUIRE(clustering.clusters.size() == 2);

@@ -1,0 +1,43 @@
+// Far field: a node of a cluster's member tree seen from far away as one source (a
+// Barnes–Hut far field). Used by the final gather (the solution's reflected light) and by
+// the shooting's patch→patch near field (a shot's unshot light).
+#pragma once
+
+#include <radiosity/member_tree.h>
+#include <radiosity/mirror_images.h>
+
+#include <glm/mat3x3.hpp>
+
+#include <array>
+#include <vector>
+
+namespace rayrad::radiosity {
+
+/// A node's light moments up to the second, for E ≈ W g(at) + ½ tr(H_g M) with
+/// g = cosθ_x cosθ_y / r². Built from |L|: `sign` is −1 when the node's light is negative
+/// (an overshooting shot takes light back), and a node whose members' light has both signs
+/// has no far field (`mixed`: open it).
+struct FarSource {
+    Vec3 at{0.0};                 ///< luminance-weighted centroid, m
+    double reach = 0;             ///< twice the largest distance from `at` to a member corner, m
+    std::array<Vec3, 3> flux{};   ///< per channel Φ = Σ L_j A_j n_j (cd)
+    Vec3 normal{0.0};             ///< Φ's direction (luminance), unit
+    Rgb share{0.0};               ///< per channel Σ L_j A_j over the luminance sum W
+    glm::dmat3 moment{0.0};       ///< M = Σ Y(L_j) ∫_{A_j} (y − at)(y − at)ᵀ dA (cd m²)
+    uint32_t brightest = 0;       ///< member position k with the most power: the node's ray goes there
+    double sign = 1;              ///< +1, or −1 for a node of negative light
+    bool mixed = false;           ///< members of both signs: no far field
+};
+
+/// The far sources of every node of `tree` (indexed like tree.nodes). `luminance[k]` is
+/// the luminance (cd/m², RGB) of member position k of `cluster` (its order in
+/// Cluster::patches); `mesh` holds the cluster's patches.
+std::vector<FarSource> farSources(const PatchMesh& mesh, const Cluster& cluster, const MemberTree& tree,
+                                  const std::vector<Rgb>& luminance);
+
+/// The node's light at x with normal n (lx, RGB): g expanded about its luminance-weighted
+/// centroid to second order, E ≈ cosθ_x (−Φ·u)/r³ + ½ tr(H_g M) (the first-order term
+/// vanishes there); nothing when the node faces away. `image` (or null) mirrors the node.
+Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image);
+
+}  // namespace rayrad::radiosity
