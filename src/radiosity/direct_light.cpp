@@ -9,6 +9,13 @@
 
 namespace rayrad::radiosity {
 
+namespace {
+/// An area light within this many of its diameters gets all its shadow rays; farther, it
+/// subtends a smaller solid angle and its penumbrae are narrower, and the rays fall in
+/// proportion to the solid angle (at least one per triangle of its outline).
+constexpr double kAllSamplesDiameters = 5.0;
+}  // namespace
+
 AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance) {
     AreaLight light;
     light.vertices = std::move(vertices);
@@ -202,12 +209,27 @@ Rgb DirectLight::illuminance(const Vec3& x, const Vec3& n, const Visibility& vis
     for (size_t k = 0; k < points; ++k) add(k, fromPointLight(m_pointLights[k], x, n, vis));
     for (size_t k = 0; k < m_areaLights.size(); ++k)
         add(points + k, fromAreaLight(m_areaLights[k], x, n, vis, samples, rng, openOf(points + k)));
+    return e + fromImages(x, n, vis, samples, rng, perSource, perSourceOpen);
+}
+
+Rgb DirectLight::fromImages(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
+                            std::vector<Rgb>* perSource, std::vector<Rgb>* perSourceOpen) const {
+    const size_t points = m_pointLights.size();
+    Rgb e(0.0);
     for (size_t i = 0; i < m_images.size(); ++i) {
         MirrorPath path(m_mirrors, m_images[i], vis);
         const size_t chain = (i + 1) * perChain();
-        for (size_t k = 0; k < points; ++k) add(chain + k, fromPointImage(m_pointLights[k], m_images[i], path, x, n));
-        for (size_t k = 0; k < m_areaLights.size(); ++k)
-            add(chain + points + k, fromAreaImage(i, k, x, n, path, samples, rng, openOf(chain + points + k)));
+        for (size_t k = 0; k < points; ++k) {
+            const Rgb v = fromPointImage(m_pointLights[k], m_images[i], path, x, n);
+            if (perSource) (*perSource)[chain + k] = v;
+            e += v;
+        }
+        for (size_t k = 0; k < m_areaLights.size(); ++k) {
+            const size_t s = chain + points + k;
+            const Rgb v = fromAreaImage(i, k, x, n, path, samples, rng, perSourceOpen ? &(*perSourceOpen)[s] : nullptr);
+            if (perSource) (*perSource)[s] = v;
+            e += v;
+        }
     }
     return e;
 }
@@ -218,9 +240,12 @@ Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3
     if (open) *open = light.luminance * (kPi * std::max(0.0, f));
     if (f <= 0) return Rgb(0.0);
     // Visible fraction, weighted by the unoccluded integrand cosθ_x cosθ_y / r².
+    const double near = kAllSamplesDiameters * 2 * light.radius;  // m
+    const double d2 = glm::dot(light.centre - x, light.centre - x);
+    const double rays = d2 > near * near ? samples * near * near / d2 : samples;
     double weightSum = 0, visibleSum = 0;
     for (size_t t = 0; t < light.triangles.size(); ++t) {
-        int nt = std::max(1, static_cast<int>(std::lround(samples * light.triangleAreas[t] / light.area)));
+        int nt = std::max(1, static_cast<int>(std::lround(rays * light.triangleAreas[t] / light.area)));
         int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(nt)))));
         const auto& tri = light.triangles[t];
         for (int i = 0; i < m; ++i)

@@ -51,6 +51,14 @@ class DirectLight {
     Rgb illuminance(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
                     std::vector<Rgb>* perSource = nullptr, std::vector<Rgb>* perSourceOpen = nullptr) const;
 
+    /// The same for display (the ray tracer), with adaptive shadow testing (Ward 1991):
+    /// the real lights are ranked by their unshadowed illuminance and shadow-tested in that
+    /// order until the untested ones could add less than `threshold` × what the tested ones
+    /// gave; those are added unshadowed × the tested ones' visible share. Images are always
+    /// tested. threshold 0: every light tested, as illuminance(). See shadow_testing.cpp.
+    Rgb illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
+                              double threshold) const;
+
     /// Sources: for the real scene and then each mirror image, the point lights and then
     /// the area lights: s = chain · (points + areas) + k, chain 0 the real scene.
     size_t sourceCount() const { return perChain() * (1 + m_images.size()); }
@@ -100,6 +108,10 @@ class DirectLight {
     Rgb fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
                       Random* rng, Rgb* open = nullptr) const;
     std::optional<AreaLight> visiblePartOfImage(size_t i, size_t k, const Vec3& x) const;
+    /// The light of every image (virtual lights) at x; `perSource`/`perSourceOpen` as for
+    /// illuminance().
+    Rgb fromImages(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
+                   std::vector<Rgb>* perSource, std::vector<Rgb>* perSourceOpen) const;
 
     std::vector<scene::PointLight> m_pointLights;
     std::vector<AreaLight> m_areaLights;

@@ -75,7 +75,8 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     Vec3 x = mesh.pointAt(p, h.u, h.v);
     Rgb L = m.emission;
     if (m.reflectance == Rgb(0.0)) return L;
-    Rgb direct = lights.illuminance(x, p.normal, embree, areaLightSamples, &rng);  // with virtual lights
+    // With virtual lights; the weakest real lights shadow-tested only while they matter.
+    Rgb direct = lights.illuminanceForDisplay(x, p.normal, embree, areaLightSamples, &rng, scene.render.directThreshold);
     Rgb indirect = solution.vertexIndirect.empty()
                        ? Rgb(0.0)
                        : radiosity::interpolateIndirect(mesh, solution, h.patch, h.u, h.v);

@@ -431,6 +431,9 @@ void parseRender(JsonObject r, SceneDesc& d) {
     d.render.samplesPerPixel = r.integer("spp", d.render.samplesPerPixel, 1, 65536);
     d.render.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int>(d.render.seed), 0, 2147483647));
     d.render.areaLightSamples = r.integer("area_light_samples", d.render.areaLightSamples, 1, 4096);
+    d.render.directThreshold = r.number("direct_threshold", d.render.directThreshold);
+    if (!(d.render.directThreshold >= 0 && d.render.directThreshold < 1))
+        r.error("direct_threshold", "expected a number in [0, 1) (0: every light shadow-tested)");
     d.render.sensorAreaLightSamples =
         r.integer("sensor_area_light_samples", d.render.sensorAreaLightSamples, 1, 1 << 20);
     d.render.maxDepth = r.integer("max_depth", d.render.maxDepth, 0, 64);

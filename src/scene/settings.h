@@ -129,6 +129,10 @@ struct RenderOptions {
     uint64_t seed = 1;            ///< the same seed gives the same image
     int areaLightSamples = 16;    ///< shadow rays per area light per hit
     int sensorAreaLightSamples = 256;  ///< shadow rays per area light at a sensor
+    /// Adaptive shadow testing at hits (DirectLight::illuminanceForDisplay): lights are
+    /// shadow-tested strongest first until the rest could add less than this fraction of
+    /// the light found (0 = every light tested).
+    double directThreshold = 0.02;
     int maxDepth = 8;             ///< Whitted recursion through mirrors and glass
 };
 

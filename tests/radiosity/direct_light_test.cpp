@@ -99,3 +99,47 @@ TEST_CASE("OBJ meshes load through assimp with their transform", "[scene]") {
     for (const auto& p : mesh.patches) REQUIRE(glm::dot(p.normal, p.centroid - c) > 0);
     CHECK(mesh.totalArea() == Approx(4 * (1.5 + std::sqrt(3.0) / 2)));
 }
+
+namespace {
+/// Counts the shadow rays it answers (all visible: an empty scene's answer).
+struct CountingVisibility : Visibility {
+    mutable size_t rays = 0;
+    bool visible(const Vec3&, const Vec3&) const override { return ++rays, true; }
+};
+/// Blocks every ray to a point above the plane z = height (a ceiling of lights hidden).
+struct BlockedAbove : Visibility {
+    double height;
+    explicit BlockedAbove(double h) : height(h) {}
+    bool visible(const Vec3& from, const Vec3& to) const override { return std::max(from.z, to.z) < height; }
+};
+}  // namespace
+
+TEST_CASE("adaptive shadow testing: the strong lights tested, the weak ones estimated, within the threshold",
+          "[direct]") {
+    // One bright light above the point and 60 weak ones far away (3 of every 4 points
+    // under a 'ceiling' that blocks them at z > 5).
+    std::string lights = R"({"type": "point", "position": [0, 0, 2], "intensity_cd": 4000})";
+    for (int k = 0; k < 60; ++k)
+        lights += R"(, {"type": "point", "position": [)" + std::to_string(10 + k % 10) + ", " +
+                  std::to_string(k / 10) + ", " + (k % 4 == 0 ? "4" : "6") + R"(], "intensity_cd": 100})";
+    Setup s(withLights(lights));
+    const Vec3 x(0, 0, 0), n(0, 0, 1);
+
+    // Threshold 0 is the exact sum, ray for ray.
+    CountingVisibility all, some;
+    const Rgb exact = s.lights->illuminance(x, n, all, 16, nullptr);
+    CHECK(s.lights->illuminanceForDisplay(x, n, all, 16, nullptr, 0.0) == exact);
+    CHECK(all.rays == 2 * 61);
+
+    // 0.02: fewer rays, and what the untested lights bring is estimated, not dropped.
+    const Rgb adaptive = s.lights->illuminanceForDisplay(x, n, some, 16, nullptr, 0.02);
+    CHECK(some.rays < 61);
+    CHECK(luminance(adaptive) == Approx(luminance(exact)).epsilon(1e-12));  // nothing occluded: the estimate is exact
+
+    // With the far lights mostly hidden the estimate errs, by less than the threshold.
+    BlockedAbove ceiling(5.0);
+    const double truth = luminance(s.lights->illuminance(x, n, ceiling, 16, nullptr));
+    const double estimate = luminance(s.lights->illuminanceForDisplay(x, n, ceiling, 16, nullptr, 0.02));
+    CHECK(std::abs(estimate / truth - 1) < 0.02);
+    CHECK(estimate != truth);  // it did estimate (the test would prove nothing otherwise)
+}

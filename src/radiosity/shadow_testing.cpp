@@ -1,0 +1,85 @@
+// Adaptive shadow testing for display (Ward, "Adaptive shadow testing for ray tracing",
+// Eurographics Rendering Workshop 1991): with a hundred luminaires, most of a hit point's
+// light comes from a few of them, and the rest need not each cast shadow rays.
+#include <radiosity/direct_light.h>
+
+#include <radiosity/form_factor.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rayrad::radiosity {
+
+namespace {
+/// Beyond this many of its diameters an area light's unshadowed illuminance is ranked by
+/// the point approximation L A cosθ_x cosθ_y / r² (exact for the light that is tested).
+constexpr double kRankPointDiameters = 5.0;
+
+/// A real light's unshadowed illuminance at x (lx, RGB), for ranking and for the untested.
+Rgb unshadowedPoint(const scene::PointLight& l, const Vec3& x, const Vec3& n) {
+    const Vec3 d = l.position - x;
+    const double r2 = glm::dot(d, d);
+    if (r2 <= 0) return Rgb(0.0);
+    const double r = std::sqrt(r2);
+    const double cosTheta = glm::dot(n, d) / r;
+    return cosTheta > 0 ? l.intensityToward(-d / r) * (cosTheta / r2) : Rgb(0.0);  // I cosθ / d²
+}
+
+Rgb unshadowedArea(const AreaLight& light, const Vec3& x, const Vec3& n) {
+    const Vec3 d = light.centre - x;
+    const double r2 = glm::dot(d, d);
+    const double far = kRankPointDiameters * 2 * light.radius;
+    if (r2 > far * far) {
+        const double r = std::sqrt(r2);
+        const double cosX = glm::dot(n, d) / r, cosY = -glm::dot(light.normal, d) / r;
+        return cosX > 0 && cosY > 0 ? light.luminance * (light.area * cosX * cosY / r2) : Rgb(0.0);
+    }
+    const double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
+    return light.luminance * (kPi * std::max(0.0, f));  // π L F
+}
+}  // namespace
+
+Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
+                                       double threshold) const {
+    if (threshold <= 0) return illuminance(x, n, vis, samples, rng);
+    struct Candidate {
+        double potential;  ///< Y of the unshadowed illuminance, lx
+        Rgb open;          ///< the unshadowed illuminance, lx
+        uint32_t light;    ///< points first, then area lights
+    };
+    thread_local std::vector<Candidate> candidates;
+    candidates.clear();
+    const size_t points = m_pointLights.size();
+    double remaining = 0;  // Σ potential of the lights not yet tested
+    auto consider = [&](const Rgb& open, size_t k) {
+        const double y = luminance(open);
+        if (y <= 0) return;
+        candidates.push_back({y, open, static_cast<uint32_t>(k)});
+        remaining += y;
+    };
+    for (size_t k = 0; k < points; ++k) consider(unshadowedPoint(m_pointLights[k], x, n), k);
+    for (size_t k = 0; k < m_areaLights.size(); ++k) consider(unshadowedArea(m_areaLights[k], x, n), points + k);
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.potential != b.potential ? a.potential > b.potential : a.light < b.light;  // deterministic
+    });
+    // Test the strongest first, until what is left could add less than the threshold.
+    Rgb e(0.0);
+    double found = 0, tested = 0;  // Y of what the tested lights gave, and of their potential
+    size_t next = 0;
+    for (; next < candidates.size(); ++next) {
+        if (next > 0 && remaining < threshold * found) break;
+        const Candidate& c = candidates[next];
+        const Rgb v = c.light < points ? fromPointLight(m_pointLights[c.light], x, n, vis)
+                                       : fromAreaLight(m_areaLights[c.light - points], x, n, vis, samples, rng);
+        e += v;
+        found += luminance(v);
+        tested += c.potential;
+        remaining -= c.potential;
+    }
+    // The untested: unshadowed, times the share of their potential the tested lights delivered.
+    const double seen = tested > 0 ? std::min(1.0, found / tested) : 1.0;
+    for (; next < candidates.size(); ++next) e += candidates[next].open * seen;
+    return e + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
+}
+
+}  // namespace rayrad::radiosity
