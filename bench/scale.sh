@@ -8,6 +8,8 @@
 # Usage: bench/scale.sh [max_edge ...]
 #        bench/scale.sh --living-room [max_seconds]   (the living room, mirrors on, stage table;
 #                                                      the solve stops at max_seconds, default 1800)
+#        bench/scale.sh --hall                        (bench/hall.py: 100 troffers, 104 k patches;
+#                                                      solve + 1280 x 1024 render at 4 spp, stage table)
 # Extra settings: SET="--set clusters.enabled=false" bench/scale.sh 0.5
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,6 +23,14 @@ if [ "${1:-}" = "--living-room" ]; then
     [ -f "$scene" ] || { echo "bench/scale.sh: $scene not found" >&2; exit 2; }
     # shellcheck disable=SC2086
     "$rayrad" solve "$scene" --set radiosity.max_seconds="${2:-1800}" ${SET:-} -q > /dev/null 2> "$tmp/err.txt" || true
+    grep -v '^warning' "$tmp/err.txt"
+    exit 0
+fi
+
+if [ "${1:-}" = "--hall" ]; then
+    bench/hall.py > "$tmp/hall.json"
+    # shellcheck disable=SC2086
+    "$rayrad" render "$tmp/hall.json" ${SET:-} -o "$tmp/hall.png" -q > /dev/null 2> "$tmp/err.txt"
     grep -v '^warning' "$tmp/err.txt"
     exit 0
 fi
