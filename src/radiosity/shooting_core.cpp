@@ -29,7 +29,6 @@ constexpr int64_t kStallShots = 2000;
 constexpr double kSharedRayDiameters = 2.0;
 /// Members per group (see member_tree.h).
 constexpr size_t kGroupSize = 8;
-
 }  // namespace
 
 template <class V>
