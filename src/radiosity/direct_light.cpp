@@ -12,7 +12,7 @@ namespace rayrad::radiosity {
 namespace {
 /// An area light within this many of its diameters gets all its shadow rays; farther, it
 /// subtends a smaller solid angle and its penumbrae are narrower, and the rays fall in
-/// proportion to the solid angle (at least one per triangle of its outline).
+/// proportion to the solid angle (at least one).
 constexpr double kAllSamplesDiameters = 5.0;
 }  // namespace
 
@@ -244,26 +244,40 @@ Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3
     const double d2 = glm::dot(light.centre - x, light.centre - x);
     const double rays = d2 > near * near ? samples * near * near / d2 : samples;
     double weightSum = 0, visibleSum = 0;
-    for (size_t t = 0; t < light.triangles.size(); ++t) {
-        int nt = std::max(1, static_cast<int>(std::lround(rays * light.triangleAreas[t] / light.area)));
-        int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(nt)))));
-        const auto& tri = light.triangles[t];
-        for (int i = 0; i < m; ++i)
-            for (int j = 0; j < m; ++j) {
-                double u1 = (i + (rng ? rng->nextDouble() : 0.5)) / m;
-                double u2 = (j + (rng ? rng->nextDouble() : 0.5)) / m;
-                // Uniform point on a triangle (square-root warp).
-                double su = std::sqrt(u1);
-                Vec3 y = (1 - su) * tri[0] + su * (1 - u2) * tri[1] + su * u2 * tri[2];
-                Vec3 d = y - x;
-                double r2 = glm::dot(d, d);
-                if (r2 <= 0) continue;
-                double r = std::sqrt(r2);
-                double w = std::max(0.0, glm::dot(n, d) / r) * std::max(0.0, -glm::dot(light.normal, d) / r) / r2;
-                if (w <= 0) continue;
-                weightSum += w;
-                if (vis.visibleFromSurface(x, n, y)) visibleSum += w;
-            }
+    auto sample = [&](const std::array<Vec3, 3>& tri, double u1, double u2) {
+        // Uniform point on a triangle (square-root warp).
+        const double su = std::sqrt(u1);
+        const Vec3 y = (1 - su) * tri[0] + su * (1 - u2) * tri[1] + su * u2 * tri[2];
+        const Vec3 d = y - x;
+        const double r2 = glm::dot(d, d);
+        if (r2 <= 0) return;
+        const double r = std::sqrt(r2);
+        const double w = std::max(0.0, glm::dot(n, d) / r) * std::max(0.0, -glm::dot(light.normal, d) / r) / r2;
+        if (w <= 0) return;
+        weightSum += w;
+        if (vis.visibleFromSurface(x, n, y)) visibleSum += w;
+    };
+    if (rays < static_cast<double>(light.triangles.size())) {
+        // Fewer rays than triangles (a far light): stratified over the whole outline by area.
+        const int count = std::max(1, static_cast<int>(std::lround(rays)));
+        for (int i = 0; i < count; ++i) {
+            double u = (i + (rng ? rng->nextDouble() : 0.5)) / count * light.area;  // m², along the triangles
+            size_t t = 0;
+            while (t + 1 < light.triangles.size() && u > light.triangleAreas[t]) u -= light.triangleAreas[t++];
+            const double u2 = rng ? rng->nextDouble() : 0.5;
+            sample(light.triangles[t], std::clamp(u / light.triangleAreas[t], 0.0, 1.0), u2);
+        }
+    } else {
+        for (size_t t = 0; t < light.triangles.size(); ++t) {
+            int nt = std::max(1, static_cast<int>(std::lround(rays * light.triangleAreas[t] / light.area)));
+            int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(nt)))));
+            for (int i = 0; i < m; ++i)
+                for (int j = 0; j < m; ++j) {
+                    const double u1 = (i + (rng ? rng->nextDouble() : 0.5)) / m;  // drawn in this order
+                    const double u2 = (j + (rng ? rng->nextDouble() : 0.5)) / m;
+                    sample(light.triangles[t], u1, u2);
+                }
+        }
     }
     double fraction = weightSum > 0 ? visibleSum / weightSum : 1.0;
     return light.luminance * (kPi * f * fraction);  // E = π L F
