@@ -94,16 +94,20 @@ Vec3 DirectLight::pointSourcePosition(size_t s) const {
     return s < perChain() ? p : m_images[s / perChain() - 1].point(p);
 }
 
-Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) {
+Rgb DirectLight::unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n) {
     Vec3 d = l.position - x;
     double r2 = glm::dot(d, d);
     if (r2 <= 0) return Rgb(0.0);
     double r = std::sqrt(r2);
     double cosTheta = glm::dot(n, d) / r;
     if (cosTheta <= 0) return Rgb(0.0);
-    Rgb intensity = l.intensityToward(-d / r);
-    if (intensity == Rgb(0.0) || !vis.visibleFromSurface(x, n, l.position)) return Rgb(0.0);
-    return intensity * (cosTheta / r2);  // E = I cosθ / d²
+    return l.intensityToward(-d / r) * (cosTheta / r2);  // E = I cosθ / d²
+}
+
+Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) {
+    const Rgb e = unshadowedFromPointLight(l, x, n);
+    if (e == Rgb(0.0) || !vis.visibleFromSurface(x, n, l.position)) return Rgb(0.0);
+    return e;
 }
 
 Rgb DirectLight::fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,

@@ -96,6 +96,8 @@ class DirectLight {
 
   private:
     size_t perChain() const { return m_pointLights.size() + m_areaLights.size(); }
+    /// E = I(ω) cosθ / d² without the shadow ray.
+    static Rgb unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n);
     static Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis);
     static Rgb fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,
                               const Vec3& x, const Vec3& n);

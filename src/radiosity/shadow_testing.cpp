@@ -15,16 +15,7 @@ namespace {
 /// the point approximation L A cosθ_x cosθ_y / r² (exact for the light that is tested).
 constexpr double kRankPointDiameters = 5.0;
 
-/// A real light's unshadowed illuminance at x (lx, RGB), for ranking and for the untested.
-Rgb unshadowedPoint(const scene::PointLight& l, const Vec3& x, const Vec3& n) {
-    const Vec3 d = l.position - x;
-    const double r2 = glm::dot(d, d);
-    if (r2 <= 0) return Rgb(0.0);
-    const double r = std::sqrt(r2);
-    const double cosTheta = glm::dot(n, d) / r;
-    return cosTheta > 0 ? l.intensityToward(-d / r) * (cosTheta / r2) : Rgb(0.0);  // I cosθ / d²
-}
-
+/// An area light's unshadowed illuminance at x (lx, RGB), for ranking and for the untested.
 Rgb unshadowedArea(const AreaLight& light, const Vec3& x, const Vec3& n) {
     const Vec3 d = light.centre - x;
     const double r2 = glm::dot(d, d);
@@ -57,7 +48,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
         candidates.push_back({y, open, static_cast<uint32_t>(k)});
         remaining += y;
     };
-    for (size_t k = 0; k < points; ++k) consider(unshadowedPoint(m_pointLights[k], x, n), k);
+    for (size_t k = 0; k < points; ++k) consider(unshadowedFromPointLight(m_pointLights[k], x, n), k);
     for (size_t k = 0; k < m_areaLights.size(); ++k) consider(unshadowedArea(m_areaLights[k], x, n), points + k);
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return a.potential != b.potential ? a.potential > b.potential : a.light < b.light;  // deterministic

@@ -288,9 +288,10 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
         int top = 0;
         stack[top++] = 0;
         while (top > 0) {
-            const MemberNode& node = tree.nodes[stack[--top]];
+            const uint32_t index = stack[--top];
+            const MemberNode& node = tree.nodes[index];
             if (!light.far.empty()) {
-                const FarSource& f = light.far[&node - tree.nodes.data()];
+                const FarSource& f = light.far[index];
                 const double limit = m_options.shootFarDiameters * f.reach;
                 if (node.size() > 1 && !f.mixed && glm::dot(f.at - rec.centroid, f.at - rec.centroid) > limit * limit) {
                     ++terms;
@@ -501,13 +502,13 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         for (size_t d = 0; d < n; ++d)
             if (isNear[d]) nearReceivers.push_back(d);
         if (!nearReceivers.empty()) {
-            const Emission light = emission(from, c, unshot);
+            const Emission shotLight = emission(from, c, unshot);
             tbb::parallel_for(tbb::blocked_range<size_t>(0, nearReceivers.size(), 4),
                               [&](const tbb::blocked_range<size_t>& range) {
                 int64_t pp = 0;
                 for (size_t k = range.begin(); k != range.end(); ++k) {
                     const size_t d = nearReceivers[k];
-                    V flux = shootPatches(s, from, c, light, d, m_shotE, pp);
+                    V flux = shootPatches(s, from, c, shotLight, d, m_shotE, pp);
                     if (throughMirrors) deliveredTo[d] = flux;
                 }
                 patchPairs += pp;
