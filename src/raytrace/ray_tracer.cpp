@@ -89,6 +89,9 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
     HdrImage image(camera.width(), camera.height());
     const int spp = options.samplesPerPixel;
     const int strata = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(spp)))));
+    // area_light_samples is a pixel's budget of shadow rays per area light: its samples
+    // share it (⌈n / spp⌉ each), so a pixel averages about n rays per light at any spp.
+    const int raysPerHit = std::max(1, (options.areaLightSamples + spp - 1) / spp);
     std::atomic<int> rowsDone{0};
     tbb::parallel_for(tbb::blocked_range<int>(0, image.height, 1), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
@@ -107,7 +110,7 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                     }
                     Vec3 dir = camera.direction(x + jx, y + jy);
                     sum += shadeRay(scene, mesh, solution, lights, embree, camera.position(), dir,
-                                    options.areaLightSamples, rng, 0);
+                                    raysPerHit, rng, 0);
                 }
                 image.at(x, y) = sum / static_cast<double>(spp);
             }

@@ -127,7 +127,7 @@ struct SolverOptions {
 struct RenderOptions {
     int samplesPerPixel = 4;      ///< jittered (stratified) samples per pixel
     uint64_t seed = 1;            ///< the same seed gives the same image
-    int areaLightSamples = 16;    ///< shadow rays per area light per hit
+    int areaLightSamples = 16;    ///< shadow rays per area light per pixel (⌈n / spp⌉ per sample)
     int sensorAreaLightSamples = 256;  ///< shadow rays per area light at a sensor
     /// Adaptive shadow testing at hits (DirectLight::illuminanceForDisplay): lights are
     /// shadow-tested strongest first until the rest could add less than this fraction of
