@@ -106,8 +106,10 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
 
     // A local fixed-point iteration, bottom-up: each round gathers at every edge vertex
     // with the previous round's values at the corners of near patches (the reconstruction
-    // to start with, and for corners outside the set). Parallel over vertices; each
-    // gather serial, so the result does not depend on the thread count.
+    // to start with, and for corners outside the set). Only the near patches' part of a
+    // gather depends on those values: the rest is gathered once, in the first round, and
+    // kept. Parallel over vertices; each gather serial, so the result does not depend on
+    // the thread count.
     GatherOptions options;
     options.levels = levels;
     options.farDiameters = kFarClusterDiameters;
@@ -116,6 +118,7 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
     std::unordered_map<uint32_t, size_t> slot;
     for (size_t k = 0; k < edge.size(); ++k) slot.emplace(static_cast<uint32_t>(edge[k]), k);
     std::vector<Rgb> previous(edge.size()), current(edge.size());
+    std::vector<Rgb> rest(edge.size());  // lx: each vertex's gather but for its near patches
     for (size_t k = 0; k < edge.size(); ++k) previous[k] = solution.vertexIndirect[edge[k]];
     Gatherer::CornerSource corners = [&](size_t patch, int corner, double /*share*/) {
         uint32_t v = mesh.patches[patch].v[corner];
@@ -128,8 +131,10 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
         tbb::parallel_for(size_t(0), edge.size(), [&](size_t k) {
             size_t v = edge[k];
             const Patch& own = mesh.patches[patchOf[v]];
-            current[k] = gatherer.gatherWith(nudgeInside(mesh, patchOf[v], mesh.vertices[v], nudge), own.normal,
-                                             &corners, /*parallel=*/false);
+            const Vec3 x = nudgeInside(mesh, patchOf[v], mesh.vertices[v], nudge);
+            using Part = Gatherer::Part;
+            if (round == 0) rest[k] = gatherer.gatherWith(x, own.normal, &corners, false, nullptr, 0, Part::AllButNear);
+            current[k] = rest[k] + gatherer.gatherWith(x, own.normal, &corners, /*parallel=*/false, nullptr, 0, Part::Near);
             size_t n = ++done;
             if (onProgress && n % 16 == 0) onProgress(static_cast<double>(n) / total);
         });

@@ -223,7 +223,7 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass) {
 }
 
 Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                         const MidpointSource* midpoints, double detailFloor) const {
+                         const MidpointSource* midpoints, double detailFloor, Part part) const {
     // Near patches get linear luminance from corner values (refined toward x with
     // gathered midpoints when asked), the rest a patch-constant one.
     struct Near {
@@ -305,6 +305,13 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             std::sort(near.begin() + static_cast<std::ptrdiff_t>(c.begin), near.begin() + static_cast<std::ptrdiff_t>(c.end),
                       [](const Near& a, const Near& b) { return a.position < b.position; });
     }
+    if (part == Part::Near) {
+        Rgb sum(0.0);
+        for (const Near& e : near)
+            for (const NearPiece& piece : e.pieces)
+                sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[e.patch].normal, piece.depth);
+        return sum;
+    }
 
     // Sum over clusters: near patches by sub-triangles, other patches with their own rays
     // when close, far clusters with one shared ray (form factors still per member), and
@@ -357,6 +364,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         auto addPatch = [&](uint32_t j) {
             auto it = hasNear ? nearFrom(m_treePosition[j]) : nearLast;
             if (it != nearLast && it->patch == j) {
+                if (part == Part::AllButNear) return;
                 for (const NearPiece& piece : it->pieces)
                     sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[j].normal, piece.depth);
                 return;

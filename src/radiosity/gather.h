@@ -120,8 +120,12 @@ class Gatherer {
     /// light at their sub-triangles' corners (see the class comment).
     /// The near patches of smallest share (ρ F), as many as keep the sum of their shares
     /// within `detailFloor`, take their corner values from the solution and are not refined.
+    /// `part` (with `cornerIndirectOf`) splits the sum in two that add up to the whole:
+    /// the near patches' linear luminance alone, the only part that depends on the corner
+    /// values, or everything else (far clusters, other patches, mirror images).
+    enum class Part { All, Near, AllButNear };
     Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                   const MidpointSource* midpoints = nullptr, double detailFloor = 0) const;
+                   const MidpointSource* midpoints = nullptr, double detailFloor = 0, Part part = Part::All) const;
 
   private:
     /// A piece of a near patch with the luminance at its corners (cd/m², RGB).
