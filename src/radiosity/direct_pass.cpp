@@ -6,6 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -39,6 +40,11 @@ std::vector<std::array<double, 2>> shadowSamplePoints(int count) {
 
 /// Shadow rays per point source on a partly shadowed patch.
 constexpr int kShadowSamples = 64;
+/// Sample points for an area light whose shadow edge crosses a patch: kShadowSamples for
+/// the patch's strongest light, fewer (the first of the same sequence) in proportion to
+/// a weaker light's unshadowed illuminance, so each light's error in lx is about the
+/// strongest one's; at least this many.
+constexpr int kMinAreaShadowSamples = 16;
 
 /// The four evaluation points of patch p: its corners pulled a hair toward the centroid
 /// (so shadow rays do not start inside a neighbouring wall), then the centroid.
@@ -181,15 +187,17 @@ bool sameVisibleFraction(const Rgb* values, const Rgb* opens) {
     return hi - lo <= 1e-9;
 }
 
-/// Mean illuminance (lx) over patch p from area source s over the `refined` points, for
-/// a patch that a shadow's edge crosses.
+/// Mean illuminance (lx) over patch p from area source s over the first `count` of the
+/// `refined` points, for a patch that a shadow's edge crosses.
 Rgb refinedAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
                           size_t s, const Visibility& vis, int areaSamples,
-                          const std::vector<std::array<double, 2>>& refined) {
+                          const std::vector<std::array<double, 2>>& refined, size_t count) {
     const Vec3 a = mesh.corner(p, 0), ab = mesh.corner(p, 1) - a, ac = mesh.corner(p, 2) - a;
+    count = std::min(count, refined.size());
     Rgb sum(0.0);
-    for (const auto& uv : refined) sum += lights.fromAreaSource(s, a + uv[0] * ab + uv[1] * ac, normal, vis, areaSamples);
-    return sum / static_cast<double>(refined.size());
+    for (size_t k = 0; k < count; ++k)
+        sum += lights.fromAreaSource(s, a + refined[k][0] * ab + refined[k][1] * ac, normal, vis, areaSamples);
+    return sum / static_cast<double>(count);
 }
 
 /// What one side of a patch receives directly: the mean illuminance over it (lx), its
@@ -215,6 +223,12 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
     for (int k = 0; k < 3; ++k) out.corner[k] = e[k];
     out.mean = fourPointMean(e[3], e);
     const std::array<Vec3, 3> triangle{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
+    double strongest = 0;  // lx: the largest unshadowed 4-point mean of an area source
+    for (size_t s = 0; s < lights.sourceCount(); ++s) {
+        if (lights.isPointSource(s)) continue;
+        const Rgb opens[4] = {open[0][s], open[1][s], open[2][s], open[3][s]};
+        strongest = std::max(strongest, luminance(fourPointMean(opens[3], opens)));
+    }
     for (size_t s = 0; s < lights.sourceCount(); ++s) {
         const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
         const Rgb opens[4] = {open[0][s], open[1][s], open[2][s], open[3][s]};
@@ -235,7 +249,10 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, refined)) {
             sourceMean = *near;
         } else if (!sameVisibleFraction(values, opens)) {
-            sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined);
+            const double share = strongest > 0 ? luminance(fourPointMean(opens[3], opens)) / strongest : 1.0;
+            const auto count = static_cast<size_t>(std::clamp(
+                std::lround(kShadowSamples * share), static_cast<long>(kMinAreaShadowSamples), static_cast<long>(kShadowSamples)));
+            sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined, count);
         }
         out.mean += sourceMean - fourPoint;
         out.mirrorLoss += mirrorLoss(sourceMean, lights.sourceWeight(s));

@@ -48,26 +48,34 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
     // A point in the plane itself (on the source, or on a coplanar neighbour of it) would
     // otherwise see the polygon fill its whole hemisphere (F = 1) whenever rounding puts
     // it a hair in front: a patch lighting itself, a sensor counting its own wall.
+    // Directions from x to the vertices, unit; their distances give the reach.
+    Vec3 dirOnStack[kStackClipped];
+    std::vector<Vec3> dirOnHeap;  // emitters with many sides (a 24-gon disk)
+    Vec3* dir = dirOnStack;
+    if (2 * count > kStackClipped) dirOnHeap.resize(2 * count), dir = dirOnHeap.data();
     double reach = 0;
-    for (int i = 0; i < count; ++i) reach = std::max(reach, glm::length(vertices[i] - x));
-    if (glm::dot(x - vertices[0], polyNormal) <= kCoplanar * reach) return 0.0;
-    Vec3 clippedOnStack[kStackClipped];
-    std::vector<Vec3> clippedOnHeap;  // emitters with many sides (a 24-gon disk)
-    const Vec3* v = vertices;
     bool allFront = true;
-    for (int i = 0; i < count; ++i) allFront &= glm::dot(vertices[i] - x, n) >= 0;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 d = vertices[i] - x;
+        const double r = glm::length(d);
+        reach = std::max(reach, r);
+        allFront &= glm::dot(d, n) >= 0;
+        dir[i] = r > 0 ? d / r : d;
+    }
+    if (glm::dot(x - vertices[0], polyNormal) <= kCoplanar * reach) return 0.0;
     if (!allFront) {
+        Vec3 clippedOnStack[kStackClipped];
+        std::vector<Vec3> clippedOnHeap;
         Vec3* clipped = clippedOnStack;
         if (2 * count > kStackClipped) clippedOnHeap.resize(2 * count), clipped = clippedOnHeap.data();
         count = clipToFront(x, n, vertices, count, clipped);
         if (count < 3) return 0.0;
-        v = clipped;
+        for (int i = 0; i < count; ++i) dir[i] = glm::normalize(clipped[i] - x);
     }
     double sum = 0;
-    Vec3 r0 = glm::normalize(v[0] - x);
-    Vec3 ri = r0;
+    Vec3 ri = dir[0];
     for (int i = 0; i < count; ++i) {
-        Vec3 rj = (i + 1 < count) ? glm::normalize(v[i + 1] - x) : r0;
+        Vec3 rj = (i + 1 < count) ? dir[i + 1] : dir[0];
         Vec3 c = glm::cross(ri, rj);
         double s = glm::length(c);
         if (s > 1e-15) {
