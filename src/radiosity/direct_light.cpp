@@ -243,6 +243,11 @@ Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3
     double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
     if (open) *open = light.luminance * (kPi * std::max(0.0, f));
     if (f <= 0) return Rgb(0.0);
+    return light.luminance * (kPi * f * visibleFraction(light, x, n, vis, samples, rng));  // E = π L F
+}
+
+double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
+                                    int samples, Random* rng) {
     // Visible fraction, weighted by the unoccluded integrand cosθ_x cosθ_y / r².
     const double near = kAllSamplesDiameters * 2 * light.radius;  // m
     const double d2 = glm::dot(light.centre - x, light.centre - x);
@@ -283,8 +288,7 @@ Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3
                 }
         }
     }
-    double fraction = weightSum > 0 ? visibleSum / weightSum : 1.0;
-    return light.luminance * (kPi * f * fraction);  // E = π L F
+    return weightSum > 0 ? visibleSum / weightSum : 1.0;
 }
 
 }  // namespace rayrad::radiosity

@@ -104,6 +104,10 @@ class DirectLight {
     /// `open` (if given) gets the unshadowed value π L F.
     Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
                       Random* rng, Rgb* open = nullptr) const;
+    /// The fraction of an area light x sees past occluders (`samples` stratified shadow
+    /// rays, fewer for a far light), weighted by the unoccluded integrand cosθ_x cosθ_y / r².
+    static double visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
+                                  int samples, Random* rng);
     /// Area light k's image i: the part of it x sees through the chain's mirror polygons
     /// (exact for convex mirrors, so the rim of a reflected light is not left to shadow
     /// rays), with its shadow rays through the chain.

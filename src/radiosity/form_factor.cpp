@@ -48,6 +48,12 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
     // A point in the plane itself (on the source, or on a coplanar neighbour of it) would
     // otherwise see the polygon fill its whole hemisphere (F = 1) whenever rounding puts
     // it a hair in front: a patch lighting itself, a sensor counting its own wall.
+    // Cheap exits first: x behind the polygon's plane, or the polygon wholly behind x's.
+    const double height = glm::dot(x - vertices[0], polyNormal);  // m, x above the plane
+    if (height <= 0) return 0.0;
+    bool anyFront = false;
+    for (int i = 0; i < count && !anyFront; ++i) anyFront = glm::dot(vertices[i] - x, n) > 0;
+    if (!anyFront) return 0.0;
     // Directions from x to the vertices, unit; their distances give the reach.
     Vec3 dirOnStack[kStackClipped];
     std::vector<Vec3> dirOnHeap;  // emitters with many sides (a 24-gon disk)
@@ -62,7 +68,7 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
         allFront &= glm::dot(d, n) >= 0;
         dir[i] = r > 0 ? d / r : d;
     }
-    if (glm::dot(x - vertices[0], polyNormal) <= kCoplanar * reach) return 0.0;
+    if (height <= kCoplanar * reach) return 0.0;
     if (!allFront) {
         Vec3 clippedOnStack[kStackClipped];
         std::vector<Vec3> clippedOnHeap;

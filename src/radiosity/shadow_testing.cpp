@@ -15,12 +15,15 @@ namespace {
 /// the point approximation L A cosθ_x cosθ_y / r² (exact for the light that is tested).
 constexpr double kRankPointDiameters = 5.0;
 
-/// An area light's unshadowed illuminance at x (lx, RGB), for ranking and for the untested.
-Rgb unshadowedArea(const AreaLight& light, const Vec3& x, const Vec3& n) {
+/// An area light's unshadowed illuminance at x (lx, RGB), for ranking and for the
+/// untested; `exact` says whether it is π L F with the analytic F (near) or the point
+/// approximation (far).
+Rgb unshadowedArea(const AreaLight& light, const Vec3& x, const Vec3& n, bool& exact) {
     const Vec3 d = light.centre - x;
     const double r2 = glm::dot(d, d);
     const double far = kRankPointDiameters * 2 * light.radius;
-    if (r2 > far * far) {
+    exact = r2 <= far * far;
+    if (!exact) {
         const double r = std::sqrt(r2);
         const double cosX = glm::dot(n, d) / r, cosY = -glm::dot(light.normal, d) / r;
         return cosX > 0 && cosY > 0 ? light.luminance * (light.area * cosX * cosY / r2) : Rgb(0.0);
@@ -37,19 +40,24 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
         double potential;  ///< Y of the unshadowed illuminance, lx
         Rgb open;          ///< the unshadowed illuminance, lx
         uint32_t light;    ///< points first, then area lights
+        bool exact;        ///< `open` is exact (a point light, or π L F analytic)
     };
     thread_local std::vector<Candidate> candidates;
     candidates.clear();
     const size_t points = m_pointLights.size();
     double remaining = 0;  // Σ potential of the lights not yet tested
-    auto consider = [&](const Rgb& open, size_t k) {
+    auto consider = [&](const Rgb& open, size_t k, bool exact) {
         const double y = luminance(open);
         if (y <= 0) return;
-        candidates.push_back({y, open, static_cast<uint32_t>(k)});
+        candidates.push_back({y, open, static_cast<uint32_t>(k), exact});
         remaining += y;
     };
-    for (size_t k = 0; k < points; ++k) consider(unshadowedFromPointLight(m_pointLights[k], x, n), k);
-    for (size_t k = 0; k < m_areaLights.size(); ++k) consider(unshadowedArea(m_areaLights[k], x, n), points + k);
+    for (size_t k = 0; k < points; ++k) consider(unshadowedFromPointLight(m_pointLights[k], x, n), k, true);
+    for (size_t k = 0; k < m_areaLights.size(); ++k) {
+        bool exact = false;
+        const Rgb open = unshadowedArea(m_areaLights[k], x, n, exact);
+        consider(open, points + k, exact);
+    }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return a.potential != b.potential ? a.potential > b.potential : a.light < b.light;  // deterministic
     });
@@ -60,8 +68,14 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     for (; next < candidates.size(); ++next) {
         if (next > 0 && remaining < threshold * found) break;
         const Candidate& c = candidates[next];
-        const Rgb v = c.light < points ? fromPointLight(m_pointLights[c.light], x, n, vis)
-                                       : fromAreaLight(m_areaLights[c.light - points], x, n, vis, samples, rng);
+        Rgb v;
+        if (c.light < points) {
+            v = fromPointLight(m_pointLights[c.light], x, n, vis);
+        } else {
+            const AreaLight& light = m_areaLights[c.light - points];
+            v = c.exact ? c.open * visibleFraction(light, x, n, vis, samples, rng)
+                        : fromAreaLight(light, x, n, vis, samples, rng);
+        }
         e += v;
         found += luminance(v);
         tested += c.potential;
