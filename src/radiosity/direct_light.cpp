@@ -260,8 +260,8 @@ double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const
         const Vec3 d = y - x;
         const double r2 = glm::dot(d, d);
         if (r2 <= 0) return;
-        const double r = std::sqrt(r2);
-        const double w = std::max(0.0, glm::dot(n, d) / r) * std::max(0.0, -glm::dot(light.normal, d) / r) / r2;
+        // cosθ_x cosθ_y / r² = (n·d)(−N·d) / r⁴
+        const double w = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(light.normal, d)) / (r2 * r2);
         if (w <= 0) return;
         weightSum += w;
         if (vis.visibleFromSurface(x, n, y)) visibleSum += w;
