@@ -14,6 +14,9 @@ using Vec2 = glm::dvec2;
 /// Linear Rec.709 RGB triple. Photometric meaning depends on use: illuminance in lx,
 /// luminance in cd/m², or a dimensionless reflectance.
 using Rgb = glm::dvec3;
+/// The same in single precision, for values stored per patch corner where memory
+/// counts more than the eighth significant digit.
+using RgbF = glm::vec3;
 
 constexpr double kPi = 3.14159265358979323846;
 

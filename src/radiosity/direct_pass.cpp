@@ -265,7 +265,7 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
 void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
                    int areaSamples, RadiositySolution& solution, const std::function<void(double)>& onProgress) {
     solution.directMean.assign(mesh.patches.size(), Rgb(0.0));
-    solution.directCorner.assign(3 * mesh.patches.size(), Rgb(0.0));
+    solution.directCorner.assign(3 * mesh.patches.size(), RgbF(0.0f));
     std::vector<double> mirrorAbsorbed(mesh.patches.size(), 0.0);  // lm, per patch
     std::vector<double> backReceived(mesh.patches.size(), 0.0);    // lm, per patch
     const auto refined = shadowSamplePoints(kShadowSamples);
@@ -274,7 +274,7 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
         if (onProgress && ++done % 1024 == 0) onProgress(static_cast<double>(done) / mesh.patches.size());
         const Patch& p = mesh.patches[i];
         const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined);
-        for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = front.corner[k];
+        for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = RgbF(front.corner[k]);
         solution.directMean[i] = front.mean;
         mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
         // The back of a one-sided surface is the inside of a solid: light that still

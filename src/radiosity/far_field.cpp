@@ -21,19 +21,21 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
     double weight = 0, brightestPower = -1;
     Vec3 at(0.0);
     Rgb power(0.0);
+    std::array<Vec3, 3> flux{};  // summed in double, kept in float
+    glm::dmat3 moment(0.0);
     for (uint32_t k = node.begin; k < node.end; ++k) {
         const uint32_t m = tree.order[k];
         const Patch& p = mesh.patches[C.patches[m]];
-        const Rgb pj = f.sign * luminance[m] * p.area;  // cd
+        const Rgb pj = double(f.sign) * luminance[m] * p.area;  // cd
         const double y = rayrad::luminance(pj);
-        for (int ch = 0; ch < 3; ++ch) f.flux[ch] += pj[ch] * p.normal;
+        for (int ch = 0; ch < 3; ++ch) flux[ch] += pj[ch] * p.normal;
         power += pj;
         weight += y;
         at += y * p.centroid;
         if (y > brightestPower) brightestPower = y, f.brightest = m;
     }
     f.at = weight > 0 ? at / weight : node.centroid;
-    f.share = weight > 0 ? power / weight : Rgb(0.0);
+    f.share = glm::vec3(weight > 0 ? power / weight : Rgb(0.0));
     double r = 0;
     for (uint32_t k = node.begin; k < node.end; ++k) {
         const uint32_t m = tree.order[k];
@@ -46,14 +48,16 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
             second += glm::outerProduct(v - p.centroid, v - p.centroid) / 12.0;
             r = std::max(r, glm::length(v - f.at));
         }
-        f.moment += f.sign * rayrad::luminance(luminance[m]) * p.area * second;
+        moment += double(f.sign) * rayrad::luminance(luminance[m]) * p.area * second;
     }
     f.reach = 2 * r;
+    f.moment = glm::mat3(moment);
+    for (int ch = 0; ch < 3; ++ch) f.flux[ch] = glm::vec3(flux[ch]);
     // Φ of the luminance: each component is Y of the channels' components.
-    const Vec3 fluxY(rayrad::luminance(Rgb(f.flux[0].x, f.flux[1].x, f.flux[2].x)),
-                     rayrad::luminance(Rgb(f.flux[0].y, f.flux[1].y, f.flux[2].y)),
-                     rayrad::luminance(Rgb(f.flux[0].z, f.flux[1].z, f.flux[2].z)));
-    f.normal = glm::length(fluxY) > 0 ? glm::normalize(fluxY) : Vec3(0.0);
+    const Vec3 fluxY(rayrad::luminance(Rgb(flux[0].x, flux[1].x, flux[2].x)),
+                     rayrad::luminance(Rgb(flux[0].y, flux[1].y, flux[2].y)),
+                     rayrad::luminance(Rgb(flux[0].z, flux[1].z, flux[2].z)));
+    f.normal = glm::vec3(glm::length(fluxY) > 0 ? glm::normalize(fluxY) : Vec3(0.0));
     return f;
 }
 
@@ -73,7 +77,7 @@ Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage
     const double s = glm::dot(u, u);  // r²
     const double a = glm::dot(n, u);  // r cosθ_x
     if (a <= 0) return Rgb(0.0);
-    const Vec3 m = turn(f.normal);
+    const Vec3 m = turn(Vec3(f.normal));
     const double b = -glm::dot(m, u);  // r cosθ_y
     // The expansion is of g(u) = a b / s², which is smooth but not clamped: a node that
     // faces away (b ≤ 0) gives nothing, whatever its second-order term says.
@@ -81,7 +85,8 @@ Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage
     // ½ tr(H M), H the Hessian of g:
     //   H = −(n mᵀ + m nᵀ)/s² − 4 (v uᵀ + u vᵀ)/s³ + 24 a b u uᵀ/s⁴ − 4 a b I/s³, v = b n − a m.
     const glm::dmat3 R = image ? glm::dmat3(image->transform) : glm::dmat3(1.0);
-    const glm::dmat3 M = image ? R * f.moment * glm::transpose(R) : f.moment;
+    const glm::dmat3 moment(f.moment);
+    const glm::dmat3 M = image ? R * moment * glm::transpose(R) : moment;
     const double s2 = s * s, ab = a * b;
     const double trace = M[0][0] + M[1][1] + M[2][2];
     const double trHM = -2 * glm::dot(n, M * m) / s2 - 8 * glm::dot(u, M * (b * n - a * m)) / (s2 * s) +
@@ -89,8 +94,8 @@ Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage
     const Rgb weight = image ? image->weight : Rgb(1.0);
     Rgb e(0.0);
     for (int ch = 0; ch < 3; ++ch) {
-        const double zeroth = a * std::max(0.0, -glm::dot(turn(f.flux[ch]), u)) / (s * s);  // cosθ_x (−Φ·u) / r³
-        e[ch] = f.sign * weight[ch] * std::max(0.0, zeroth + f.share[ch] * 0.5 * trHM);
+        const double zeroth = a * std::max(0.0, -glm::dot(turn(Vec3(f.flux[ch])), u)) / (s * s);  // cosθ_x (−Φ·u) / r³
+        e[ch] = double(f.sign) * weight[ch] * std::max(0.0, zeroth + double(f.share[ch]) * 0.5 * trHM);
     }
     return e;
 }

@@ -286,7 +286,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const bool detailed = e.share >= detailFrom;
             std::array<RefinePoint, 3> corners;
             for (int k = 0; k < 3; ++k) {
-                const Rgb E = m_solution.directCorner[3 * j + k];
+                const Rgb E(m_solution.directCorner[3 * j + k]);
                 const Rgb indirect = detailed ? (*cornerIndirectOf)(j, k, e.share) : solutionCorner(j, k);
                 corners[k] = {m_mesh.corner(p, k), p.v[k], rho * (E + indirect) / kPi, E};
             }

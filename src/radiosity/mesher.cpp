@@ -252,6 +252,11 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
     PatchMesh mesh;
     double edge = targetEdge(scene, options);
     CHECK(edge > 0);
+    // Room for the estimated count up front: grown by doubling, the arrays would hold up
+    // to twice what they need, and three times while they move.
+    const double estimate = estimatePatchCount(scene, options);
+    mesh.patches.reserve(static_cast<size_t>(1.01 * estimate) + 16);
+    mesh.vertices.reserve(static_cast<size_t>(0.6 * estimate) + 16);
     const auto bounds = groupBounds(scene);
     const double tolerance = kContactTolerance * scene.diagonal();
     for (size_t gi = 0; gi < scene.groups.size(); ++gi) {

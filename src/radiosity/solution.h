@@ -13,7 +13,7 @@ namespace rayrad::radiosity {
 /// in lx (RGB), luminances in cd/m² (RGB).
 struct RadiositySolution {
     std::vector<Rgb> directMean;      ///< mean direct illuminance over each patch
-    std::vector<Rgb> directCorner;    ///< direct illuminance at each patch's 3 corners (3·i + k)
+    std::vector<RgbF> directCorner;   ///< direct illuminance at each patch's 3 corners (3·i + k), float
     std::vector<Rgb> indirect;        ///< indirect illuminance received at each patch (centroid)
     std::vector<Rgb> unshot;          ///< ΔL, unshot luminance (may be negative after corrections)
     std::vector<Rgb> vertexIndirect;  ///< indirect at each mesh vertex (average of its triangles)

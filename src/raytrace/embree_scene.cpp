@@ -42,8 +42,8 @@ struct EmbreeScene::Impl {
     unsigned glassGeometry = RTC_INVALID_GEOMETRY_ID;
     std::vector<uint32_t> mirrorIndex, glassIndex;  ///< primitive → specular triangle
     /// Per patch, its front normal, for the front-only filter (a copy: the mesh may move
-    /// with its owner while this scene lives on the heap).
-    std::vector<Vec3> normals;
+    /// with its owner while this scene lives on the heap; float: only its sign counts).
+    std::vector<glm::vec3> normals;
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
@@ -64,7 +64,7 @@ void frontFacesOnly(const RTCFilterFunctionNArguments* args) {
         const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
         const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
                        RTCRayN_dir_z(args->ray, args->N, i));
-        if (glm::dot(dir, impl->normals[prim]) > 0) args->valid[i] = 0;  // a back face: look on
+        if (glm::dot(dir, Vec3(impl->normals[prim])) > 0) args->valid[i] = 0;  // a back face: look on
     }
 }
 }  // namespace
@@ -117,10 +117,12 @@ EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const
         return id;
     };
     std::vector<std::array<uint32_t, 3>> patchTriangles;
+    patchTriangles.reserve(mesh.patches.size());
     for (const auto& p : mesh.patches) patchTriangles.push_back({p.v[0], p.v[1], p.v[2]});
     if (!patchTriangles.empty()) m_impl->patchGeometry = addTriangles(mesh.vertices, patchTriangles, kOpaqueMask);
     if (!patchTriangles.empty()) {
-        for (const auto& p : mesh.patches) m_impl->normals.push_back(p.normal);
+        m_impl->normals.reserve(mesh.patches.size());
+        for (const auto& p : mesh.patches) m_impl->normals.push_back(glm::vec3(p.normal));
         RTCGeometry geom = rtcGetGeometry(m_impl->scene, m_impl->patchGeometry);
         rtcSetGeometryUserData(geom, m_impl.get());
         rtcSetGeometryIntersectFilterFunction(geom, frontFacesOnly);

@@ -104,7 +104,7 @@ TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the to
     // Only C is lit (direct light set by hand), so D's light all comes from C.
     RadiositySolution sol;
     sol.directMean.assign(mesh.patches.size(), Rgb(0.0));
-    sol.directCorner.assign(3 * mesh.patches.size(), Rgb(0.0));
+    sol.directCorner.assign(3 * mesh.patches.size(), RgbF(0.0f));
     for (uint32_t i : clustering.clusters[C].patches) sol.directMean[i] = Rgb(1000.0 + 10.0 * i);
     ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
     solver.initialize(sol);

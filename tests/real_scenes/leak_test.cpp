@@ -62,7 +62,7 @@ void checkDark(const app::PipelineRun& run, double darkFrom, double litMean) {
         worstPatch = std::max({worstPatch, luminance(run.solution.directMean[i]), luminance(run.solution.indirect[i])});
         for (int k = 0; k < 3; ++k)
             worstVertex = std::max({worstVertex, luminance(run.solution.vertexIndirect[p.v[k]]),
-                                    luminance(run.solution.directCorner[3 * i + k])});
+                                    luminance(Rgb(run.solution.directCorner[3 * i + k]))});
     }
     INFO("worst patch " << worstPatch << " lx, worst vertex " << worstVertex << " lx, bound " << bound << " lx");
     CHECK(worstPatch <= bound);
