@@ -1,5 +1,6 @@
 // Seam vertices: which vertices take a point gather instead of the reconstruction.
 #include <app/pipeline.h>
+#include <radiosity/gather.h>
 
 #include "test_support.h"
 
@@ -48,4 +49,32 @@ TEST_CASE("seam vertices: a box standing on the floor has the same seams on and 
     bool cornerVertex = false;
     for (const auto& v : offGrid.mesh.vertices) cornerVertex |= glm::length(v - Vec3(1.3, 0, 1.45)) < 1e-9;
     CHECK(cornerVertex);
+}
+
+TEST_CASE("seam vertices: a gather's near part and the rest add up to the whole gather", "[solver]") {
+    // The seam rounds after the first gather only the near patches' part again (the part
+    // the iterated corner values change) and keep the rest: the two must sum to the gather.
+    // Meshed at 0.25 m, so that a point has both near patches and farther ones.
+    std::string scene = floorWithBox(1.3, 1.45);
+    const std::string coarse = R"("max_edge": 1)";
+    scene.replace(scene.find(coarse), coarse.size(), R"("max_edge": 0.25)");
+    auto run = app::runPipeline(test::writeTempScene("box_parts", scene), quiet());
+    radiosity::GatherOptions options;
+    options.levels = 3;
+    options.farDiameters = 3;
+    radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree, options);
+    radiosity::Gatherer::CornerSource corners = [&](size_t patch, int corner, double) {
+        return run.solution.vertexIndirect[run.mesh.patches[patch].v[corner]];
+    };
+    using Part = radiosity::Gatherer::Part;
+    // On the floor a hair beside the box's foot, at two of its sides.
+    for (const Vec3 x : {Vec3(1.29, 1e-9, 1.9), Vec3(2.0, 1e-9, 2.46)}) {
+        const Vec3 n(0, 1, 0);
+        const Rgb all = gatherer.gatherWith(x, n, &corners, false, nullptr, 0, Part::All);
+        const Rgb near = gatherer.gatherWith(x, n, &corners, false, nullptr, 0, Part::Near);
+        const Rgb rest = gatherer.gatherWith(x, n, &corners, false, nullptr, 0, Part::AllButNear);
+        CHECK(luminance(near) > 0);
+        CHECK(luminance(rest) > 0);
+        CHECK(luminance(near + rest) == Approx(luminance(all)).epsilon(1e-12));
+    }
 }
