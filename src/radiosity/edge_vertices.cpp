@@ -133,8 +133,8 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
             const Patch& own = mesh.patches[patchOf[v]];
             const Vec3 x = nudgeInside(mesh, patchOf[v], mesh.vertices[v], nudge);
             using Part = Gatherer::Part;
-            if (round == 0) rest[k] = gatherer.gatherWith(x, own.normal, &corners, false, nullptr, 0, Part::AllButNear);
-            current[k] = rest[k] + gatherer.gatherWith(x, own.normal, &corners, /*parallel=*/false, nullptr, 0, Part::Near);
+            if (round == 0) rest[k] = gatherer.gatherWith(x, own.normal, &corners, false, nullptr, 1, Part::AllButNear);
+            current[k] = rest[k] + gatherer.gatherWith(x, own.normal, &corners, /*parallel=*/false, nullptr, 1, Part::Near);
             size_t n = ++done;
             if (onProgress && n % 16 == 0) onProgress(static_cast<double>(n) / total);
         });

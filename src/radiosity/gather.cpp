@@ -124,8 +124,10 @@ int Gatherer::classOf(double weight) const {
 }
 
 const Rgb* Gatherer::recall(const std::map<MemoKey, Memo>& memo, const MemoKey& key, int weightClass) {
-    auto it = memo.find(key);
-    return it != memo.end() && it->second.weightClass <= weightClass ? &it->second.indirect : nullptr;
+    // The id's entries are contiguous, in increasing level.
+    for (auto it = memo.lower_bound(key); it != memo.end() && it->first.first == key.first; ++it)
+        if (it->second.weightClass <= weightClass) return &it->second.indirect;
+    return nullptr;
 }
 
 Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level, int weightClass) {
@@ -210,20 +212,19 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass) {
     // This gather's error reaches the sensor with weight w; a near patch's corners and
     // midpoints with w ρ F. Those below the minimum weight are not worth a gather.
     const double weight = std::pow(10.0, -weightClass);
-    const double floor = m_options.minWeight / weight;
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
     CornerSource corners = [&](size_t patch, int corner, double share) {
         return cornerIndirect(patch, corner, level - 1, classOf(weight * share));
     };
-    if (level <= m_options.levels - m_options.refineLevels) return gatherWith(x, n, &corners, true, nullptr, floor);
+    if (level <= m_options.levels - m_options.refineLevels) return gatherWith(x, n, &corners, true, nullptr, weight);
     MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share) {
         return midpointIndirect(patch, a, b, y, level - 1, classOf(weight * share));
     };
-    return gatherWith(x, n, &corners, true, &midpoints, floor);
+    return gatherWith(x, n, &corners, true, &midpoints, weight);
 }
 
 Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                         const MidpointSource* midpoints, double detailFloor, Part part) const {
+                         const MidpointSource* midpoints, double weight, Part part) const {
     // Near patches get linear luminance from corner values (refined toward x with
     // gathered midpoints when asked), the rest a patch-constant one.
     struct Near {
@@ -268,6 +269,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         double shareSum = 0;
         for (const Candidate& e : candidates) shareSum += e.share;
         double detailFrom = 0;  // shares from here on are gathered
+        const double detailFloor = m_options.minWeight > 0 ? m_options.minWeight / weight : 0;
         if (detailFloor > 0) {
             std::vector<double> shares;
             for (const Candidate& e : candidates) shares.push_back(e.share);
@@ -295,9 +297,11 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             near.push_back({j, m_treePosition[j], {}});
             // A piece is refined while its midpoints depart from linear by more than the
             // tolerance; patches holding less than 1/kRefineShares of the near field's share
-            // may depart more, in proportion (400 slivers of a sofa do not each need it).
-            const double tolerance =
-                m_options.refineTolerance * std::max(1.0, shareSum / (kRefineShares * e.share));
+            // may depart more, in proportion (400 slivers of a sofa do not each need it), and
+            // so may a gather whose error reaches the sensor with weight w < 1, by 1/w.
+            const double tolerance = m_options.refineTolerance *
+                                     std::max(1.0, shareSum / (kRefineShares * e.share)) /
+                                     (m_options.minWeight > 0 ? weight : 1.0);
             refineNear(x, j, corners, 0, detailed ? midpoints : nullptr, e.share, tolerance, near.back().pieces);
             nearClusters.back().end = near.size();
         }
@@ -322,7 +326,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         const MirrorImage* image = real ? nullptr : &m_mirrorViews[s - 1]->image;
         const Cluster& C = m_clustering.clusters[c];  // members mirrored as they are used
         const Visibility& vis = real ? m_vis : *m_mirrorViews[s - 1]->path;
-        const Rgb weight = real ? Rgb(1.0) : image->weight;
+        const Rgb mirrorWeight = real ? Rgb(1.0) : image->weight;  // Π Ks of the chain
         auto nearOf = std::lower_bound(nearClusters.begin(), nearClusters.end(), c,
                                        [](const NearCluster& e, size_t k) { return e.cluster < k; });
         const bool hasNear = real && nearOf != nearClusters.end() && nearOf->cluster == c;
@@ -369,7 +373,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                     sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[j].normal, piece.depth);
                 return;
             }
-            const Rgb L = weight * m_reflected[j];
+            const Rgb L = mirrorWeight * m_reflected[j];
             if (L == Rgb(0.0)) return;
             const double f = formFactor(j);
             if (f > 0) add(L * (kPi * f), j);  // E = π L F

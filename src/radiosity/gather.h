@@ -88,9 +88,10 @@ class Gatherer {
     /// `levels` deep) costs thousands of gathers; with it, the recursion follows the walls
     /// of concave edges and corners, and leaves a sofa's slivers at their solution values.
     /// Weights are rounded up to a power of ten (a weight class). A memoised value
-    /// gathered for a larger weight (in more detail) serves a smaller one, so a sensor's
-    /// value can depend on the sensors gathered before it, by less than the minimum
-    /// weight times the error of a vertex value (1e-3 × 1 % at a cube corner: 1e-5).
+    /// gathered for a larger weight (in more detail), or at a higher level (with a deeper
+    /// recursion below it), serves a request for less, so a sensor's value can depend on
+    /// the sensors gathered before it, by less than the minimum weight times the error of
+    /// a vertex value (1e-3 × 1 % at a cube corner: 1e-5).
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
              const RadiositySolution& solution, const Visibility& vis, const GatherOptions& options);
 
@@ -118,14 +119,18 @@ class Gatherer {
         std::function<Midpoint(size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share)>;
     /// With `midpoints` too, near patches are refined toward x with gathered indirect
     /// light at their sub-triangles' corners (see the class comment).
-    /// The near patches of smallest share (ρ F), as many as keep the sum of their shares
-    /// within `detailFloor`, take their corner values from the solution and are not refined.
+    /// `weight`: how much of an error in this gather reaches the sensor (the product of
+    /// ρ F along the chain of gathers that asked for it; 1 for the sensor's own). With a
+    /// minimum weight (GatherOptions::minWeight), the near patches of smallest share (ρ F),
+    /// as many as keep the sum of their shares within minWeight / weight, take their corner
+    /// values from the solution and are not refined; the others are refined to the
+    /// tolerance / weight, so the error either brings to the sensor is bounded alike.
     /// `part` (with `cornerIndirectOf`) splits the sum in two that add up to the whole:
     /// the near patches' linear luminance alone, the only part that depends on the corner
     /// values, or everything else (far clusters, other patches, mirror images).
     enum class Part { All, Near, AllButNear };
     Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                   const MidpointSource* midpoints = nullptr, double detailFloor = 0, Part part = Part::All) const;
+                   const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All) const;
 
   private:
     /// A piece of a near patch with the luminance at its corners (cd/m², RGB).
@@ -180,7 +185,8 @@ class Gatherer {
     };
     /// (vertex or midpoint id, level) → indirect (lx, RGB).
     using MemoKey = std::pair<uint64_t, int>;
-    /// The memoised value for `key` if it was gathered in at least the detail of `weightClass`.
+    /// A memoised value for `key`'s id gathered at `key`'s level or higher and in at least
+    /// the detail of `weightClass`, if there is one.
     static const Rgb* recall(const std::map<MemoKey, Memo>& memo, const MemoKey& key, int weightClass);
     std::map<MemoKey, Memo> m_vertexMemo;
     std::map<std::pair<uint64_t, uint64_t>, uint64_t> m_midpointIds;  ///< (a, b) sorted → id
