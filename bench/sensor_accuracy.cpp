@@ -6,6 +6,9 @@
 // Usage: build/bench/sensor_accuracy [max_edge (0.25: 19 200 triangles)] [random points (24)]
 //        [paths per half (200000)] [gather_refine_levels (scene default, -1)] [key=value ...]
 //        (the last: scene settings, as with --set, e.g. radiosity.gather_min_weight=0)
+//        build/bench/sensor_accuracy [max_edge] grid[:K] [paths per half] [key=value ...]
+//        (a K x K grid, default 32, at the cell centres of the back wall: the grid's error
+//        and the sensor stage's CPU seconds against the solve's; issue 12)
 #include <app/pipeline.h>
 #include <core/random.h>
 
@@ -36,10 +39,99 @@ struct Point {
     std::string kind;
 };
 
+/// Scene settings given as key=value arguments from argv[first] on; false on a bad one.
+bool addSettings(int argc, char** argv, int first, app::PipelineOptions& options) {
+    for (int i = first; i < argc; ++i) {
+        const std::string setting = argv[i];
+        const size_t eq = setting.find('=');
+        if (eq == std::string::npos) {
+            std::fprintf(stderr, "sensor_accuracy: expected key=value, got \"%s\"\n", argv[i]);
+            return false;
+        }
+        options.overrides.push_back({setting.substr(0, eq), setting.substr(eq + 1)});
+    }
+    return true;
+}
+
+/// A k x k grid at the cell centres of the back wall z = 10, as a designer places one:
+/// its error against the path tracer, and what its sensor stage costs against the solve.
+/// On that wall the cube is symmetric under x <-> 10 - x, y <-> 10 - y and x <-> y, so
+/// about k²/8 distinct points need a reference.
+int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstSetting) {
+    app::PipelineOptions options;
+    options.quiet = true;
+    if (!addSettings(argc, argv, firstSetting, options)) return 2;
+    std::vector<Vec3> points;
+    std::string sensors;
+    for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+            const Vec3 x((i + 0.5) * cube::kSide / k, (j + 0.5) * cube::kSide / k, cube::kSide);
+            sensors += fmt::format("{}{{\"name\": \"g{}_{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], "
+                                   "\"normal\": [0, 0, -1]}}",
+                                   points.empty() ? "" : ", ", i, j, x.x, x.y, x.z);
+            points.push_back(x);
+        }
+    const std::string path = "/tmp/rayrad_bench_sensor_grid.json";
+    std::ofstream(path) << cube::scene(sensors, maxEdge);
+    auto run = app::runPipeline(path, options);
+    double sensorCpu = 0, sensorWall = 0;
+    for (const auto& stage : run.report.stages())
+        if (stage.name.rfind("sensors", 0) == 0) sensorCpu = stage.cpuSeconds, sensorWall = stage.seconds;
+    const double solveCpu = run.report.totalCpuSeconds() - sensorCpu;
+    // The distinct points (canonical: x <= y <= 5), each traced once with both halves.
+    auto canonical = [&](const Vec3& x) {
+        double a = std::min(x.x, cube::kSide - x.x), b = std::min(x.y, cube::kSide - x.y);
+        return std::make_pair(std::min(a, b), std::max(a, b));
+    };
+    std::vector<std::pair<double, double>> distinct;
+    for (const Vec3& x : points) distinct.push_back(canonical(x));
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    std::vector<double> halfA(distinct.size()), halfB(distinct.size());
+    tbb::parallel_for(size_t(0), 2 * distinct.size(), [&](size_t q) {
+        const size_t i = q / 2;
+        const Vec3 x(distinct[i].first, distinct[i].second, cube::kSide);
+        (q % 2 ? halfB[i] : halfA[i]) = cube::indirectReference(x, Vec3(0, 0, -1), paths, q % 2 ? 2 : 1);
+    });
+    double sum2 = 0, sum = 0, worst = 0, spread2 = 0;
+    Vec3 worstAt(0.0);
+    for (size_t i = 0; i < points.size(); ++i) {
+        const size_t d = static_cast<size_t>(
+            std::lower_bound(distinct.begin(), distinct.end(), canonical(points[i])) - distinct.begin());
+        const double ref = 0.5 * (halfA[d] + halfB[d]);
+        const double err = luminance(run.sensors[i].value.indirect) / ref - 1;
+        sum += err, sum2 += err * err;
+        if (std::abs(err) > std::abs(worst)) worst = err, worstAt = points[i];
+    }
+    for (size_t i = 0; i < distinct.size(); ++i) {
+        const double s = (halfA[i] - halfB[i]) / (halfA[i] + halfB[i]);  // half the halves' relative difference
+        spread2 += s * s;
+    }
+    const double n = static_cast<double>(points.size());
+    fmt::print("cube, max_edge {} ({} triangles): {} x {} grid on the back wall, {} distinct references of 2 x {} "
+               "paths (their mean is good to {:.3f} % RMS)\n",
+               maxEdge, run.mesh.patches.size(), k, k, distinct.size(), paths,
+               100 * std::sqrt(spread2 / static_cast<double>(distinct.size())));
+    fmt::print("gathered indirect against the reference: RMS {:.3f} %, mean {:+.3f} %, max {:+.3f} % at {}\n",
+               100 * std::sqrt(sum2 / n), 100 * sum / n, 100 * worst, toString(worstAt));
+    fmt::print("solve {:.2f} CPU-s; sensor stage {:.2f} CPU-s ({:.2f} s wall, {} gathers): {:.2f} x the solve\n",
+               solveCpu, sensorCpu, sensorWall, run.sensorGathers, sensorCpu / solveCpu);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const double maxEdge = argc > 1 ? std::atof(argv[1]) : 0.25;
+    if (argc > 2 && std::string(argv[2]).rfind("grid", 0) == 0) {
+        const std::string arg = argv[2];
+        const int k = arg.size() > 5 && arg[4] == ':' ? std::atoi(arg.c_str() + 5) : 32;
+        if (k < 1) {
+            std::fprintf(stderr, "sensor_accuracy: grid:K needs K >= 1, got \"%s\"\n", argv[2]);
+            return 2;
+        }
+        return gridMode(maxEdge, k, argc > 3 ? std::atoi(argv[3]) : 200000, argc, argv, 4);
+    }
     const int randomPoints = argc > 2 ? std::atoi(argv[2]) : 24;
     const int paths = argc > 3 ? std::atoi(argv[3]) : 200000;
     const int refineLevels = argc > 4 ? std::atoi(argv[4]) : -1;
@@ -71,15 +163,7 @@ int main(int argc, char** argv) {
     options.quiet = true;
     if (refineLevels >= 0)
         options.overrides.push_back({"radiosity.gather_refine_levels", std::to_string(refineLevels)});
-    for (int i = 5; i < argc; ++i) {
-        const std::string setting = argv[i];
-        const size_t eq = setting.find('=');
-        if (eq == std::string::npos) {
-            std::fprintf(stderr, "sensor_accuracy: expected key=value, got \"%s\"\n", argv[i]);
-            return 2;
-        }
-        options.overrides.push_back({setting.substr(0, eq), setting.substr(eq + 1)});
-    }
+    if (!addSettings(argc, argv, 5, options)) return 2;
     auto t0 = std::chrono::steady_clock::now();
     double c0 = cpuSeconds();
     auto run = app::runPipeline(path, options);
