@@ -18,7 +18,7 @@ constexpr double kGatherSecondsPerPatch = 0.5e-6;
 /// Peak memory model, measured: the process with its libraries and Embree (cube runs
 /// start near 130 MiB), and bytes per patch at 1.2 M patches (bench/scale.sh).
 constexpr double kBaseBytes = 130.0 * (1 << 20);
-constexpr double kBytesPerPatch = 450;
+constexpr double kBytesPerPatch = 400;
 /// Voxels per side the cluster grid can index.
 constexpr double kMaxVoxelsPerSide = 1e9;
 

@@ -28,15 +28,14 @@ double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
     double t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-300), 0.0, 1.0);
     return glm::length(p - (a + t * ab));
 }
-}  // namespace
-
-size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                          RadiositySolution& solution, const Visibility& vis, int levels,
-                          const std::function<void(double)>& onProgress) {
+/// The seam vertices (see gatherEdgeVertices) and, per mesh vertex, the patch whose
+/// surface it is gathered on (−1 for a vertex of no patch). Its cell index lives only here.
+std::vector<size_t> seamVertices(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
+                                 std::vector<int64_t>& patchOf) {
     // One patch per vertex gives its surface (normal, group; vertices are per group) and
     // the side the gather point moves to: the brightest patch around the vertex, so a
     // floor vertex at the foot of a box gathers on the lit side, not under the box.
-    std::vector<int64_t> patchOf(mesh.vertices.size(), -1);
+    patchOf.assign(mesh.vertices.size(), -1);
     std::vector<double> brightness(mesh.vertices.size(), -1.0);
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         double e = luminance(solution.directMean[i] + solution.indirect[i]);
@@ -103,6 +102,17 @@ size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, cons
         }
         if (isEdge) edge.push_back(v);
     }
+    return edge;
+}
+
+}  // namespace
+
+size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+                          RadiositySolution& solution, const Visibility& vis, int levels,
+                          const std::function<void(double)>& onProgress) {
+    std::vector<int64_t> patchOf;
+    const std::vector<size_t> edge = seamVertices(scene, mesh, solution, patchOf);
+    const double nudge = 1e-6 * scene.diagonal();
 
     // A local fixed-point iteration, bottom-up: each round gathers at every edge vertex
     // with the previous round's values at the corners of near patches (the reconstruction

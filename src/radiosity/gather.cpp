@@ -99,8 +99,6 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
                    const RadiositySolution& solution, const Visibility& vis, const GatherOptions& options)
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_options(options),
       m_nudge(1e-6 * scene.diagonal()) {
-    m_reflected.resize(mesh.patches.size());
-    for (size_t j = 0; j < mesh.patches.size(); ++j) m_reflected[j] = solution.reflectedLuminance(scene, mesh, j);
     m_treePosition.resize(mesh.patches.size());
     for (const auto& C : clustering.clusters) {
         double size = 0;
@@ -109,7 +107,7 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         MemberTree tree = memberTree(mesh, C, kFarLeafSize);
         for (uint32_t i = 0; i < tree.order.size(); ++i) m_treePosition[C.patches[tree.order[i]]] = i;
         std::vector<Rgb> luminance(C.patches.size());
-        for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = m_reflected[C.patches[k]];
+        for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = solution.reflectedLuminance(scene, mesh, C.patches[k]);
         m_far.push_back(farSources(mesh, C, tree, luminance));
         m_trees.push_back(std::move(tree));
     }
@@ -376,7 +374,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                     sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[j].normal, piece.depth);
                 return;
             }
-            const Rgb L = mirrorWeight * m_reflected[j];
+            const Rgb L = mirrorWeight * m_solution.reflectedLuminance(m_scene, m_mesh, j);
             if (L == Rgb(0.0)) return;
             const double f = formFactor(j);
             if (f > 0) add(L * (kPi * f), j);  // E = π L F

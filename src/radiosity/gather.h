@@ -173,7 +173,6 @@ class Gatherer {
     GatherOptions m_options;
     double m_nudge;
     size_t m_gathers = 0;  ///< gather() calls (serial: the memo is filled serially)
-    std::vector<Rgb> m_reflected;           ///< per patch, reflected luminance ρ E / π (cd/m²)
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     std::vector<MemberTree> m_trees;                 ///< per cluster
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
