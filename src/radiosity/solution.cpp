@@ -6,11 +6,6 @@
 
 namespace rayrad::radiosity {
 
-Rgb RadiositySolution::reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const {
-    const Rgb& rho = scene.materials[mesh.patches[i].material].reflectance;
-    return rho * (directMean[i] + indirect[i]) / kPi;  // L = ρ E / π
-}
-
 namespace {
 
 /// Least-squares plane through (u, w, value) samples, value at (0, 0); false when the

@@ -34,7 +34,10 @@ struct RadiositySolution {
     double backAbsorbedDirect = 0;
 
     /// Reflected (non-emitted) luminance of patch i: ρ (E_direct + E_indirect) / π.
-    Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const;
+    Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const {
+        const Rgb& rho = scene.materials[mesh.patches[i].material].reflectance;
+        return rho * (directMean[i] + indirect[i]) / kPi;
+    }
 };
 
 /// Vertex values from the centroid values of the triangles around each vertex (within
