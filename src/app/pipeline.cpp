@@ -43,7 +43,7 @@ class PushPullObserver {
         for (const auto& s : run.scene.sensors)
             if (s.refIndirect) {
                 m_sensors.push_back({&s, radiosity::locateOnMesh(run.mesh, s.position, s.normal,
-                                                                 1e-6 * run.scene.diagonal())});
+                                                                 1e-6 * run.scene.diagonal(), run.embree.get())});
                 run.convergenceSensors.push_back(s.name);
             }
     }

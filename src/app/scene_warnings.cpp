@@ -146,8 +146,8 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
     for (const auto& s : scene.sensors) {
         // As the gather sees it: on a surface's rim, from just inside the sensor's patch.
         Vec3 x = s.position;
-        if (auto at = radiosity::locateOnMesh(mesh, x, s.normal, 1e-6 * diagonal))
-            if (radiosity::onSurfaceBoundary(mesh, *at, 1e-5 * diagonal))
+        if (auto at = radiosity::locateOnMesh(mesh, x, s.normal, 1e-6 * diagonal, &embree))
+            if (radiosity::onSurfaceBoundary(mesh, *at, 1e-5 * diagonal, &embree))
                 x = radiosity::nudgeInside(mesh, at->patch, x, 1e-6 * diagonal);
         Probe p = prober.probe(x, s.normal, near);
         if (p.fraction(p.mirrorBacks) >= 0.5)

@@ -3,6 +3,9 @@
 
 #include <core/math.h>
 
+#include <cstdint>
+#include <functional>
+
 namespace rayrad {
 
 /// Answers "can these two points see each other?" for the scene's geometry. The two
@@ -22,6 +25,12 @@ class Visibility {
     /// and faces the other way, −n: back-to-back surfaces (a zero-thickness wall), where
     /// nothing reaches x's back — the light there lands on the other surface's front.
     virtual bool backCovered(const Vec3& /*x*/, const Vec3& /*n*/) const { return false; }
+    /// Calls visit(i) for every radiosity patch i whose bounds come within `radius` (m) of
+    /// x, and maybe a few more, in no particular order. False when this visibility has no
+    /// spatial index: the caller must then look at every patch.
+    virtual bool patchesNear(const Vec3& /*x*/, double /*radius*/, const std::function<void(uint32_t)>& /*visit*/) const {
+        return false;
+    }
 };
 
 }  // namespace rayrad

@@ -249,9 +249,9 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, refined)) {
             sourceMean = *near;
         } else if (!sameVisibleFraction(values, opens)) {
-            const double share = strongest > 0 ? luminance(fourPointMean(opens[3], opens)) / strongest : 1.0;
+            const double ofStrongest = strongest > 0 ? luminance(fourPointMean(opens[3], opens)) / strongest : 1.0;
             const auto count = static_cast<size_t>(std::clamp(
-                std::lround(kShadowSamples * share), static_cast<long>(kMinAreaShadowSamples), static_cast<long>(kShadowSamples)));
+                std::lround(kShadowSamples * ofStrongest), static_cast<long>(kMinAreaShadowSamples), static_cast<long>(kShadowSamples)));
             sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined, count);
         }
         out.mean += sourceMean - fourPoint;

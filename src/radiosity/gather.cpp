@@ -31,23 +31,37 @@ constexpr double kRefineShares = 20;
 constexpr size_t kFarLeafSize = 8;
 }  // namespace
 
-std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance) {
+namespace {
+/// Calls visit(i) for the patches i that may lie within `radius` of x: those the spatial
+/// index finds, or all of them.
+void forPatchesNear(const PatchMesh& mesh, const Visibility* spatial, const Vec3& x, double radius,
+                    const std::function<void(uint32_t)>& visit) {
+    if (spatial && spatial->patchesNear(x, radius, visit)) return;
+    for (size_t i = 0; i < mesh.patches.size(); ++i) visit(static_cast<uint32_t>(i));
+}
+}  // namespace
+
+std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance,
+                                         const Visibility* spatial) {
     std::optional<MeshLocation> best;
     double bestOutside = tolerance;
-    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+    // A patch within tolerance of its plane and `outside` ≤ tolerance lies within 2
+    // tolerances of x. Of equally good patches the one of highest index wins, whatever
+    // order they are met in.
+    forPatchesNear(mesh, spatial, x, 2 * tolerance, [&](uint32_t i) {
         const Patch& p = mesh.patches[i];
-        if (glm::dot(p.normal, n) < 0.9) continue;
-        if (std::abs(glm::dot(x - p.centroid, p.normal)) > tolerance) continue;
+        if (glm::dot(p.normal, n) < 0.9) return;
+        if (std::abs(glm::dot(x - p.centroid, p.normal)) > tolerance) return;
         // Barycentrics of the projection of x on the triangle.
         const Vec3 &a = mesh.corner(p, 0), &b = mesh.corner(p, 1), &c = mesh.corner(p, 2);
         Vec3 e1 = b - a, e2 = c - a, w = x - a;
         double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
         double w1 = glm::dot(w, e1), w2 = glm::dot(w, e2);
         double det = d11 * d22 - d12 * d12;
-        if (det <= 0) continue;
+        if (det <= 0) return;
         double u = (d22 * w1 - d12 * w2) / det, v = (d11 * w2 - d12 * w1) / det;
         double outside = std::max({0.0, -u, -v, u + v - 1}) * p.diameter;  // metres outside (0 inside)
-        if (outside <= bestOutside) {
+        if (outside < bestOutside || (outside == bestOutside && (!best || i > best->patch))) {
             bestOutside = outside;
             u = std::clamp(u, 0.0, 1.0);
             v = std::clamp(v, 0.0, 1.0);
@@ -57,23 +71,25 @@ std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, c
             }
             best = MeshLocation{i, u, v};
         }
-    }
+    });
     return best;
 }
 
-bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tolerance) {
+bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tolerance, const Visibility* spatial) {
     const Patch& p = mesh.patches[at.patch];
     const double w[3] = {1 - at.u - at.v, at.u, at.v};  // weight of corner k
     for (int k = 0; k < 3; ++k) {
         if (w[k] * p.diameter >= tolerance) continue;  // not near the edge opposite corner k
         const uint32_t a = p.v[(k + 1) % 3], b = p.v[(k + 2) % 3];
+        // A patch sharing the edge ab has both its ends inside its bounds.
+        const Vec3 middle = 0.5 * (mesh.vertices[a] + mesh.vertices[b]);
         bool shared = false;
-        for (size_t i = 0; i < mesh.patches.size() && !shared; ++i) {
-            if (i == at.patch || mesh.patches[i].group != p.group) continue;
+        forPatchesNear(mesh, spatial, middle, 0.5 * glm::length(mesh.vertices[a] - mesh.vertices[b]), [&](uint32_t i) {
+            if (shared || i == at.patch || mesh.patches[i].group != p.group) return;
             const auto& v = mesh.patches[i].v;
             bool hasA = v[0] == a || v[1] == a || v[2] == a, hasB = v[0] == b || v[1] == b || v[2] == b;
             shared = hasA && hasB;
-        }
+        });
         if (!shared) return true;
     }
     return false;
@@ -438,7 +454,7 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
                            const scene::Sensor& sensor) {
     SensorValue out;
     Vec3 directAt = sensor.position, gatherAt = sensor.position;
-    auto where = locateOnMesh(mesh, sensor.position, sensor.normal, 1e-6 * scene.diagonal());
+    auto where = locateOnMesh(mesh, sensor.position, sensor.normal, 1e-6 * scene.diagonal(), &vis);
     if (where) {
         if (!solution.vertexIndirect.empty())
             out.indirectVertex = interpolateIndirect(mesh, solution, where->patch, where->u, where->v);
@@ -449,7 +465,7 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
         // wall standing there. Elsewhere the exact point: a light 1 mm away is exact.
         const double nudge = 1e-6 * scene.diagonal();
         gatherAt = nudgeInside(mesh, where->patch, sensor.position, nudge);
-        if (onSurfaceBoundary(mesh, *where, 10 * nudge)) directAt = gatherAt;
+        if (onSurfaceBoundary(mesh, *where, 10 * nudge, &vis)) directAt = gatherAt;
     }
     out.direct = lights.illuminance(directAt, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
     if (!solution.indirect.empty()) out.indirect = gatherer.indirectAt(gatherAt, sensor.normal);

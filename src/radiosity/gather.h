@@ -28,8 +28,11 @@ struct MeshLocation {
 };
 
 /// The patch whose triangle contains x (within a small tolerance) and whose normal
-/// agrees with n; nullopt when x is not on any surface.
-std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance);
+/// agrees with n; nullopt when x is not on any surface. `spatial` (or null): a spatial
+/// index over the patches (Visibility::patchesNear), so only the patches near x are
+/// looked at; without one, every patch is.
+std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance,
+                                         const Visibility* spatial = nullptr);
 
 /// Illuminance in lx (RGB) at a sensor.
 struct SensorValue {
@@ -195,7 +198,8 @@ class Gatherer {
 
 /// True when the location lies within `tolerance` (m) of an edge where its surface ends:
 /// the rim of a quad, a crease, a contact line (not a diagonal inside a flat grid).
-bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tolerance);
+bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tolerance,
+                       const Visibility* spatial = nullptr);
 
 /// Moves a surface point a hair (metres) toward the centroid of its patch, so points on
 /// an edge or corner take the limit from inside their own wall.

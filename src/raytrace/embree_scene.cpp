@@ -163,6 +163,29 @@ bool EmbreeScene::backCovered(const Vec3& x, const Vec3& n) const {
     return h.found && !h.specular;
 }
 
+bool EmbreeScene::patchesNear(const Vec3& x, double radius, const std::function<void(uint32_t)>& visit) const {
+    struct Visit {
+        unsigned patchGeometry;
+        const std::function<void(uint32_t)>* visit;
+    } user{m_impl->patchGeometry, &visit};
+    RTCPointQuery query{};
+    query.x = static_cast<float>(x.x);
+    query.y = static_cast<float>(x.y);
+    query.z = static_cast<float>(x.z);
+    query.radius = static_cast<float>(radius + m_epsilon);  // the BVH's bounds are float
+    query.time = 0;
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    // Called for each primitive whose bounds overlap the query's ball.
+    auto onPrimitive = [](RTCPointQueryFunctionArguments* args) {
+        const auto* u = static_cast<const Visit*>(args->userPtr);
+        if (args->geomID == u->patchGeometry) (*u->visit)(args->primID);
+        return false;  // the ball is not shrunk
+    };
+    rtcPointQuery(m_impl->scene, &query, &context, onPrimitive, &user);
+    return true;
+}
+
 bool EmbreeScene::occluded(const Vec3& from, const Vec3& to, double startShrink) const {
     Vec3 d = to - from;
     double len = glm::length(d);
