@@ -17,7 +17,7 @@ namespace {
 constexpr double kNearDiameters = 2.0;
 /// Sub-triangles are split while closer to x than this many of their own sizes: for
 /// integration (π L(centroid) F with the analytic F, and one visibility ray, per piece)
-/// and for refinement with gathered midpoints. 2 cost the cube's 1 024-sensor grid 2.4 x
+/// and for refinement with gathered midpoints. 2 cost the cube's 1 024-sensor grid 2.6 x
 /// the pieces and 1.7 x the gathers of 1 for the same accuracy (docs/validation.md).
 constexpr double kSplitRatio = 1.0;
 /// A cluster farther than this many of its diameters shares one visibility ray.
