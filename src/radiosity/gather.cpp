@@ -45,10 +45,11 @@ std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, c
                                          const Visibility* spatial) {
     std::optional<MeshLocation> best;
     double bestOutside = tolerance;
-    // A patch within tolerance of its plane and `outside` ≤ tolerance lies within 2
-    // tolerances of x. Of equally good patches the one of highest index wins, whatever
-    // order they are met in.
-    forPatchesNear(mesh, spatial, x, 2 * tolerance, [&](uint32_t i) {
+    // A patch that qualifies lies within √5 tolerances of x: `outside` ≤ tolerance bounds
+    // each barycentric overshoot, so the projection is within 2 tolerances of the triangle
+    // (|u e1 + v e2| ≤ (|u| + |v|) · diameter near a corner), and x within one of its plane.
+    // Of equally good patches the one of highest index wins, whatever order they are met in.
+    forPatchesNear(mesh, spatial, x, 3 * tolerance, [&](uint32_t i) {
         const Patch& p = mesh.patches[i];
         if (glm::dot(p.normal, n) < 0.9) return;
         if (std::abs(glm::dot(x - p.centroid, p.normal)) > tolerance) return;
