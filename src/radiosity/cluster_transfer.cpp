@@ -14,9 +14,55 @@ constexpr double kFarDiameters = 4.0;
 constexpr double kOneRayFormFactor = 1e-3;
 }
 
+SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, const MemberTree& tree,
+                              double farDiameters) {
+    SourceGeometry g;
+    if (farDiameters <= 0 || tree.nodes.size() < 2) return g;
+    g.tree = &tree;
+    g.farDiameters = farDiameters;
+    g.unitFar = farSources(mesh, source, tree, std::vector<Rgb>(source.patches.size(), Rgb(1.0)));
+    return g;
+}
+
+double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, const SourceGeometry* geometry,
+                           const Vec3& x, const Vec3& n, double analyticDistance) {
+    double f = 0;
+    if (!geometry || !geometry->tree) {
+        for (uint32_t i : source.patches)
+            f += patchFormFactor(sourceMesh, sourceMesh.patches[i], x, n, analyticDistance);
+        return f;
+    }
+    // Depth first through the member tree (at most 32 deep: median splits of < 2³² members).
+    const MemberTree& tree = *geometry->tree;
+    uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const uint32_t index = stack[--top];
+        const MemberNode& node = tree.nodes[index];
+        const FarSource& far = geometry->unitFar[index];
+        const double limit = geometry->farDiameters * far.reach;
+        // Far, and wholly above or below x's horizon (the far field clips at its centre):
+        // one source.
+        if (node.size() > 1 && glm::dot(far.at - x, far.at - x) > limit * limit &&
+            std::abs(glm::dot(n, far.at - x)) > 0.5 * far.reach) {
+            f += farField(far, x, n, nullptr)[1] / kPi;  // E = π L F at L = 1
+        } else if (node.leaf()) {
+            for (uint32_t m = node.begin; m < node.end; ++m) {
+                const Patch& p = sourceMesh.patches[source.patches[tree.order[m]]];
+                f += patchFormFactor(sourceMesh, p, x, n, analyticDistance);
+            }
+        } else {
+            stack[top++] = node.right;
+            stack[top++] = node.left;
+        }
+    }
+    return f;
+}
+
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance) {
+                       double analyticDistance, const SourceGeometry* geometry) {
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
     double f = 0;
@@ -24,8 +70,7 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
         f = formFactorPointApprox(receiver.centroid, receiver.normal, source.centroid, source.normal,
                                   source.projectedArea);
     } else {
-        for (uint32_t i : source.patches)
-            f += patchFormFactor(sourceMesh, sourceMesh.patches[i], receiver.centroid, receiver.normal, analyticDistance);
+        f = memberFormFactorSum(sourceMesh, source, geometry, receiver.centroid, receiver.normal, analyticDistance);
     }
     if (f <= 0) return 0.0;
     int visible = 0, rays = 0;
@@ -47,13 +92,13 @@ void receiverShape(const PatchMesh& mesh, const Cluster& source, const Cluster& 
     const size_t n = receiver.patches.size();
     shape.assign(n, 1.0);
     if (!detail || n == 1) return;
-    // Point kernel cosθ_x cosθ_C / r² from the source cluster's centroid.
+    // Point kernel cosθ_x cosθ_C / r² = (n·d)(−n_C·d) / r⁴ from the source cluster's
+    // centroid, d = centroid − x.
     auto kernel = [&](const Vec3& x, const Vec3& normal) {
         Vec3 d = source.centroid - x;
         double r2 = glm::dot(d, d);
         if (r2 <= 0) return 0.0;
-        double r = std::sqrt(r2);
-        return std::max(0.0, glm::dot(normal, d) / r) * std::max(0.0, -glm::dot(source.normal, d) / r) / r2;
+        return std::max(0.0, glm::dot(normal, d)) * std::max(0.0, -glm::dot(source.normal, d)) / (r2 * r2);
     };
     double atCentre = kernel(receiver.centroid, receiver.normal);
     if (atCentre <= 0) return;  // the cluster-level transfer is 0 as well
@@ -61,14 +106,19 @@ void receiverShape(const PatchMesh& mesh, const Cluster& source, const Cluster& 
     // both sides, has a kernel of rounding size at the centre: dividing by it gave
     // ratios of 1e13 (a mirror image of a box face level with a wall's centroid). Then
     // normalise by the area-weighted mean over the members instead.
-    double mean = 0, area = 0;
-    for (uint32_t j : receiver.patches) {
-        const Patch& p = mesh.patches[j];
-        mean += p.area * kernel(p.centroid, receiver.normal);
-        area += p.area;
+    // Every member's kernel is at most 1/r² ≤ 1/(r_centre − diameter/2)², and so is the
+    // mean: when atCentre is at least 1e-3 of that bound the mean need not be summed.
+    const double closest = glm::length(source.centroid - receiver.centroid) - 0.5 * receiver.diameter;
+    if (!(closest > 0 && atCentre * closest * closest >= 1e-3)) {
+        double mean = 0, area = 0;
+        for (uint32_t j : receiver.patches) {
+            const Patch& p = mesh.patches[j];
+            mean += p.area * kernel(p.centroid, receiver.normal);
+            area += p.area;
+        }
+        mean /= area;
+        if (atCentre < 1e-3 * mean) atCentre = mean;
     }
-    mean /= area;
-    if (atCentre < 1e-3 * mean) atCentre = mean;
     for (size_t k = 0; k < n; ++k) {
         const Patch& p = mesh.patches[receiver.patches[k]];
         shape[k] = kernel(p.centroid, p.normal) / atCentre;

@@ -3,17 +3,40 @@
 
 #include <core/visibility.h>
 #include <radiosity/clusters.h>
+#include <radiosity/far_field.h>
+#include <radiosity/member_tree.h>
 #include <radiosity/patch_mesh.h>
 
 #include <vector>
 
 namespace rayrad::radiosity {
 
+/// A source cluster's member tree with each node's far field at unit luminance
+/// (far_field.h), in the source's own space (an image's: mirrored), so the sum of its
+/// members' form factors seen from a point is taken node by node: a node farther than
+/// `farDiameters` of its reach counts as one unless x's horizon cuts through it, other
+/// nodes are opened down to the members.
+struct SourceGeometry {
+    const MemberTree* tree = nullptr;
+    std::vector<FarSource> unitFar;  ///< per node of *tree
+    double farDiameters = 0;
+};
+/// The geometry of `source` (member positions as in `tree`) for `farDiameters` > 0; with
+/// 0, or a tree of one node, none (every member on its own).
+SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, const MemberTree& tree,
+                              double farDiameters);
+
+/// Σ_i F(dA_x → A_i) over the source's members, at x with unit normal n: each member
+/// analytic within `analyticDistance` of its diameters, else the point approximation;
+/// with `geometry` (its tree and far fields), far nodes of the member tree as one source.
+double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, const SourceGeometry* geometry,
+                           const Vec3& x, const Vec3& n, double analyticDistance);
+
 /// π F(dA_D → C) · V(C, D) in lx per cd/m²: the illuminance at the receiver cluster's
 /// centroid (with its mean normal) from the source cluster at unit luminance.
 /// Adaptive accuracy instead of a deeper hierarchy: far away (beyond 4 source
 /// diameters) the point approximation A_C cosθ_C cosθ_D / (π r²); nearer, the sum of the
-/// member patches' form factors (each analytic when close). V is the visible fraction of
+/// member patches' form factors (memberFormFactorSum, through `geometry` when given). V is the visible fraction of
 /// up to four rays from `sourceSamples` (member patches of the source, see
 /// powerSamples) to the receiver's sample patches.
 /// The source may be a mirror image (its own mesh, and a MirrorPath as `vis`).
@@ -23,7 +46,7 @@ namespace rayrad::radiosity {
 /// shots delivered with the same rays.
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance);
+                       double analyticDistance, const SourceGeometry* geometry = nullptr);
 
 /// How a cluster→cluster shot from `source` is shared among the receiver's patches:
 /// shape[k] multiplies the illuminance computed at the receiver's centroid for member k.

@@ -33,7 +33,8 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
     V shotSoFar = m_light[c].total - m_light[c].unshot;
     Correction moved;
     V received =
-        shotSoFar * s.weight * clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
+        shotSoFar * s.weight * clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
+                                                      &from.geometry);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);

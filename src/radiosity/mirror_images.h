@@ -27,6 +27,9 @@ struct MirrorImage {
         Vec3 normal;  ///< unit, the mirror's front
         Vec3 centre;  ///< of the polygon's vertices
         double radius;  ///< largest distance of a vertex from the centre, m
+        /// Per edge i (polygon[i] → polygon[i+1]), the unit normal in the plane pointing
+        /// out of the polygon; empty when the polygon is not convex.
+        std::vector<Vec3> outward;
         Aperture(std::vector<Vec3> polygon, const Vec3& normal);
     };
     std::vector<Aperture> apertures;

@@ -14,6 +14,7 @@
 #include <climits>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace rayrad::radiosity {
 
@@ -49,6 +50,17 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_reached.assign(clustering.clusters.size(), 0);
     m_trees.reserve(clustering.clusters.size());
     for (const Cluster& C : clustering.clusters) m_trees.push_back(memberTree(mesh, C, kGroupSize));
+    std::map<std::array<int, 3>, uint32_t> regionIndex;
+    for (const Cluster& C : clustering.clusters) {
+        auto [at, added] = regionIndex.emplace(C.voxel, static_cast<uint32_t>(m_regions.size()));
+        if (added) {
+            const Vec3 corner = clustering.origin + Vec3(C.voxel[0], C.voxel[1], C.voxel[2]) * clustering.voxelSize;
+            m_regions.push_back({corner + Vec3(0.5 * clustering.voxelSize), 0.0});
+        }
+        m_regionOf.push_back(at->second);
+        Region& region = m_regions[at->second];
+        region.radius = std::max(region.radius, glm::length(C.centroid - region.centre) + 0.5 * C.diameter);
+    }
     m_sources.push_back({&vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
@@ -350,8 +362,10 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
 template <class V>
 typename ShootingCore<V>::Shooter ShootingCore<V>::shooter(const Source& s, size_t c) const {
     const Cluster& C = m_clustering.clusters[c];
-    if (!s.image) return {m_mesh, C, std::nullopt};
-    return {m_mesh, C, imageCluster(m_mesh, m_clustering, c, *s.image)};
+    Shooter out{m_mesh, C, std::nullopt, {}};
+    if (s.image) out.copy = imageCluster(m_mesh, m_clustering, c, *s.image);
+    out.geometry = sourceGeometry(out.mesh(), out.cluster(), m_trees[c], m_options.shootFarDiameters);
+    return out;
 }
 
 template <class V>
@@ -476,6 +490,10 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         // Deliveries per receiver when shooting through mirrors too, for the mirrors'
         // account and the conservation (summed in order).
         std::vector<V> deliveredTo(throughMirrors ? n : 0, V(0.0));
+        // Through a mirror chain, the voxels light can reach at all.
+        std::vector<char> regionOpen(s.image ? m_regions.size() : 0);
+        for (size_t k = 0; k < regionOpen.size(); ++k)
+            regionOpen[k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions[k].centre, m_regions[k].radius);
         // Cluster→cluster now; the receivers within r_v are listed for patch→patch.
         std::vector<char> isNear(n, 0);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
@@ -484,13 +502,15 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (corrected[si][d]) continue;
                 const Cluster& D = m_clustering.clusters[d];
                 bool self = d == c && !s.image;
+                if (s.image && !regionOpen[m_regionOf[d]]) continue;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
                 if (self || m_clustering.voxelDistance(Cs, D) - imageMargin(s) < r) {
                     isNear[d] = 1;
                     continue;
                 }
-                double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance);
+                double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
+                                           &from.geometry);
                 V flux(0.0);
                 if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
                 if (throughMirrors) deliveredTo[d] = flux;

@@ -3,6 +3,7 @@
 
 #include <radiosity/light_value.h>
 #include <radiosity/closure.h>
+#include <radiosity/cluster_transfer.h>
 #include <radiosity/far_field.h>
 #include <radiosity/member_tree.h>
 #include <radiosity/mirror_images.h>
@@ -70,6 +71,7 @@ class ShootingCore final : public ShootingCoreBase {
         const PatchMesh& realMesh;
         const Cluster& real;
         std::optional<ImageCluster> copy;  ///< images: the mirrored members
+        SourceGeometry geometry;           ///< its member tree's far fields, in this space
         const PatchMesh& mesh() const { return copy ? copy->mesh : realMesh; }
         const Cluster& cluster() const { return copy ? copy->cluster : real; }
         /// Sample patches of the real cluster as indices into mesh().
@@ -180,6 +182,15 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
     /// deliver() visits only the clusters a shot reached.
     std::vector<char> m_reached;
+    /// The occupied voxels as balls holding their clusters (m_regionOf: per cluster, its
+    /// voxel's index here): a shot through a mirror tests these first, and skips every
+    /// cluster of a voxel no light can reach through the chain.
+    struct Region {
+        Vec3 centre{0.0};
+        double radius = 0;  ///< m
+    };
+    std::vector<Region> m_regions;
+    std::vector<uint32_t> m_regionOf;
     /// Per cluster, its member tree (member_tree.h) in real space; its leaves are the
     /// member groups that share a visibility ray; an image's tree is the same members,
     /// their centroids mirrored.
