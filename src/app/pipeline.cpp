@@ -8,6 +8,7 @@
 #include <radiosity/direct_pass.h>
 #include <radiosity/edge_vertices.h>
 #include <radiosity/gather.h>
+#include <radiosity/sensors.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
 #include <raytrace/camera.h>
@@ -84,7 +85,8 @@ class PushPullObserver {
             if (gatherer) {
                 Vec3 x = where ? radiosity::nudgeInside(m_run.mesh, where->patch, s->position, 1e-6 * m_run.scene.diagonal())
                                : s->position;
-                gathered = errorPct(luminance(gatherer->indirectAt(x, s->normal)), s->refIndirect);
+                radiosity::GatherMemo memo;
+                gathered = errorPct(luminance(gatherer->indirectAt(x, s->normal, memo)), s->refIndirect);
             }
             row.gatheredErrorPct.push_back(gathered);
         }
@@ -208,14 +210,13 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
                                      radiosity::GatherOptions::from(run.scene.solver));
         Progress progress("sensors", options.quiet);
-        const size_t count = run.scene.sensors.size();
-        for (const auto& s : run.scene.sensors) {
-            progress.update(static_cast<double>(run.sensors.size()) / count,
-                            fmt::format("{} of {}", run.sensors.size(), count));
-            run.sensors.push_back({s, radiosity::evaluateSensor(run.scene, run.mesh, run.solution, *run.lights,
-                                                                *run.embree, gatherer, s)});
-        }
-        run.sensorGathers = gatherer.gatherCount();
+        const auto values = radiosity::evaluateSensors(
+            run.scene, run.mesh, run.solution, *run.lights, *run.embree, gatherer,
+            [&](size_t done, size_t count) {
+                progress.update(static_cast<double>(done) / count, fmt::format("{} of {}", done, count));
+            },
+            &run.sensorGathers);
+        for (size_t i = 0; i < values.size(); ++i) run.sensors.push_back({run.scene.sensors[i], values[i]});
     } else if (options.wantSensors) {
         run.skipped.push_back("sensors (the scene has none)");
     }

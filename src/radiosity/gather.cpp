@@ -141,35 +141,35 @@ int Gatherer::classOf(double weight) const {
     return static_cast<int>(std::floor(-std::log10(weight)));
 }
 
-const Rgb* Gatherer::recall(const std::map<MemoKey, Memo>& memo, const MemoKey& key, int weightClass) {
+const Rgb* GatherMemo::recall(const std::map<Key, Entry>& memo, const Key& key, int weightClass) {
     // The id's entries are contiguous, in increasing level.
     for (auto it = memo.lower_bound(key); it != memo.end() && it->first.first == key.first; ++it)
         if (it->second.weightClass <= weightClass) return &it->second.indirect;
     return nullptr;
 }
 
-Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level, int weightClass) {
+Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level, int weightClass, GatherMemo& memo) const {
     if (level < 0) return solutionCorner(patch, corner);
     const uint32_t v = m_mesh.patches[patch].v[corner];
-    const MemoKey key{v, level};
-    if (const Rgb* known = recall(m_vertexMemo, key, weightClass)) return *known;
+    const GatherMemo::Key key{v, level};
+    if (const Rgb* known = GatherMemo::recall(memo.m_vertex, key, weightClass)) return *known;
     const Patch& p = m_mesh.patches[patch];
-    Rgb e = gather(nudgeInside(m_mesh, patch, m_mesh.vertices[v], m_nudge), p.normal, level, weightClass);
-    m_vertexMemo[key] = {e, weightClass};
+    Rgb e = gather(nudgeInside(m_mesh, patch, m_mesh.vertices[v], m_nudge), p.normal, level, weightClass, memo);
+    memo.m_vertex[key] = {e, weightClass};
     return e;
 }
 
 Gatherer::Midpoint Gatherer::midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level,
-                                              int weightClass) {
+                                              int weightClass, GatherMemo& memo) const {
     // Ids above the mesh's vertex indices.
     const uint64_t firstId = uint64_t(1) << 32;
-    auto [idAt, added] = m_midpointIds.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
-                                               firstId + m_midpointIds.size());
+    auto [idAt, added] = memo.m_midpointIds.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
+                                                    firstId + memo.m_midpointIds.size());
     const uint64_t id = idAt->second;
-    const MemoKey key{id, level};
-    if (const Rgb* known = recall(m_midpointMemo, key, weightClass)) return {id, *known};
-    Rgb e = gather(nudgeInside(m_mesh, patch, y, m_nudge), m_mesh.patches[patch].normal, level, weightClass);
-    m_midpointMemo[key] = {e, weightClass};
+    const GatherMemo::Key key{id, level};
+    if (const Rgb* known = GatherMemo::recall(memo.m_midpoint, key, weightClass)) return {id, *known};
+    Rgb e = gather(nudgeInside(m_mesh, patch, y, m_nudge), m_mesh.patches[patch].normal, level, weightClass, memo);
+    memo.m_midpoint[key] = {e, weightClass};
     return {id, e};
 }
 
@@ -224,19 +224,19 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
 }
 
-Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass) {
-    ++m_gathers;
+Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo) const {
+    ++memo.m_gathers;
     if (level <= 0) return gatherWith(x, n, nullptr, true);
     // This gather's error reaches the sensor with weight w; a near patch's corners and
     // midpoints with w ρ F. Those below the minimum weight are not worth a gather.
     const double weight = std::pow(10.0, -weightClass);
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
     CornerSource corners = [&](size_t patch, int corner, double share) {
-        return cornerIndirect(patch, corner, level - 1, classOf(weight * share));
+        return cornerIndirect(patch, corner, level - 1, classOf(weight * share), memo);
     };
     if (level <= m_options.levels - m_options.refineLevels) return gatherWith(x, n, &corners, true, nullptr, weight);
     MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share) {
-        return midpointIndirect(patch, a, b, y, level - 1, classOf(weight * share));
+        return midpointIndirect(patch, a, b, y, level - 1, classOf(weight * share), memo);
     };
     return gatherWith(x, n, &corners, true, &midpoints, weight);
 }
@@ -448,29 +448,6 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             return sum;
         },
         [](const Rgb& a, const Rgb& b) { return a + b; });
-}
-
-SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
-                           const DirectLight& lights, const Visibility& vis, Gatherer& gatherer,
-                           const scene::Sensor& sensor) {
-    SensorValue out;
-    Vec3 directAt = sensor.position, gatherAt = sensor.position;
-    auto where = locateOnMesh(mesh, sensor.position, sensor.normal, 1e-6 * scene.diagonal(), &vis);
-    if (where) {
-        if (!solution.vertexIndirect.empty())
-            out.indirectVertex = interpolateIndirect(mesh, solution, where->patch, where->u, where->v);
-        // The limit from inside the sensor's own patch: the gather always (a point on a
-        // mesh vertex is a singular point of its neighbours' form factors); the direct
-        // light where the sensor's surface ends (an edge, a corner, the foot of a wall),
-        // so its shadow rays do not start in the neighbouring surface or slip past a
-        // wall standing there. Elsewhere the exact point: a light 1 mm away is exact.
-        const double nudge = 1e-6 * scene.diagonal();
-        gatherAt = nudgeInside(mesh, where->patch, sensor.position, nudge);
-        if (onSurfaceBoundary(mesh, *where, 10 * nudge, &vis)) directAt = gatherAt;
-    }
-    out.direct = lights.illuminance(directAt, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
-    if (!solution.indirect.empty()) out.indirect = gatherer.indirectAt(gatherAt, sensor.normal);
-    return out;
 }
 
 }  // namespace rayrad::radiosity

@@ -1,9 +1,9 @@
-// Sensors: direct light exactly, indirect by a final gather over the converged solution.
+// The final gather: indirect illuminance at a point from the converged solution, with
+// corner and midpoint values re-gathered near the point (sensors.h uses it).
 #pragma once
 
 #include <core/visibility.h>
 #include <radiosity/clusters.h>
-#include <radiosity/direct_light.h>
 #include <radiosity/far_field.h>
 #include <radiosity/member_tree.h>
 #include <radiosity/mirror_images.h>
@@ -34,13 +34,6 @@ struct MeshLocation {
 std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance,
                                          const Visibility* spatial = nullptr);
 
-/// Illuminance in lx (RGB) at a sensor.
-struct SensorValue {
-    Rgb direct{0.0};
-    Rgb indirect{0.0};                  ///< final gather
-    std::optional<Rgb> indirectVertex;  ///< interpolated vertex values, when on a surface
-};
-
 /// How deep and how finely the gather works (see Gatherer).
 struct GatherOptions {
     int levels = 0;             ///< corner values re-gathered this many times (0 = patch-constant)
@@ -56,6 +49,33 @@ struct GatherOptions {
     double minWeight = 0;
     /// The sensor gather as the scene's settings ask for it.
     static GatherOptions from(const scene::SolverOptions& solver);
+};
+
+/// The corner and midpoint values one run of gathers has re-gathered, and how many
+/// gathers it took. A run's values depend on what it gathered before (see Gatherer), so
+/// a memo serves one thread at a time; runs with memos of their own are independent of
+/// each other and of the order they run in.
+class GatherMemo {
+  public:
+    /// Point gathers taken so far: the sensors' own and every corner and midpoint re-gather.
+    size_t gathers() const { return m_gathers; }
+
+  private:
+    friend class Gatherer;
+    /// A re-gathered value and the finest weight class it was gathered for.
+    struct Entry {
+        Rgb indirect;
+        int weightClass;
+    };
+    /// (vertex or midpoint id, level) → indirect (lx, RGB).
+    using Key = std::pair<uint64_t, int>;
+    /// An entry for `key`'s id gathered at `key`'s level or higher and in at least the
+    /// detail of `weightClass`, if there is one.
+    static const Rgb* recall(const std::map<Key, Entry>& memo, const Key& key, int weightClass);
+    std::map<Key, Entry> m_vertex;
+    std::map<std::pair<uint64_t, uint64_t>, uint64_t> m_midpointIds;  ///< (a, b) sorted → id
+    std::map<Key, Entry> m_midpoint;
+    size_t m_gathers = 0;
 };
 
 /// Final gather of the indirect illuminance into a differential area at x:
@@ -98,10 +118,11 @@ class Gatherer {
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
              const RadiositySolution& solution, const Visibility& vis, const GatherOptions& options);
 
-    /// Indirect illuminance (lx, RGB) at x with unit normal n.
-    Rgb indirectAt(const Vec3& x, const Vec3& n) { return gather(x, n, m_options.levels, 0); }
-    /// Point gathers taken so far: the sensors' own and every corner and midpoint re-gather.
-    size_t gatherCount() const { return m_gathers; }
+    /// Indirect illuminance (lx, RGB) at x with unit normal n; re-gathered corner and
+    /// midpoint values are kept in (and taken from) `memo`. Thread-safe for distinct memos.
+    Rgb indirectAt(const Vec3& x, const Vec3& n, GatherMemo& memo) const {
+        return gather(x, n, m_options.levels, 0, memo);
+    }
 
     /// Indirect illuminance of a patch corner (patch, corner index) — lx, RGB. `share`:
     /// ρ F of the patch seen from the gathering point, the part of an error in the value
@@ -150,13 +171,14 @@ class Gatherer {
         Rgb L, E;
     };
     /// A gather whose error reaches the sensor with weight at most 10^−weightClass.
-    Rgb gather(const Vec3& x, const Vec3& n, int level, int weightClass);
+    Rgb gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo) const;
     /// The class of a weight: k with 10^−(k+1) < weight ≤ 10^−k, so a class's weight is at
     /// least that of its members (always 0 without a minimum weight: every gather is then
     /// in full detail).
     int classOf(double weight) const;
-    Rgb cornerIndirect(size_t patch, int corner, int level, int weightClass);
-    Midpoint midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level, int weightClass);
+    Rgb cornerIndirect(size_t patch, int corner, int level, int weightClass, GatherMemo& memo) const;
+    Midpoint midpointIndirect(size_t patch, uint64_t a, uint64_t b, const Vec3& y, int level, int weightClass,
+                              GatherMemo& memo) const;
     /// The solution's own indirect illuminance at a patch corner (lx): the vertex value,
     /// or the patch's when there are none.
     Rgb solutionCorner(size_t patch, int corner) const;
@@ -175,24 +197,10 @@ class Gatherer {
     const Visibility& m_vis;
     GatherOptions m_options;
     double m_nudge;
-    size_t m_gathers = 0;  ///< gather() calls (serial: the memo is filled serially)
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     std::vector<MemberTree> m_trees;                 ///< per cluster
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
-    /// A re-gathered value and the finest weight class it was gathered for.
-    struct Memo {
-        Rgb indirect;
-        int weightClass;
-    };
-    /// (vertex or midpoint id, level) → indirect (lx, RGB).
-    using MemoKey = std::pair<uint64_t, int>;
-    /// A memoised value for `key`'s id gathered at `key`'s level or higher and in at least
-    /// the detail of `weightClass`, if there is one.
-    static const Rgb* recall(const std::map<MemoKey, Memo>& memo, const MemoKey& key, int weightClass);
-    std::map<MemoKey, Memo> m_vertexMemo;
-    std::map<std::pair<uint64_t, uint64_t>, uint64_t> m_midpointIds;  ///< (a, b) sorted → id
-    std::map<MemoKey, Memo> m_midpointMemo;
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
 };
 
@@ -204,11 +212,5 @@ bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tol
 /// Moves a surface point a hair (metres) toward the centroid of its patch, so points on
 /// an edge or corner take the limit from inside their own wall.
 Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double distance);
-
-/// Direct (exact, `sensorAreaLightSamples` shadow rays per area light), gathered
-/// indirect, and vertex-interpolated indirect at a sensor.
-SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
-                           const DirectLight& lights, const Visibility& vis, Gatherer& gatherer,
-                           const scene::Sensor& sensor);
 
 }  // namespace rayrad::radiosity

@@ -6,8 +6,10 @@ rayrad="$1"
 src="$2"
 source "$(dirname "$0")/test_lib.sh"
 
-# The Cornell box: coloured (three channels), clusters, corrections, conservation, overshooting.
-cornell=("$src/scenes/cornell/cornell.json" --set radiosity.max_edge=0.1 --set camera.resolution=[48,48] -q)
+# The Cornell box: coloured (three channels), clusters, corrections, conservation, overshooting;
+# a 12 x 10 floor grid, so the sensors run in several runs with memos of their own, in parallel.
+cornell=("$src/scenes/cornell/cornell.json" --set radiosity.max_edge=0.1 --set camera.resolution=[48,48]
+         --set "sensor_grids.0.counts=[12,10]" -q)
 for run in 1 2; do
     for threads in 1 2; do
         "$rayrad" render "${cornell[@]}" --threads $threads -o "$work/c$run$threads.exr" -o "$work/c$run$threads.png" \
