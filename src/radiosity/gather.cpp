@@ -27,6 +27,9 @@ constexpr int kRefineDepth = 6;
 /// Near patches holding at least 1/kRefineShares of the near field's ρ F are refined to
 /// the full tolerance; smaller ones to a tolerance looser in proportion.
 constexpr double kRefineShares = 20;
+/// A re-gather of small weight counts nodes as far from this many of their diameters at
+/// the least (see gatherWith).
+constexpr double kLeastFarDiameters = 2.0;
 /// Members per leaf of the far-field member trees.
 constexpr size_t kFarLeafSize = 8;
 }  // namespace
@@ -206,7 +209,7 @@ void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePo
 }
 
 Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
-                              int depth) const {
+                              int depth, double knownF) const {
     Vec3 c = (p[0] + p[1] + p[2]) / 3.0;
     double size = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
     double dist = std::min({glm::length(c - x), glm::length(p[0] - x), glm::length(p[1] - x), glm::length(p[2] - x)});
@@ -219,7 +222,7 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
         for (int k = 0; k < 4; ++k) sum += integrateLinear(x, n, t[k], l[k], normal, depth + 1);
         return sum;
     }
-    double f = formFactorToPolygon(x, n, p, 3, normal);
+    const double f = knownF >= 0 ? knownF : formFactorToPolygon(x, n, p, 3, normal);
     if (f <= 0 || !m_vis.visibleFromSurface(x, n, c)) return Rgb(0.0);
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
 }
@@ -249,6 +252,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         uint32_t patch;
         uint32_t position;  ///< in its cluster's member tree order
         std::vector<NearPiece> pieces;
+        double F;  ///< the whole patch's form factor seen from x
+        /// The form factor of `piece`, when it is the whole patch, else −1 (not known).
+        double known(const NearPiece& piece) const { return pieces.size() == 1 && piece.depth == 0 ? F : -1; }
     };
     std::vector<Near> near;
     /// The clusters holding near patches, in increasing order, and their range in `near`
@@ -263,6 +269,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         struct Candidate {
             uint32_t cluster, patch;
             double share;  ///< ρ F: how much of an error in its corner values reaches x
+            double F;
         };
         std::vector<Candidate> candidates;
         for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
@@ -279,7 +286,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 if (rho == Rgb(0.0)) continue;
                 const Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
                 const double F = formFactorToPolygon(x, n, v, 3, p.normal);
-                if (F > 0) candidates.push_back({static_cast<uint32_t>(c), j, std::max({rho[0], rho[1], rho[2]}) * F});
+                if (F > 0) candidates.push_back({static_cast<uint32_t>(c), j, std::max({rho[0], rho[1], rho[2]}) * F, F});
             }
         }
         // The smallest shares whose sum stays within the floor keep the solution's corner
@@ -312,7 +319,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             }
             if (nearClusters.empty() || nearClusters.back().cluster != e.cluster)
                 nearClusters.push_back({e.cluster, near.size(), near.size()});
-            near.push_back({j, m_treePosition[j], {}});
+            near.push_back({j, m_treePosition[j], {}, e.F});
             // A piece is refined while its midpoints depart from linear by more than the
             // tolerance; patches holding less than 1/kRefineShares of the near field's share
             // may depart more, in proportion (400 slivers of a sofa do not each need it), and
@@ -331,10 +338,17 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         Rgb sum(0.0);
         for (const Near& e : near)
             for (const NearPiece& piece : e.pieces)
-                sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[e.patch].normal, piece.depth);
+                sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[e.patch].normal, piece.depth,
+                                       e.known(piece));
         return sum;
     }
 
+    // A far node's error falls as (reach / r)³ (its expansion is of second order); an error
+    // in a gather of weight w reaches the sensor times w, so nodes may count as far from
+    // farDiameters · ∛w (never nearer than kLeastFarDiameters): the same error at the sensor.
+    const double farDiameters = m_options.farDiameters > 0 && weight < 1
+                                    ? std::max(kLeastFarDiameters, m_options.farDiameters * std::cbrt(weight))
+                                    : m_options.farDiameters;
     // Sum over clusters: near patches by sub-triangles, other patches with their own rays
     // when close, far clusters with one shared ray (form factors still per member), and
     // far member-tree nodes as one source each (see the constructor's comment).
@@ -388,7 +402,8 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             if (it != nearLast && it->patch == j) {
                 if (part == Part::AllButNear) return;
                 for (const NearPiece& piece : it->pieces)
-                    sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[j].normal, piece.depth);
+                    sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[j].normal, piece.depth,
+                                           it->known(piece));
                 return;
             }
             const Rgb L = mirrorWeight * m_solution.reflectedLuminance(m_scene, m_mesh, j);
@@ -414,9 +429,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const uint32_t i = stack[--top];
             const MemberNode& node = tree.nodes[i];
             const FarSource& f = farSources[i];
-            if (m_options.farDiameters > 0 && node.size() > 1) {
+            if (farDiameters > 0 && node.size() > 1) {
                 const Vec3 at = real ? f.at : image->point(f.at);
-                const double limit = m_options.farDiameters * f.reach;
+                const double limit = farDiameters * f.reach;
                 if (glm::dot(at - x, at - x) > limit * limit && !holdsNear(node)) {
                     addFar(f);
                     continue;

@@ -105,6 +105,9 @@ class Gatherer {
     /// its halves, their halves …) farther than that many of its diameters counts as one
     /// source with one visibility ray (a Barnes–Hut far field; see far_field.h). Nodes
     /// holding a near patch are always opened.
+    /// A re-gather of weight w < 1 counts nodes as far from farDiameters · ∛w of their
+    /// diameters (at least 2): the far field's error falls as the cube of the distance, and
+    /// reaches the sensor times w.
     /// `options.minWeight` > 0: corner and midpoint values are re-gathered only where an
     /// error in them can still reach the sensor by that fraction. Without it, a point
     /// beside a dense mesh (near patches by the hundred, each re-gathering its corners,
@@ -187,8 +190,11 @@ class Gatherer {
     void refineNear(const Vec3& x, size_t patch, const std::array<RefinePoint, 3>& c, int depth,
                     const MidpointSource* midpoints, double share, double tolerance,
                     std::vector<NearPiece>& pieces) const;
+    /// E at x from the triangle p of linear luminance L, split toward x while closer than
+    /// its size. `knownF` ≥ 0: the triangle's form factor, already computed (a near
+    /// patch left whole), used when it is not split.
     Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
-                        int depth) const;
+                        int depth, double knownF = -1) const;
 
     const scene::Scene& m_scene;
     const PatchMesh& m_mesh;
