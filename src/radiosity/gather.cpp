@@ -229,10 +229,10 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
 
 Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo) const {
     ++memo.m_gathers;
-    if (level <= 0) return gatherWith(x, n, nullptr, true);
     // This gather's error reaches the sensor with weight w; a near patch's corners and
     // midpoints with w ρ F. Those below the minimum weight are not worth a gather.
     const double weight = std::pow(10.0, -weightClass);
+    if (level <= 0) return gatherWith(x, n, nullptr, true, nullptr, weight);
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
     CornerSource corners = [&](size_t patch, int corner, double share) {
         return cornerIndirect(patch, corner, level - 1, classOf(weight * share), memo);
