@@ -32,14 +32,7 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
             f += patchFormFactor(sourceMesh, sourceMesh.patches[i], x, n, analyticDistance);
         return f;
     }
-    // Depth first through the member tree (at most 32 deep: median splits of < 2³² members).
-    const MemberTree& tree = *geometry->tree;
-    uint32_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const uint32_t index = stack[--top];
-        const MemberNode& node = tree.nodes[index];
+    descend(*geometry->tree, [&](uint32_t index, const MemberNode& node) {
         const FarSource& far = geometry->unitFar[index];
         const double limit = geometry->farDiameters * far.reach;
         // Far, and wholly above or below x's horizon (the far field clips at its centre):
@@ -47,16 +40,15 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
         if (node.size() > 1 && glm::dot(far.at - x, far.at - x) > limit * limit &&
             std::abs(glm::dot(n, far.at - x)) > 0.5 * far.reach) {
             f += farField(far, x, n, nullptr)[1] / kPi;  // E = π L F at L = 1
-        } else if (node.leaf()) {
-            for (uint32_t m = node.begin; m < node.end; ++m) {
-                const Patch& p = sourceMesh.patches[source.patches[tree.order[m]]];
-                f += patchFormFactor(sourceMesh, p, x, n, analyticDistance);
-            }
-        } else {
-            stack[top++] = node.right;
-            stack[top++] = node.left;
+            return false;
         }
-    }
+        if (!node.leaf()) return true;
+        for (uint32_t m = node.begin; m < node.end; ++m) {
+            const Patch& p = sourceMesh.patches[source.patches[geometry->tree->order[m]]];
+            f += patchFormFactor(sourceMesh, p, x, n, analyticDistance);
+        }
+        return false;
+    });
     return f;
 }
 

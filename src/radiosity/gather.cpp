@@ -422,28 +422,20 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         // Depth first through the member tree: a node far enough counts as one source.
         const MemberTree& tree = m_trees[c];
         const std::vector<FarSource>& farSources = m_far[c];
-        uint32_t stack[128];  // the tree is at most 32 deep (median splits of < 2³² members)
-        int top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            const uint32_t i = stack[--top];
-            const MemberNode& node = tree.nodes[i];
+        descend(tree, [&](uint32_t i, const MemberNode& node) {
             const FarSource& f = farSources[i];
             if (farDiameters > 0 && node.size() > 1) {
                 const Vec3 at = real ? f.at : image->point(f.at);
                 const double limit = farDiameters * f.reach;
                 if (glm::dot(at - x, at - x) > limit * limit && !holdsNear(node)) {
                     addFar(f);
-                    continue;
+                    return false;
                 }
             }
-            if (node.leaf()) {
-                for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
-            } else {
-                stack[top++] = node.right;
-                stack[top++] = node.left;
-            }
-        }
+            if (!node.leaf()) return true;
+            for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
+            return false;
+        });
         if (shared && sharedSum != Rgb(0.0) && vis.visibleFromSurface(x, n, rayTarget(strongest)))
             sum += sharedSum;
         return sum;

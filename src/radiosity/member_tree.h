@@ -31,4 +31,22 @@ struct MemberTree {
 
 MemberTree memberTree(const PatchMesh& mesh, const Cluster& cluster, size_t leafSize);
 
+/// Depth first through `tree` from its root: `visit(index, node)` returns true to open
+/// the node (its children follow, left first) or false when it has dealt with the node
+/// itself (a far node as one source, a leaf member by member). Leaves are never opened.
+template <class Visit>
+void descend(const MemberTree& tree, Visit&& visit) {
+    uint32_t stack[128];  // the tree is at most 32 deep (median splits of < 2³² members)
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const uint32_t index = stack[--top];
+        const MemberNode& node = tree.nodes[index];
+        if (visit(index, node) && !node.leaf()) {
+            stack[top++] = node.right;
+            stack[top++] = node.left;
+        }
+    }
+}
+
 }  // namespace rayrad::radiosity

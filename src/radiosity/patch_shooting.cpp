@@ -41,35 +41,26 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
         // Depth first through the shooter's member tree: a node far enough sends as one
         // source with one visibility ray (toward its brightest member); a leaf (a member
         // group) otherwise member by member.
-        uint32_t stack[128];  // the tree is at most 32 deep (median splits of < 2³² members)
-        int top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            const uint32_t index = stack[--top];
-            const MemberNode& node = tree.nodes[index];
+        descend(tree, [&](uint32_t index, const MemberNode& node) {
             if (!light.far.empty()) {
                 const FarSource& f = light.far[index];
                 const double limit = m_options.shootFarDiameters * f.reach;
                 if (node.size() > 1 && !f.mixed && glm::dot(f.at - rec.centroid, f.at - rec.centroid) > limit * limit) {
                     ++terms;
-                    if (s.image && !s.image->mayPass(f.at, 0.5 * f.reach, rec.centroid, 0)) continue;
+                    if (s.image && !s.image->mayPass(f.at, 0.5 * f.reach, rec.centroid, 0)) return false;
                     const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
                     if (e != V(0.0) &&
                         s.vis->visibleFromSurface(rec.centroid, rec.normal, from.mesh().patches[C.patches[f.brightest]].centroid))
                         deltaE += e;
-                    continue;
+                    return false;
                 }
             }
-            if (!node.leaf()) {
-                stack[top++] = node.right;
-                stack[top++] = node.left;
-                continue;
-            }
+            if (!node.leaf()) return true;
             // A receiver farther than kSharedRayDiameters of the group's diameters sees the
             // whole group through one visibility ray, toward the member that sends it the
             // most; nearer, each member has its own.
             const Vec3 groupAt = s.image ? s.image->point(node.centroid) : node.centroid;
-            if (s.image && !s.image->mayPass(groupAt, 0.5 * node.diameter, rec.centroid, 0)) continue;  // no light through
+            if (s.image && !s.image->mayPass(groupAt, 0.5 * node.diameter, rec.centroid, 0)) return false;  // no light through
             const Vec3 toGroup = groupAt - rec.centroid;
             const double far = kSharedRayDiameters * node.diameter;
             const bool shared = node.size() > 1 && glm::dot(toGroup, toGroup) > far * far;
@@ -91,11 +82,11 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                 groupE += e;
                 if (shared && std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
             }
-            if (shared && strongestSource &&
-                !s.vis->visibleFromSurface(rec.centroid, rec.normal, strongestSource->centroid))
-                continue;
-            deltaE += groupE;
-        }
+            if (!(shared && strongestSource &&
+                  !s.vis->visibleFromSurface(rec.centroid, rec.normal, strongestSource->centroid)))
+                deltaE += groupE;
+            return false;
+        });
         into[j] += deltaE;
         flux += deltaE * rec.area;
         reached |= deltaE != V(0.0);  // deliveries of both signs may cancel in `flux`
