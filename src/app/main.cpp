@@ -82,10 +82,15 @@ void printSolveSummary(const app::PipelineRun& run) {
     if (run.sensorGathers > 0)
         fmt::print(stderr, "sensor gathers: {} for {} sensors (corner and midpoint re-gathers near edges)\n",
                    run.sensorGathers, run.sensors.size());
-    if (run.clustering.enabled)
-        fmt::print(stderr, "transfers: {} cluster→cluster, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
-                   run.shooting.clusterTransfers, run.shooting.patchPairs, run.shooting.corrections,
-                   run.shooting.pushPulls, run.maxIlluminanceStep);
+    if (run.clustering.enabled) {
+        const auto& t = run.shooting;
+        const std::string throughImages =
+            t.imageTransfers > 0 ? fmt::format(" ({} from mirror images, {:.1f} % of those carrying light)", t.imageTransfers,
+                                               100.0 * static_cast<double>(t.imageTransfersLit) / t.imageTransfers)
+                                 : "";
+        fmt::print(stderr, "transfers: {} cluster→cluster{}, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
+                   t.clusterTransfers, throughImages, t.patchPairs, t.corrections, t.pushPulls, run.maxIlluminanceStep);
+    }
     std::string alsoAbsorbed;
     if (!run.scene.mirrors.empty() && run.scene.solver.mirrorImages)
         alsoAbsorbed += fmt::format(" + {:.6g} lm by mirrors", balance.mirrorAbsorbed);

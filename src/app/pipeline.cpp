@@ -282,6 +282,8 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) 
                   {"converged", s.converged},
                   {"unshot_fraction", s.initialUnshotFlux > 0 ? s.remainingUnshotFlux / s.initialUnshotFlux : 0.0},
                   {"cluster_transfers", run.shooting.clusterTransfers},
+                  {"image_cluster_transfers", run.shooting.imageTransfers},
+                  {"image_cluster_transfers_carrying_light", run.shooting.imageTransfersLit},
                   {"patch_pairs", run.shooting.patchPairs},
                   {"corrections", run.shooting.corrections},
                   {"push_pulls", run.shooting.pushPulls},

@@ -367,7 +367,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         const Shooter& from = *shooters[si];
         const Cluster& Cs = from.cluster();
         const ClusterSamples localSamples = from.local(samples);
-        std::atomic<int64_t> clusterTransfers{0}, patchPairs{0};
+        std::atomic<int64_t> clusterTransfers{0}, patchPairs{0}, lit{0};
         // Deliveries per receiver when shooting through mirrors too, for the mirrors'
         // account and the conservation (summed in order).
         std::vector<V> deliveredTo(throughMirrors ? n : 0, V(0.0));
@@ -378,7 +378,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         // Cluster→cluster now; the receivers within r_v are listed for patch→patch.
         std::vector<char> isNear(n, 0);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
-            int64_t cc = 0;
+            int64_t cc = 0, carried = 0;
             for (size_t d = range.begin(); d != range.end(); ++d) {
                 if (corrected[si][d]) continue;
                 const Cluster& D = m_clustering.clusters[d];
@@ -393,11 +393,12 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
                                            &from.geometry);
                 V flux(0.0);
-                if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t);  // I_D += Ks ΔL_C π F V
+                if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
                 if (throughMirrors) deliveredTo[d] = flux;
                 ++cc;
             }
             clusterTransfers += cc;
+            lit += carried;
         });
         std::vector<size_t> nearReceivers;
         for (size_t d = 0; d < n; ++d)
@@ -416,6 +417,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
             });
         }
         m_stats.clusterTransfers += clusterTransfers;
+        if (s.image) m_stats.imageTransfers += clusterTransfers, m_stats.imageTransfersLit += lit;
         m_stats.patchPairs += patchPairs;
         for (const V& flux : deliveredTo) {
             delivered.add(lum(atSource(flux, s.weight)));

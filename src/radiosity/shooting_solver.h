@@ -32,6 +32,9 @@ constexpr double kConservationBound = 3.0;
 /// Counters of what the solve did.
 struct ShootingStatistics {
     int64_t clusterTransfers = 0;  ///< cluster→cluster receivers
+    /// Of those, from a mirror image, and how many of them carried light (F V > 0): the
+    /// rest were tested and found dark through the chain's apertures.
+    int64_t imageTransfers = 0, imageTransfersLit = 0;
     int64_t patchPairs = 0;        ///< patch→patch terms evaluated: per receiver patch, each sending member or far member-tree node
     int64_t corrections = 0;       ///< receiver clusters corrected
     int64_t pushPulls = 0;         ///< global push-pulls
