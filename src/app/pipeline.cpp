@@ -77,6 +77,7 @@ class PushPullObserver {
             gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
                              radiosity::GatherOptions::from(m_run.scene.solver));
         }
+        radiosity::GatherMemo memo;  // the row's sensors share their re-gathers, as a run of the sensor stage does
         for (const auto& [s, where] : m_sensors) {
             std::optional<double> vertex;
             if (where) vertex = luminance(radiosity::interpolateIndirect(m_run.mesh, copy, where->patch, where->u, where->v));
@@ -85,7 +86,6 @@ class PushPullObserver {
             if (gatherer) {
                 Vec3 x = where ? radiosity::nudgeInside(m_run.mesh, where->patch, s->position, 1e-6 * m_run.scene.diagonal())
                                : s->position;
-                radiosity::GatherMemo memo;
                 gathered = errorPct(luminance(gatherer->indirectAt(x, s->normal, memo)), s->refIndirect);
             }
             row.gatheredErrorPct.push_back(gathered);
