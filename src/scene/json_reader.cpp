@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <map>
 
 namespace rayrad::scene {
 
@@ -11,8 +13,13 @@ using nlohmann::json;
 
 std::string describe(const json& value) {
     switch (value.type()) {
-        case json::value_t::array: return "an array";
-        case json::value_t::object: return "an object";
+        case json::value_t::array:
+        case json::value_t::object: {
+            // Short ones in full ("[1280, 720.5]"), long ones by their size.
+            std::string s = value.dump();
+            if (s.size() <= 40) return s;
+            return value.is_array() ? fmt::format("an array of {} values", value.size()) : "an object";
+        }
         case json::value_t::null: return "null";
         default: {
             std::string s = value.dump();
@@ -37,6 +44,12 @@ static size_t editDistance(const std::string& a, const std::string& b) {
 }
 
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
+    auto lower = [](std::string t) {
+        for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return t;
+    };
+    for (const auto& c : candidates)
+        if (lower(c) == lower(word)) return c;  // "Materials" → "materials"
     std::string best;
     size_t bestDistance = 4;
     for (const auto& c : candidates) {
@@ -64,6 +77,11 @@ const json* JsonObject::get(const std::string& key) {
 /// or (keys of 6 letters or more) two letters off. Stricter than closestMatch(), because
 /// the other keys of the object are not known yet ("max" is not a typo of "min").
 static bool likelyTypo(const std::string& word, const std::string& key) {
+    auto lower = [](std::string t) {
+        for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return t;
+    };
+    if (lower(word) == lower(key)) return true;  // "Intensity_CD": keys are case-sensitive
     size_t d = editDistance(word, key);
     if (d <= 1 || (key.size() >= 6 && d <= 2)) return true;
     if (word.size() != key.size()) return false;
@@ -261,6 +279,48 @@ void JsonObject::finish(const std::set<std::string>& alsoAllowed) {
         std::string hint = closestMatch(it.key(), known);
         error(it.key(), hint.empty() ? "unknown key" : fmt::format("unknown key (did you mean \"{}\"?)", hint));
     }
+}
+
+std::string findDuplicateKey(const std::string& text) {
+    // A small scanner over text nlohmann::json has already accepted: it follows strings,
+    // objects and arrays only, and remembers where each key of each open object began.
+    struct Frame {
+        bool object = false;
+        bool expectKey = false;
+        std::map<std::string, size_t> keys;  // key → byte offset of its opening quote
+    };
+    std::vector<Frame> stack;
+    auto lineColumn = [&](size_t byte) {
+        size_t line = 1, column = 1;
+        for (size_t i = 0; i < byte; ++i) text[i] == '\n' ? (++line, column = 1) : ++column;
+        return fmt::format("line {}, column {}", line, column);
+    };
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '{' || c == '[') {
+            stack.push_back({c == '{', c == '{', {}});
+        } else if ((c == '}' || c == ']') && !stack.empty()) {
+            stack.pop_back();
+        } else if (c == ',' && !stack.empty() && stack.back().object) {
+            stack.back().expectKey = true;
+        } else if (c == '"') {
+            const size_t start = i;
+            std::string raw;
+            for (++i; i < text.size() && text[i] != '"'; ++i) {
+                if (text[i] == '\\' && i + 1 < text.size()) raw += text[i++];
+                raw += text[i];
+            }
+            if (!stack.empty() && stack.back().expectKey) {
+                stack.back().expectKey = false;
+                auto [at, fresh] = stack.back().keys.emplace(raw, start);
+                if (!fresh)
+                    return fmt::format("{}: the key \"{}\" appears twice in one object (first at {}); "
+                                       "JSON keeps only the last, so remove one",
+                                       lineColumn(start), raw, lineColumn(at->second));
+            }
+        }
+    }
+    return "";
 }
 
 }  // namespace rayrad::scene

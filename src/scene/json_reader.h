@@ -69,7 +69,12 @@ class JsonObject {
 /// Short description of a JSON value for messages: `-5`, `"abc"`, `an array`.
 std::string describe(const nlohmann::json& value);
 
-/// The closest of `candidates` to `word` (edit distance ≤ 3), or "".
+/// The closest of `candidates` to `word`: one that differs only in case, else the
+/// nearest by edit distance (≤ 3), or "".
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+/// For JSON text that parses: "line L, column C: the key "k" appears twice in one
+/// object (first at line L', column C') ..." for the first duplicate key, or "".
+std::string findDuplicateKey(const std::string& text);
 
 }  // namespace rayrad::scene

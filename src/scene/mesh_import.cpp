@@ -1,12 +1,14 @@
 #include <scene/mesh_import.h>
 
 #include <core/input_error.h>
+#include <core/input_file.h>
 #include <scene/ply_reader.h>
 #include <scene/polygon.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
+#include <assimp/version.h>
 
 #include <fmt/format.h>
 
@@ -199,11 +201,11 @@ bool hasExtension(const std::string& path, const std::string& ext) {
 ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, const std::string& where) {
     const std::string place = where + "/file";
     const std::string prefix = placeMessage(sceneFile, place, "mesh '" + path + "': ");
+    if (std::string problem = inputFileProblem(path, "mesh file"); !problem.empty())
+        throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "': " + problem));
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "' is a directory"));
     if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "' does not exist"));
+        throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "' is not a regular file"));
     if (hasExtension(path, ".ply")) {
         ImportedMesh out = importPly(path, prefix);
         if (out.triangles.empty())
@@ -249,6 +251,11 @@ ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, c
     if (out.triangles.empty())
         throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));
     return out;
+}
+
+std::string assimpVersion() {
+    return "Assimp " + std::to_string(aiGetVersionMajor()) + "." + std::to_string(aiGetVersionMinor()) + "." +
+           std::to_string(aiGetVersionPatch());
 }
 
 }  // namespace rayrad::scene

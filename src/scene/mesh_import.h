@@ -44,4 +44,7 @@ struct ImportedMesh {
 /// non-finite coordinates, empty meshes are checked before use).
 ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, const std::string& where);
 
+/// "Assimp 5.2.5": the version this build runs with.
+std::string assimpVersion();
+
 }  // namespace rayrad::scene

@@ -1,6 +1,7 @@
 #include <scene/scene_parser.h>
 
 #include <core/input_error.h>
+#include <core/input_file.h>
 #include <scene/json_reader.h>
 
 #include <fmt/format.h>
@@ -32,6 +33,7 @@ void applyOverride(json& root, const Override& o, ParseContext& ctx) {
         if (node->is_array()) {
             size_t index = 0;
             try {
+                if (k.empty() || k.find_first_not_of("0123456789") != std::string::npos) throw std::invalid_argument(k);
                 index = std::stoul(k);
             } catch (...) {
                 ctx.error("--set " + o.path, fmt::format("\"{}\" is not an array index", k));
@@ -129,7 +131,11 @@ glm::dmat4 parseTransform(JsonObject t) {
                      glm::rotate(glm::dmat4(1.0), glm::radians(angle), glm::normalize(axis)) *
                      glm::scale(glm::dmat4(1.0), scale);
     t.finish();
-    return trs * m;
+    const glm::dmat4 total = trs * m;
+    const double det = glm::determinant(glm::dmat3(total));
+    if (!(std::abs(det) > 1e-12) && t.context().errors == 0)
+        t.context().error(t.path(), fmt::format("the transform is singular (determinant {:.3g}): it flattens the object", det));
+    return total;
 }
 
 bool parseFacing(JsonObject& o, bool defaultInward) {
@@ -249,6 +255,8 @@ LightDesc parseLight(JsonObject l) {
     if (luminance(c) <= 0) l.error("color", "light colour must have a positive luminance");
     else d.color = c / luminance(c);
     if (d.kind == LightKind::Spot) {
+        if (l.has("look_at") && l.has("direction"))
+            l.error("direction", "give either \"direction\" or \"look_at\", not both");
         if (l.has("look_at")) {
             Vec3 target = l.vec3("look_at").value_or(d.position + Vec3(0, 0, -1));
             d.direction = target - d.position;
@@ -454,8 +462,18 @@ std::string lineColumn(const std::string& text, size_t byte) {
 SceneDesc parseScene(const std::string& text, const std::string& fileName, const std::vector<Override>& overrides,
                      const ErrorHandler& onError) {
     ParseContext ctx;
-    ctx.onError = onError ? onError : [&fileName](const std::string& place, const std::string& message) {
-        throw InputError(placeMessage(fileName, place, message));
+    // A problem in a value given by --set is named by the option, not by the scene file.
+    auto sourceOf = [&](const std::string& place) -> std::string {
+        if (place.rfind("--set ", 0) == 0) return "";
+        for (const auto& o : overrides) {
+            std::string pointer = "/" + o.path;
+            std::replace(pointer.begin(), pointer.end(), '.', '/');
+            if (place == pointer || place.rfind(pointer + "/", 0) == 0) return "--set " + o.path + "=" + o.value;
+        }
+        return fileName;
+    };
+    ctx.onError = onError ? onError : [&](const std::string& place, const std::string& message) {
+        throw InputError(placeMessage(sourceOf(place), place, message));
     };
     SceneDesc desc;
     desc.file = fileName;
@@ -488,12 +506,19 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         ctx.error("/", "the scene must be a JSON object, got " + describe(root));
         return desc;
     }
+    if (std::string duplicate = findDuplicateKey(text); !duplicate.empty()) {
+        const auto colon = duplicate.find(": ", duplicate.find("column"));
+        ctx.error(duplicate.substr(0, colon), duplicate.substr(colon + 2));
+        return desc;
+    }
     for (const auto& o : overrides) applyOverride(root, o, ctx);
 
     std::string sceneDir = std::filesystem::path(fileName).parent_path().string();
     JsonObject top(root, "", ctx);
     top.string("description");
     top.string("provenance");
+    // Unknown top-level keys first: a misspelt "Materials" explains the errors it causes.
+    top.finish({"materials", "objects", "lights", "camera", "sensors", "sensor_grids", "radiosity", "clusters", "render"});
 
     std::map<std::string, int> materialIndex;
     if (auto mats = top.object("materials")) {
@@ -532,7 +557,6 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     if (auto r = top.object("radiosity")) parseRadiosity(*r, desc);
     if (auto c = top.object("clusters")) parseClusters(*c, desc);
     if (auto r = top.object("render")) parseRender(*r, desc);
-    top.finish();
 
     if (ctx.errors == 0 && desc.objects.empty()) ctx.error("/objects", "the scene has no geometry");
     if (ctx.errors == 0 && desc.lights.empty()) {
@@ -551,16 +575,13 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
 }
 
 SceneDesc loadScene(const std::string& fileName, const std::vector<Override>& overrides) {
-    std::error_code ec;
-    if (!std::filesystem::exists(fileName, ec)) throw InputError(placeMessage(fileName, "", "no such file"));
-    if (std::filesystem::is_directory(fileName, ec))
-        throw InputError(placeMessage(fileName, "", "is a directory, not a scene file"));
-    std::ifstream in(fileName, std::ios::binary);
-    if (!in) throw InputError(placeMessage(fileName, "", "cannot open the file for reading"));
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw InputError(placeMessage(fileName, "", "cannot read the file"));
-    return parseScene(buffer.str(), fileName, overrides);
+    if (fileName == "-") {
+        // Standard input can be read once; a run that loads the scene twice (the command
+        // checks it before the work, the pipeline builds it) gets the same text.
+        static const std::string text = readInputFile("-", "scene file", kMaxSceneFileBytes);
+        return parseScene(text, kStandardInputName, overrides);
+    }
+    return parseScene(readInputFile(fileName, "scene file", kMaxSceneFileBytes), fileName, overrides);
 }
 
 Override parseOverride(const std::string& text) {

@@ -26,7 +26,13 @@ struct Override {
 SceneDesc parseScene(const std::string& text, const std::string& fileName,
                      const std::vector<Override>& overrides = {}, const ErrorHandler& onError = {});
 
-/// Reads the file and parses it; a missing or unreadable file is an InputError.
+/// Scene files larger than this are refused (geometry that large belongs in mesh files).
+constexpr size_t kMaxSceneFileBytes = size_t(256) << 20;
+/// The name a scene read from standard input ("-") has in messages.
+inline const char* const kStandardInputName = "<stdin>";
+
+/// Reads the file ("-": standard input) and parses it; a missing, unreadable or too
+/// large file, a directory or a device is an InputError.
 SceneDesc loadScene(const std::string& fileName, const std::vector<Override>& overrides = {});
 
 /// Splits "a.b=c" into an Override; throws InputError on a malformed string.

@@ -96,7 +96,7 @@ TEST_CASE("a missing mesh file is named with its place", "[parser]") {
         FAIL("no error");
     } catch (const InputError& err) {
         std::string what = err.what();
-        CHECK(what.find("dir/scene.json: /objects/0/file: mesh file 'dir/nowhere.obj' does not exist") == 0);
+        CHECK(what.find("dir/scene.json: /objects/0/file: mesh file 'dir/nowhere.obj': no such file") == 0);
     }
 }
 
