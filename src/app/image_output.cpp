@@ -1,29 +1,32 @@
 #include <app/image_output.h>
 
-#include <core/output_file.h>
+#include <app/result_checks.h>
 #include <tonemap/image_io.h>
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace rayrad::app {
 
-void checkImageOutputs(const std::vector<std::string>& paths) {
+void addImageOutputs(const std::vector<std::string>& paths, OutputFiles& files) {
     for (const auto& path : paths) {
+        files.add(path);  // first: "is a directory" says more than "unknown format"
         tonemap::checkImageFormat(path);
-        checkWritable(path);
     }
 }
 
-void writeImages(const std::vector<std::string>& paths, const HdrImage& image, const tonemap::DisplayOptions& display,
-                 const std::string& description) {
+void stageImages(const std::vector<std::string>& paths, const HdrImage& image, const tonemap::DisplayOptions& display,
+                 const std::string& description, OutputFiles& files) {
+    const bool hasLight = std::any_of(image.pixels.begin(), image.pixels.end(), [](const Rgb& p) { return p != Rgb(0.0); });
     for (const auto& path : paths) {
         if (tonemap::isHdrFormat(path)) {
-            tonemap::writeExr(path, image, description + "; pixel values are luminance in cd/m^2");
+            files.set(path, tonemap::encodeExr(path, image, description + "; pixel values are luminance in cd/m^2"));
         } else {
             auto rgb8 = tonemap::toDisplay(image, display);
-            tonemap::writeDisplayImage(path, image.width, image.height, rgb8);
+            if (hasLight) checkDisplayImage(path, rgb8, describeExposure(display));
+            files.set(path, tonemap::encodeDisplayImage(path, image.width, image.height, rgb8));
         }
     }
 }
@@ -31,6 +34,11 @@ void writeImages(const std::vector<std::string>& paths, const HdrImage& image, c
 std::string snapshotPath(const std::string& path, int index) {
     std::filesystem::path p(path);
     return (p.parent_path() / fmt::format("{}.snap{:02d}{}", p.stem().string(), index, p.extension().string())).string();
+}
+
+std::string describeExposure(const tonemap::DisplayOptions& display) {
+    if (!display.autoExposure) return fmt::format("{:g} stops", display.exposureStops);
+    return display.exposureStops == 0 ? "auto" : fmt::format("auto {:+g} stops", display.exposureStops);
 }
 
 }  // namespace rayrad::app

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <core/hdr_image.h>
+#include <core/output_file.h>
 #include <tonemap/display_transform.h>
 
 #include <string>
@@ -9,14 +10,20 @@
 
 namespace rayrad::app {
 
-/// Checks every output before any work: known extension, writable place.
-void checkImageOutputs(const std::vector<std::string>& paths);
+/// Checks every image output before any work (known extension, a path that can be
+/// written) and adds it to `files`.
+void addImageOutputs(const std::vector<std::string>& paths, OutputFiles& files);
 
-/// Writes the image to each path: .exr as linear cd/m², others through the display transform.
-void writeImages(const std::vector<std::string>& paths, const HdrImage& image, const tonemap::DisplayOptions& display,
-                 const std::string& description);
+/// Encodes the image for each path (.exr as linear cd/m², others through the display
+/// transform, each display image checked by checkDisplayImage) and gives the bytes to
+/// `files`; nothing is written until files.commit().
+void stageImages(const std::vector<std::string>& paths, const HdrImage& image, const tonemap::DisplayOptions& display,
+                 const std::string& description, OutputFiles& files);
 
 /// "out/cube.png" → "out/cube.snap03.png".
 std::string snapshotPath(const std::string& path, int index);
+
+/// How the display options expose the image, for messages: "auto", "auto +2 stops", "-40 stops".
+std::string describeExposure(const tonemap::DisplayOptions& display);
 
 }  // namespace rayrad::app

@@ -1,5 +1,8 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
 #include <app/image_output.h>
+#include <app/result_checks.h>
+#include <app/validate_runs.h>
+#include <app/version.h>
 #include <app/pipeline.h>
 #include <app/problem_size.h>
 #include <app/validate_cube.h>
@@ -8,6 +11,7 @@
 #include <app/sensor_table.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
+#include <core/result_error.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
 #include <radiosity/mesher.h>
@@ -20,7 +24,9 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
+#include <csignal>
 #include <cstdio>
+#include <limits>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -29,7 +35,14 @@ using namespace rayrad;
 
 namespace {
 
+// Exit codes (docs/cli.md): 0 done, 1 internal error, 2 bad input (scene, options),
+// 3 an output cannot be written, 4 the result is not usable (non-finite, all black).
+constexpr int kExitInternalError = 1;
 constexpr int kExitInputError = 2;
+constexpr int kExitOutputError = 3;
+constexpr int kExitResultError = 4;
+constexpr double kMaxExposureStops = 64;
+constexpr int kMaxThreads = 4096;
 
 struct CommonArgs {
     std::string scene;
@@ -41,7 +54,7 @@ struct CommonArgs {
 void addCommon(CLI::App* cmd, CommonArgs& a) {
     cmd->add_option("scene", a.scene, "Scene file (JSON, see docs/scene-format.md)")->required();
     cmd->add_option("--set", a.sets, "Override a scene value, e.g. --set radiosity.max_edge=0.25 (repeatable)");
-    cmd->add_option("--threads", a.threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--threads", a.threads, "Worker threads (default 0: all cores)")->check(CLI::Range(0, kMaxThreads));
     cmd->add_flag("-q,--quiet", a.quiet, "No progress line");
 }
 
@@ -51,21 +64,29 @@ std::vector<scene::Override> overridesOf(const CommonArgs& a) {
     return out;
 }
 
-void writeText(const std::string& path, const std::string& text) {
-    writeAtomically(path, [&](const std::string& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) throw InputError(placeMessage(path, "", "cannot write"));
-    });
+/// The files a run reads (the scene, its mesh files), so that no output can be one of them.
+OutputFiles filesOf(const scene::SceneDesc& desc) {
+    OutputFiles files;
+    files.addInput(desc.file);
+    for (const auto& o : desc.objects)
+        if (!o.resolvedFile.empty()) files.addInput(o.resolvedFile);
+    return files;
 }
 
-void printSensors(const app::PipelineRun& run, const std::string& csvPath) {
+void addOutputs(OutputFiles& files, const std::vector<std::string>& paths) {
+    for (const auto& path : paths)
+        if (!path.empty()) files.add(path);
+}
+
+void stageSensors(const app::PipelineRun& run, const std::string& csvPath, OutputFiles& files) {
+    app::checkSensorResults(run.sensors);
     if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors);
-    if (!csvPath.empty()) {
-        writeText(csvPath, app::sensorCsv(run.sensors));
-        fmt::print(stderr, "wrote {}\n", csvPath);
-    }
+    if (!csvPath.empty()) files.set(csvPath, app::sensorCsv(run.sensors));
+}
+
+void reportWritten(const std::vector<std::string>& paths) {
+    for (const auto& path : paths)
+        if (!path.empty()) fmt::print(stderr, "wrote {}\n", path);
 }
 
 void printSolveSummary(const app::PipelineRun& run) {
@@ -116,49 +137,55 @@ struct ReportArgs {
     std::string report;       ///< --report FILE.json
 };
 
-void writeReports(const app::PipelineRun& run, const std::string& scene, const ReportArgs& r) {
-    if (!r.convergence.empty()) {
-        writeText(r.convergence, app::convergenceCsv(run));
-        fmt::print(stderr, "wrote {}\n", r.convergence);
-    }
-    if (!r.report.empty()) {
-        writeText(r.report, app::runReportJson(run, scene));
-        fmt::print(stderr, "wrote {}\n", r.report);
-    }
+void stageReports(const app::PipelineRun& run, const std::string& scene, const ReportArgs& r, OutputFiles& files) {
+    if (!r.convergence.empty()) files.set(r.convergence, app::convergenceCsv(run));
+    if (!r.report.empty()) files.set(r.report, app::runReportJson(run, scene));
 }
 
 int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& reports) {
-    for (const auto& path : {csv, reports.convergence, reports.report})
-        if (!path.empty()) checkWritable(path);
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
     o.quiet = a.quiet;
     o.logConvergence = !reports.convergence.empty();
+    // Read and check the scene, then every output, before any work.
+    OutputFiles files = filesOf(scene::loadScene(a.scene, o.overrides));
+    const std::vector<std::string> outputs{csv, reports.convergence, reports.report};
+    addOutputs(files, outputs);
     auto run = app::runPipeline(a.scene, o);
-    printSensors(run, csv);
-    writeReports(run, a.scene, reports);
+    stageSensors(run, csv, files);
+    stageReports(run, a.scene, reports, files);
+    files.commit();
+    reportWritten(outputs);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
 }
 
-int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, const std::string& csv,
-              std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
-              const tonemap::DisplayOptions& displayIn, int snapshots, const ReportArgs& reports) {
-    app::checkImageOutputs(outputs);
-    for (const auto& path : {csv, reports.convergence, reports.report})
-        if (!path.empty()) checkWritable(path);
-    tonemap::DisplayOptions display = displayIn;
-    if (exposure != "auto") {
-        try {
-            size_t used = 0;
-            display.exposureStops = std::stod(exposure, &used);
-            if (used != exposure.size()) throw std::invalid_argument("trailing");
-        } catch (const std::exception&) {
-            throw InputError(placeMessage("", "--exposure", "expected \"auto\" or a number of stops, got \"" + exposure + "\""));
-        }
-        display.autoExposure = false;
+/// --exposure: "auto" or a finite number of stops within ±64 (2^64 ≈ 1.8e19 per cd/m²).
+tonemap::DisplayOptions parseExposure(const std::string& exposure, tonemap::DisplayOptions display) {
+    if (exposure == "auto") return display;
+    double stops = 0;
+    try {
+        size_t used = 0;
+        stops = std::stod(exposure, &used);
+        if (used != exposure.size()) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+        throw InputError(placeMessage("", "--exposure", "expected \"auto\" or a number of stops, got \"" + exposure + "\""));
     }
+    if (!(std::abs(stops) <= kMaxExposureStops))
+        throw InputError(placeMessage("", "--exposure", fmt::format("expected stops between -{0} and {0}, got {1}: "
+                                                                    "that would make every pixel black or white",
+                                                                    kMaxExposureStops, exposure)));
+    display.exposureStops = stops;
+    display.autoExposure = false;
+    return display;
+}
+
+int runRender(const CommonArgs& a, const std::vector<std::string>& images, const std::string& csv,
+              std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
+              const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const ReportArgs& reports) {
+    const tonemap::DisplayOptions display = parseExposure(exposure, displayIn);
+    tonemap::checkDisplayOptions(display);
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
     if (spp) o.overrides.push_back({"render.spp", std::to_string(*spp)});
@@ -167,20 +194,28 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& outputs, cons
     o.wantImage = true;
     o.logConvergence = !reports.convergence.empty();
     o.snapshots = snapshots;
-    o.snapshotOutputs = outputs;
+    o.snapshotOutputs = images;
     o.display = display;
-    {
-        // Fail before the solve if there is nothing to look through.
-        auto desc = scene::loadScene(a.scene, o.overrides);
-        if (!desc.camera) throw InputError(placeMessage(a.scene, "/camera", "rendering needs a camera"));
-    }
+    // Read and check the scene, then every output, before any work.
+    const auto desc = scene::loadScene(a.scene, o.overrides);
+    if (!desc.camera) throw InputError(placeMessage(a.scene, "/camera", "rendering needs a camera"));
+    OutputFiles files = filesOf(desc);
+    app::addImageOutputs(images, files);
+    for (int k = 1; k <= snapshots; ++k)
+        for (const auto& path : images) files.add(app::snapshotPath(path, k));
+    const std::vector<std::string> others{csv, reports.convergence, reports.report};
+    addOutputs(files, others);
+    o.files = &files;
     auto run = app::runPipeline(a.scene, o);
     run.report.begin("tone map + write");
-    app::writeImages(outputs, *run.image, display, "rayrad rendering of " + a.scene);
-    for (const auto& path : outputs) fmt::print(stderr, "wrote {}\n", path);
+    app::checkRenderedImage(*run.image, allowBlack);
+    app::stageImages(images, *run.image, display, "rayrad rendering of " + a.scene, files);
+    stageSensors(run, csv, files);
+    stageReports(run, a.scene, reports, files);
+    files.commit();
     run.report.end();
-    printSensors(run, csv);
-    writeReports(run, a.scene, reports);
+    reportWritten(images);
+    reportWritten(others);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
@@ -250,9 +285,15 @@ int runInfo(const CommonArgs& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A file size limit (ulimit -f) then fails a write with EFBIG, which is reported,
+    // instead of killing the process half-way through a file.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App cli{"rayrad — physically based lighting simulation: progressive hierarchical radiosity for the\n"
                  "indirect light, a Whitted-style ray tracer for images, illuminance at sensors.\n"
-                 "Units: metres, cd, lx, cd/m². Exit codes: 0 ok, 2 bad input, 1 internal error."};
+                 "Units: metres, cd, lx, cd/m². Exit codes: 0 done, 1 internal error, 2 bad input (scene, options),\n"
+                 "3 an output cannot be written (nothing is left half-written), 4 the result is not usable\n"
+                 "(non-finite, all black; nothing written)."};
+    cli.set_version_flag("--version", app::versionText(), "Print the version of rayrad and of its libraries");
     cli.require_subcommand(1);
 
     CommonArgs renderArgs, solveArgs, infoArgs;
@@ -275,7 +316,7 @@ int main(int argc, char** argv) {
     render->add_option("-o,--output", outputs, "Output image(s): .exr (linear cd/m²), .png or .jpg (display)")->required();
     render->add_option("--sensors", renderCsv, "Also write the sensor table as CSV");
     render->add_option("--spp", spp, "Samples per pixel (default: render.spp, 4)")->check(CLI::Range(1, 65536));
-    render->add_option("--seed", seed, "Random seed; the same seed gives the same image (default 1)")->check(CLI::NonNegativeNumber);
+    render->add_option("--seed", seed, "Random seed; the same seed gives the same image (default 1)")->check(CLI::Range(0, std::numeric_limits<int>::max()));
     render->add_option("--exposure", exposure, "\"auto\" (log-average luminance → 0.18) or stops: 2^stops per cd/m²")->default_str("auto");
     render->add_option("--ocio-config", display.ocioConfig, "OpenColorIO config file (default: rayrad's embedded sRGB config)");
     render->add_option("--display", display.display, "OCIO display (default: the config's default)");
@@ -283,6 +324,9 @@ int main(int argc, char** argv) {
     render->add_option("--snapshots", snapshots,
                        "Also render K images during the solve (NAME.snap01.EXT ...), evenly spaced in log unshot energy")
         ->check(CLI::Range(0, 100));
+    bool allowBlack = false;
+    render->add_flag("--allow-black", allowBlack,
+                     "Write the image even when every pixel is black (otherwise that is an error, exit 4)");
     addReports(render, renderReports);
 
     auto* solve = cli.add_subcommand("solve", "Solve the lighting and report illuminance at the sensors (no image)");
@@ -294,28 +338,34 @@ int main(int argc, char** argv) {
     addCommon(info, infoArgs);
 
     app::ValidateOptions validateOptions;
+    validateOptions.scene = app::bundledPath(validateOptions.scene);
     auto* validate = cli.add_subcommand("validate", "Reproduce a validation from the paper on this machine");
     auto* validateCube = validate->add_subcommand(
         "cube", "The empty cube: mesh sweep and cluster sweep (paper Tables 2-3), ablations, error-vs-time plots");
     app::ValidateSphereOptions sphereOptions;
+    sphereOptions.sceneDir = app::bundledPath(sphereOptions.sceneDir);
     auto* validateSphere = validate->add_subcommand(
         "sphere", "The sphere with mirrors: SPH2 and SPH4, 768 and 12 288 triangles, clusters on and off (paper Table 4)");
     validateSphere->add_flag("--quick", sphereOptions.quick, "The 768-triangle sphere only (seconds)");
     validateSphere->add_option("--scenes", sphereOptions.sceneDir, "Directory with sph2.json and sph4.json")
         ->default_str(sphereOptions.sceneDir);
     validateSphere->add_option("--out", sphereOptions.outDir, "Output directory")->default_str(sphereOptions.outDir);
-    validateSphere->add_option("--threads", sphereOptions.threads, "Worker threads per run (default: all cores)");
+    validateSphere->add_option("--threads", sphereOptions.threads, "Worker threads per run (default: all cores)")
+        ->check(CLI::Range(0, kMaxThreads));
     validate->require_subcommand(1);
     validateCube->add_flag("--quick", validateOptions.quick, "A subset at 1 200 and 4 800 triangles (about a minute)");
     validateCube->add_option("--scene", validateOptions.scene, "The cube scene")->default_str(validateOptions.scene);
     validateCube->add_option("--out", validateOptions.outDir, "Output directory")->default_str(validateOptions.outDir);
-    validateCube->add_option("--threads", validateOptions.threads, "Worker threads per run (default: all cores)");
+    validateCube->add_option("--threads", validateOptions.threads, "Worker threads per run (default: all cores)")
+        ->check(CLI::Range(0, kMaxThreads));
 
     try {
         cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        int code = cli.exit(e);
-        return code == 0 ? 0 : kExitInputError;
+        if (e.get_exit_code() == 0) return cli.exit(e);  // --help, --version
+        // One line, as for every other error.
+        std::cerr << "rayrad: " << e.what() << " (--help lists the options)\n";
+        return kExitInputError;
     }
 
     try {
@@ -326,14 +376,24 @@ int main(int argc, char** argv) {
         if (common.threads > 0)
             threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common.threads);
         if (render->parsed())
-            return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, renderReports);
+            return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, allowBlack,
+                             renderReports);
         if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports);
         return runInfo(infoArgs);
     } catch (const InputError& e) {
         std::cerr << "rayrad: " << e.what() << "\n";
         return kExitInputError;
+    } catch (const OutputError& e) {
+        std::cerr << "rayrad: " << e.what() << "\n";
+        return kExitOutputError;
+    } catch (const ResultError& e) {
+        std::cerr << "rayrad: " << e.what() << "\n";
+        return kExitResultError;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "rayrad: out of memory (run `rayrad info` for the expected peak memory)\n";
+        return kExitInternalError;
     } catch (const std::exception& e) {
         std::cerr << "rayrad: internal error: " << e.what() << "\n";
-        return 1;
+        return kExitInternalError;
     }
 }

@@ -99,8 +99,10 @@ class PushPullObserver {
                                           m_run.scene.render);
         std::vector<std::string> paths;
         for (const auto& p : m_options.snapshotOutputs) paths.push_back(snapshotPath(p, m_nextSnapshot));
-        writeImages(paths, image, m_options.display,
-                    fmt::format("rayrad snapshot {} after {} shots, {:.3g} s", m_nextSnapshot, copy.shots, copy.seconds));
+        stageImages(paths, image, m_options.display,
+                    fmt::format("rayrad snapshot {} after {} shots, {:.3g} s", m_nextSnapshot, copy.shots, copy.seconds),
+                    *m_options.files);
+        m_options.files->commit();
         for (const auto& p : paths) fmt::print(stderr, "wrote {}\n", p);
         ++m_nextSnapshot;
     }

@@ -3,6 +3,7 @@
 
 #include <app/sensor_table.h>
 #include <core/hdr_image.h>
+#include <core/output_file.h>
 #include <core/stage_report.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
@@ -32,6 +33,8 @@ struct PipelineOptions {
     /// next to each of `snapshotOutputs` as NAME.snapKK.EXT.
     int snapshots = 0;
     std::vector<std::string> snapshotOutputs;
+    /// Where the snapshots go: their paths (snapshotPath) were added to it before the run.
+    OutputFiles* files = nullptr;
     tonemap::DisplayOptions display;
 };
 

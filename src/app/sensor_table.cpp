@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include <optional>
 
 namespace rayrad::app {
@@ -18,6 +20,10 @@ std::optional<double> errorPct(double value, const std::optional<double>& ref) {
     if (!ref || *ref == 0) return std::nullopt;
     return 100.0 * (value - *ref) / *ref;
 }
+
+/// A table cell in lx: two decimals, or 4 significant digits in exponent form when that
+/// would not fit the column (beyond 10⁸ lx).
+std::string lux(double v) { return std::abs(v) < 1e8 ? fmt::format("{:.2f}", v) : fmt::format("{:.4g}", v); }
 
 std::string cell(const std::optional<double>& v, const char* format = "{:.9g}") {
     return v ? fmt::format(fmt::runtime(format), *v) : std::string();
@@ -79,8 +85,8 @@ std::string sensorTable(const std::vector<SensorResult>& results) {
     s += "\n";
     for (const auto& r : results) {
         Row row = rowOf(r);
-        s += fmt::format("{:<14} {:>11.2f} {:>11.2f} {:>11.2f} {:>14}", r.sensor.name, row.direct, row.indirect,
-                         row.total, row.vertex ? fmt::format("{:.2f}", *row.vertex) : std::string("-"));
+        s += fmt::format("{:<14} {:>11} {:>11} {:>11} {:>14}", r.sensor.name, lux(row.direct), lux(row.indirect),
+                         lux(row.total), row.vertex ? lux(*row.vertex) : std::string("-"));
         if (refs)
             s += fmt::format("  {:>9} {:>9} {:>9} {:>9}", pct(errorPct(row.direct, r.sensor.refDirect)),
                              pct(errorPct(row.indirect, r.sensor.refIndirect)),

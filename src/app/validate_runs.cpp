@@ -1,5 +1,7 @@
 #include <app/validate_runs.h>
 
+#include <filesystem>
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -24,6 +26,16 @@ int runChild(const std::vector<std::string>& args, const std::string& logPath) {
     int status = 0;
     waitpid(pid, &status, 0);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string bundledPath(const std::string& relative) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+    const fs::path candidates[] = {relative, exeDir / "../share/rayrad" / relative, fs::path(RAYRAD_SOURCE_DIR) / relative};
+    for (const auto& c : candidates)
+        if (fs::exists(c, ec)) return c.lexically_normal().string();
+    return relative;
 }
 
 }  // namespace rayrad::app

@@ -96,7 +96,7 @@ int validateSphere(const ValidateSphereOptions& o) {
         csv += "\n";
     }
     fmt::print("\n### Sphere with mirrors (paper Table 4)\n\n{}", table);
-    writeAtomically(csvPath, [&](const std::string& tmp) { std::ofstream(tmp) << csv; });
+    writeFileAtomically(csvPath, csv);
     fmt::print("\nwrote {} and one report and log per run\n", csvPath);
     return 0;
 }

@@ -1,18 +1,60 @@
-// Writing outputs safely: check early that a path is writable, write to a temporary
-// file beside it and rename at the end, so a failure never leaves a half-written file.
+// Writing outputs safely. Every output path is checked before any work; at the end all
+// of a run's outputs are written together, each to a temporary file beside its target,
+// every write checked and fsynced, then renamed over the target. A failure removes the
+// temporary files and leaves every existing file as it was.
 #pragma once
 
-#include <functional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rayrad {
 
-/// Throws InputError when `path` cannot be written (missing or read-only directory,
-/// read-only existing file). Call it before long work so the user learns at once.
-void checkWritable(const std::string& path);
+/// An output that cannot be written (bad path, full disk, I/O error): exit code 3. The
+/// message names the file and the reason.
+class OutputError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
 
-/// Calls `write(tmpPath)` to write a temporary file in the same directory, then renames
-/// it to `path`. If `write` throws, the temporary file is removed and `path` is untouched.
-void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
+/// The files one run writes.
+class OutputFiles {
+  public:
+    /// Inputs of the run (scene file, mesh files): no output may be one of them.
+    void addInput(const std::string& path);
+
+    /// Checks `path` as an output of this run, now, before any work; throws OutputError
+    /// when it cannot be written: its directory is missing or not writable, it is a
+    /// directory, a device or another non-regular file, it is read-only, its name is
+    /// longer than the file system allows, or it is an input or another output of the
+    /// run. A symbolic link is followed: its target is what gets replaced.
+    void add(const std::string& path);
+
+    /// Gives the bytes of an output added before (written at the next commit()).
+    void set(const std::string& path, std::string bytes);
+
+    /// Writes every output given since the last commit: all temporary files first, then
+    /// the renames. Throws OutputError naming the file; no temporary file is left.
+    void commit();
+
+  private:
+    struct Output {
+        std::string path;    ///< as the user gave it (for messages)
+        std::string target;  ///< the file to replace: symlinks resolved
+        std::string bytes;
+        bool pending = false;
+    };
+    Output& find(const std::string& path);
+
+    std::vector<std::string> m_inputs;  ///< resolved paths
+    std::vector<Output> m_outputs;
+};
+
+/// One output, checked and written as above.
+void writeFileAtomically(const std::string& path, const std::string& bytes);
+
+/// Throws OutputError if `path` cannot be an output (the checks of OutputFiles::add
+/// that need no other file).
+void checkWritable(const std::string& path);
 
 }  // namespace rayrad

@@ -246,4 +246,6 @@ std::unique_ptr<EmbreeScene> buildEmbreeScene(const scene::Scene& scene, const r
     return std::make_unique<EmbreeScene>(mesh, 1e-5 * scene.diagonal(), specularTriangles(scene));
 }
 
+std::string embreeVersion() { return "Embree " RTC_VERSION_STRING; }
+
 }  // namespace rayrad::raytrace

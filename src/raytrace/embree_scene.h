@@ -2,6 +2,8 @@
 #pragma once
 
 #include <core/visibility.h>
+
+#include <string>
 #include <radiosity/patch_mesh.h>
 #include <scene/scene.h>
 
@@ -68,5 +70,8 @@ class EmbreeScene : public Visibility {
 /// The scene's patches and specular triangles, with the visibility epsilon at 1e-5 of
 /// the scene diagonal (results do not depend on the scene's scale).
 std::unique_ptr<EmbreeScene> buildEmbreeScene(const scene::Scene& scene, const radiosity::PatchMesh& mesh);
+
+/// "Embree 3.13.5": the version this build uses.
+std::string embreeVersion();
 
 }  // namespace rayrad::raytrace

@@ -76,10 +76,30 @@ OCIO::ConstConfigRcPtr loadConfig(const DisplayOptions& o) {
     }
 }
 
+/// `"a", "b" or "c"`.
+std::string quotedList(const std::vector<std::string>& names) {
+    std::string out;
+    for (size_t i = 0; i < names.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("\"" + names[i] + "\"");
+    return out.empty() ? "none" : out;
+}
+
 OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
     auto config = loadConfig(o);
+    const std::string configName = o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig;
     std::string display = o.display.empty() ? config->getDefaultDisplay() : o.display;
+    std::vector<std::string> displays;
+    for (int i = 0; i < config->getNumDisplays(); ++i) displays.push_back(config->getDisplay(i));
+    if (std::find(displays.begin(), displays.end(), display) == displays.end())
+        throw InputError(placeMessage(configName, "--display",
+                                      "unknown display \"" + display + "\" (the config has " + quotedList(displays) + ")"));
     std::string view = o.view.empty() ? config->getDefaultView(display.c_str()) : o.view;
+    std::vector<std::string> views;
+    for (int i = 0; i < config->getNumViews(display.c_str()); ++i) views.push_back(config->getView(display.c_str(), i));
+    if (std::find(views.begin(), views.end(), view) == views.end())
+        throw InputError(placeMessage(configName, "--view",
+                                      "unknown view \"" + view + "\" for display \"" + display + "\" (it has " +
+                                          quotedList(views) + ")"));
     try {
         auto processor = config->getProcessor(OCIO::ROLE_SCENE_LINEAR, display.c_str(), view.c_str(),
                                               OCIO::TRANSFORM_DIR_FORWARD);
@@ -91,6 +111,8 @@ OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
 }
 
 }  // namespace
+
+void checkDisplayOptions(const DisplayOptions& options) { makeProcessor(options); }
 
 double exposureScale(const HdrImage& image, const DisplayOptions& o) {
     double stops = std::pow(2.0, o.exposureStops);

@@ -19,6 +19,10 @@ struct DisplayOptions {
     std::string view;           ///< empty = the display's default view
 };
 
+/// Throws InputError for a config that does not load, or a display or view it does not
+/// have (the message lists the ones it has). Call it before long work.
+void checkDisplayOptions(const DisplayOptions& options);
+
 /// The multiplier applied to cd/m² before the display transform.
 double exposureScale(const HdrImage& image, const DisplayOptions& options);
 

@@ -3,7 +3,11 @@
 #include <core/input_error.h>
 #include <core/output_file.h>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenColorIO/OpenColorIO.h>
+
+namespace OCIO = OCIO_NAMESPACE;
 
 #include <algorithm>
 #include <cctype>
@@ -19,15 +23,18 @@ std::string extensionOf(const std::string& path) {
     return e;
 }
 
-void writePixels(const std::string& finalPath, const std::string& tmpPath, const OIIO::ImageSpec& spec,
-                 OIIO::TypeDesc format, const void* data) {
-    auto out = OIIO::ImageOutput::create(tmpPath);
-    if (!out) throw InputError(placeMessage(finalPath, "", "cannot write: " + OIIO::geterror()));
+/// Encodes an image into memory through an OIIO IOProxy, the format by `path`'s extension.
+std::string encode(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc format, const void* data) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw OutputError(placeMessage(path, "", "cannot write: " + OIIO::geterror()));
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
     // OIIO's convention: bool results, then has_error()/geterror() (which clears it).
-    if (!out->open(tmpPath, spec) || !out->write_image(format, data) || !out->close()) {
+    if (!out->set_ioproxy(&memory) || !out->open(path, spec) || !out->write_image(format, data) || !out->close()) {
         std::string why = out->has_error() ? out->geterror() : "unknown OpenImageIO error";
-        throw InputError(placeMessage(finalPath, "", "cannot write: " + why));
+        throw OutputError(placeMessage(path, "", "cannot encode the image: " + why));
     }
+    return std::string(bytes.begin(), bytes.end());
 }
 
 }  // namespace
@@ -37,10 +44,10 @@ bool isHdrFormat(const std::string& path) { return extensionOf(path) == ".exr"; 
 void checkImageFormat(const std::string& path) {
     std::string e = extensionOf(path);
     if (e != ".exr" && e != ".png" && e != ".jpg" && e != ".jpeg")
-        throw InputError(placeMessage(path, "", "unknown image format '" + e + "' (use .exr, .png or .jpg)"));
+        throw OutputError(placeMessage(path, "", "unknown image format '" + e + "' (use .exr, .png or .jpg)"));
 }
 
-void writeExr(const std::string& path, const HdrImage& image, const std::string& description) {
+std::string encodeExr(const std::string& path, const HdrImage& image, const std::string& description) {
     std::vector<float> buf(image.pixels.size() * 3);
     for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(image.pixels[i][c]);
@@ -55,15 +62,23 @@ void writeExr(const std::string& path, const HdrImage& image, const std::string&
     // No DateTime (OIIO would stamp the wall clock): the same scene, seed and options
     // give a bit-identical file. The file's own time says when it was written.
     spec.attribute("DateTime", "");
-    writeAtomically(path, [&](const std::string& tmp) { writePixels(path, tmp, spec, OIIO::TypeDesc::FLOAT, buf.data()); });
+    return encode(path, spec, OIIO::TypeDesc::FLOAT, buf.data());
 }
 
-void writeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8) {
+std::string encodeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8) {
     OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("Software", "rayrad");
     spec.attribute("DateTime", "");  // bit-identical files, as for EXR
-    writeAtomically(path, [&](const std::string& tmp) { writePixels(path, tmp, spec, OIIO::TypeDesc::UINT8, rgb8.data()); });
+    return encode(path, spec, OIIO::TypeDesc::UINT8, rgb8.data());
+}
+
+void writeExr(const std::string& path, const HdrImage& image, const std::string& description) {
+    writeFileAtomically(path, encodeExr(path, image, description));
+}
+
+void writeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8) {
+    writeFileAtomically(path, encodeDisplayImage(path, width, height, rgb8));
 }
 
 HdrImage readImage(const std::string& path) {
@@ -77,6 +92,12 @@ HdrImage readImage(const std::string& path) {
     for (size_t i = 0; i < img.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) img.pixels[i][c] = buf[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
     return img;
+}
+
+std::string libraryVersions() {
+    const int v = OIIO::openimageio_version();  // 10000 major + 100 minor + patch
+    return "OpenImageIO " + std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." +
+           std::to_string(v % 100) + ", OpenColorIO " + OCIO::GetVersion();
 }
 
 }  // namespace rayrad::tonemap

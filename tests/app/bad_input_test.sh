@@ -1,36 +1,11 @@
 #!/usr/bin/env bash
-# Bad input through the real command line: exit code 2, exactly one line on stderr that
-# names the file and the place, and no output file created or damaged.
+# Bad input through the real command line: exit code 2 (3 for outputs), exactly one line
+# on stderr that names the file and the place, and no output file created or damaged.
+# Outputs and results have their own catalogue: output_safety_test.sh.
 set -u
 rayrad="$1"
 src="$2"
 source "$(dirname "$0")/test_lib.sh"
-
-# expect NAME EXPECTED_SUBSTRING -- ARGS...
-expect() {
-    local name="$1" want="$2"
-    shift 3
-    local err rc
-    err=$("$rayrad" "$@" 2>&1 >/dev/null)
-    rc=$?
-    local lines
-    lines=$(printf '%s\n' "$err" | grep -c .)
-    if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] || [[ "$err" != *"$want"* ]]; then
-        echo "FAIL $name: exit $rc, $lines line(s): $err (wanted: $want)"
-        failures=$((failures + 1))
-    else
-        passed=$((passed + 1))
-    fi
-    # No partial or temporary output may be left.
-    if ls "$work"/out* "$work"/.out* >/dev/null 2>&1; then
-        echo "FAIL $name: left output: $(ls -a "$work" | tr '\n' ' ')"
-        failures=$((failures + 1))
-    fi
-}
-
-scene() {  # scene NAME JSON: writes $work/NAME.json
-    printf '%s\n' "$2" > "$work/$1.json"
-}
 
 good_materials='"materials": {"white": {"type": "diffuse", "reflectance": 0.5}}'
 good_box='"objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "facing": "inward", "material": "white"}]'
@@ -38,46 +13,46 @@ good_light='"lights": [{"type": "point", "position": [0.5,0.5,0.5], "intensity_c
 good_camera='"camera": {"position": [0.5,0.5,0.1], "look_at": [0.5,0.5,1], "resolution": [8,8]}'
 
 scene malformed '{ "materials": { "white": { "reflectance": 0.5, } } }'
-expect "malformed JSON" "$work/malformed.json: line 1, column" -- solve "$work/malformed.json"
+expect 2 "malformed JSON" "$work/malformed.json: line 1, column" -- solve "$work/malformed.json"
 
 scene unknown_material "{$good_materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,1,1], \"material\": \"whte\"}], $good_light}"
-expect "unknown material" "unknown_material.json: /objects/0/material: unknown material \"whte\" (did you mean \"white\"?)" -- solve "$work/unknown_material.json"
+expect 2 "unknown material" "unknown_material.json: /objects/0/material: unknown material \"whte\" (did you mean \"white\"?)" -- solve "$work/unknown_material.json"
 
 scene negative "{$good_materials, $good_box, \"lights\": [{\"type\": \"point\", \"position\": [0.5,0.5,0.5], \"intensity_cd\": -5}]}"
-expect "negative intensity" "negative.json: /lights/0/intensity_cd: expected a positive number, got -5" -- solve "$work/negative.json"
+expect 2 "negative intensity" "negative.json: /lights/0/intensity_cd: expected a positive number, got -5" -- solve "$work/negative.json"
 
 scene reflectance "{\"materials\": {\"white\": {\"reflectance\": 1.0}}, $good_box, $good_light}"
-expect "reflectance >= 1" "reflectance.json: /materials/white/reflectance: expected values in [0, 1)" -- solve "$work/reflectance.json"
+expect 2 "reflectance >= 1" "reflectance.json: /materials/white/reflectance: expected values in [0, 1)" -- solve "$work/reflectance.json"
 
 scene mesh "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"missing.obj\", \"material\": \"white\"}], $good_light}"
-expect "missing mesh" "mesh.json: /objects/0/file: mesh file" -- solve "$work/mesh.json"
+expect 2 "missing mesh" "mesh.json: /objects/0/file: mesh file" -- solve "$work/mesh.json"
 
 mirror_materials='"materials": {"white": {"reflectance": 0.5}, "m": {"type": "mirror", "specular_reflectance": 0.9}}'
 scene curved_mirror "{$mirror_materials, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\"}], $good_light}"
-expect "curved mirror" "curved_mirror.json: /objects/0/material: a mirror must be a quad, polygon or box" -- solve "$work/curved_mirror.json"
+expect 2 "curved mirror" "curved_mirror.json: /objects/0/material: a mirror must be a quad, polygon or box" -- solve "$work/curved_mirror.json"
 scene mirror_type "{\"materials\": {\"white\": {\"type\": \"mirorr\"}}, $good_box, $good_light}"
-expect "material type typo" "mirror_type.json: /materials/white/type: unknown material type \"mirorr\" (did you mean \"mirror\"?)" -- solve "$work/mirror_type.json"
+expect 2 "material type typo" "mirror_type.json: /materials/white/type: unknown material type \"mirorr\" (did you mean \"mirror\"?)" -- solve "$work/mirror_type.json"
 scene mirror_ks "{\"materials\": {\"white\": {\"reflectance\": 0.5}, \"m\": {\"type\": \"mirror\", \"specular_reflectance\": 1.5}}, $good_box, $good_light}"
-expect "mirror Ks > 1" "mirror_ks.json: /materials/m/specular_reflectance: expected values in [0, 1]" -- solve "$work/mirror_ks.json"
+expect 2 "mirror Ks > 1" "mirror_ks.json: /materials/m/specular_reflectance: expected values in [0, 1]" -- solve "$work/mirror_ks.json"
 
-expect "missing scene" "$work/nothere.json: no such file" -- solve "$work/nothere.json"
+expect 2 "missing scene" "$work/nothere.json: no such file" -- solve "$work/nothere.json"
 
 scene good "{$good_materials, $good_box, $good_light, $good_camera}"
-expect "unwritable output" "$work/no/such/dir/out.png: cannot write: directory" -- render "$work/good.json" -o "$work/no/such/dir/out.png"
-expect "unknown image format" "$work/out.bmp: unknown image format" -- render "$work/good.json" -o "$work/out.bmp"
-expect "unwritable csv" "$work/nodir/out.csv: cannot write" -- solve "$work/good.json" --sensors "$work/nodir/out.csv"
-expect "bad --set" "/radiosity/max_egde: unknown key (did you mean \"max_edge\"?)" -- solve "$work/good.json" --set radiosity.max_egde=1
-expect "--set with slashes" "--set radiosity/max_edge=1: keys are separated by dots: did you mean radiosity.max_edge=1?" -- solve "$work/good.json" --set radiosity/max_edge=1
-expect "bad --exposure" "--exposure: expected \"auto\" or a number" -- render "$work/good.json" -o "$work/out.png" --exposure bright
+expect 3 "unwritable output" "$work/no/such/dir/out.png: cannot write: directory" -- render "$work/good.json" -o "$work/no/such/dir/out.png"
+expect 3 "unknown image format" "$work/out.bmp: unknown image format" -- render "$work/good.json" -o "$work/out.bmp"
+expect 3 "unwritable csv" "$work/nodir/out.csv: cannot write" -- solve "$work/good.json" --sensors "$work/nodir/out.csv"
+expect 2 "bad --set" "/radiosity/max_egde: unknown key (did you mean \"max_edge\"?)" -- solve "$work/good.json" --set radiosity.max_egde=1
+expect 2 "--set with slashes" "--set radiosity/max_edge=1: keys are separated by dots: did you mean radiosity.max_edge=1?" -- solve "$work/good.json" --set radiosity/max_edge=1
+expect 2 "bad --exposure" "--exposure: expected \"auto\" or a number" -- render "$work/good.json" -o "$work/out.png" --exposure bright
 scene nocamera "{$good_materials, $good_box, $good_light}"
-expect "render without camera" "nocamera.json: /camera: rendering needs a camera" -- render "$work/nocamera.json" -o "$work/out.png"
+expect 2 "render without camera" "nocamera.json: /camera: rendering needs a camera" -- render "$work/nocamera.json" -o "$work/out.png"
 
 # An existing output survives a failed run untouched.
 
 # The catalogue (issue 5): one line each naming the file (and the place), exit 2.
 cat_case() {  # cat_case NAME WANT JSON
     scene "$1" "$3"
-    expect "$1" "$1.json: $2" -- solve "$work/$1.json"
+    expect 2 "$1" "$1.json: $2" -- solve "$work/$1.json"
 }
 cat_case empty_file "" ''
 cat_case not_object "" '[1, 2, 3]'
@@ -126,21 +101,21 @@ printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty floa
 cat_case mesh_without_material "/objects/0/material" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"tri.ply\"}], $good_light}"
 printf 'ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\nxyz' > "$work/huge.ply"
 scene ply_huge_count "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"huge.ply\", \"material\": \"white\"}], $good_light}"
-expect "PLY claiming 4e9 vertices" "huge.ply': element 'vertex' claims 4000000000 records, more than the 3 bytes left" -- solve "$work/ply_huge_count.json"
+expect 2 "PLY claiming 4e9 vertices" "huge.ply': element 'vertex' claims 4000000000 records, more than the 3 bytes left" -- solve "$work/ply_huge_count.json"
 { printf 'ply\nformat binary_little_endian 1.0\n'; head -c 600 /dev/zero | tr '\0' '\377'; } > "$work/garbage.ply"
 scene ply_garbage "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"garbage.ply\", \"material\": \"white\"}], $good_light}"
-expect "PLY with garbage after its header" "ply_garbage.json: /objects/0/file: mesh '$work/garbage.ply': header line 3" -- solve "$work/ply_garbage.json"
+expect 2 "PLY with garbage after its header" "ply_garbage.json: /objects/0/file: mesh '$work/garbage.ply': header line 3" -- solve "$work/ply_garbage.json"
 mkdir -p "$work/adir.json"
-expect "scene is a directory" "adir.json" -- solve "$work/adir.json"
+expect 2 "scene is a directory" "adir.json" -- solve "$work/adir.json"
 
 # Absurd sizes (issue 12): an error naming the setting, before anything is allocated.
 scene tiny_edge "{$good_materials, $good_box, $good_light, \"radiosity\": {\"max_edge\": 1e-5}}"
 start=$(date +%s%N)
-expect "max_edge 1e-5" "tiny_edge.json: /radiosity/max_edge: premeshing to 1e-05 m edges would make about 1.2e+11 patches" -- solve "$work/tiny_edge.json"
+expect 2 "max_edge 1e-5" "tiny_edge.json: /radiosity/max_edge: premeshing to 1e-05 m edges would make about 1.2e+11 patches" -- solve "$work/tiny_edge.json"
 elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
 if [ "$elapsed_ms" -gt 5000 ]; then echo "FAIL max_edge 1e-5 took $elapsed_ms ms"; failures=$((failures + 1)); else passed=$((passed + 1)); fi
 scene tiny_voxel "{$good_materials, $good_box, $good_light, \"clusters\": {\"voxel_size\": 1e-12}}"
-expect "voxel_size 1e-12" "tiny_voxel.json: /clusters/voxel_size: a cluster voxel of 1e-12 m makes 1e+12 voxels" -- solve "$work/tiny_voxel.json"
+expect 2 "voxel_size 1e-12" "tiny_voxel.json: /clusters/voxel_size: a cluster voxel of 1e-12 m makes 1e+12 voxels" -- solve "$work/tiny_voxel.json"
 scene small_voxel "{$good_materials, $good_box, $good_light, \"clusters\": {\"voxel_size\": 1e-6}, \"radiosity\": {\"max_edge\": 0.25}}"
 if "$rayrad" info "$work/small_voxel.json" 2>&1 | grep -q "warning: /clusters/voxel_size: a cluster voxel of 1e-06 m is smaller than the patches"; then
     passed=$((passed + 1))

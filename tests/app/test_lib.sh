@@ -13,3 +13,30 @@ finish() {
     echo "$1: $passed passed, $failures failed"
     [ "$failures" -eq 0 ]
 }
+
+# expect CODE NAME EXPECTED_SUBSTRING -- ARGS...: runs $rayrad ARGS; passes when it exits
+# with CODE, writes exactly one line on stderr, containing the substring, and leaves no
+# file named out* or .out*, nor a temporary .rayrad-* file, in $work.
+expect() {
+    local code="$1" name="$2" want="$3"
+    shift 4
+    local err rc lines
+    err=$("$rayrad" "$@" 2>&1 >/dev/null)
+    rc=$?
+    lines=$(printf '%s\n' "$err" | grep -c .)
+    if [ "$rc" -ne "$code" ] || [ "$lines" -ne 1 ] || [[ "$err" != *"$want"* ]]; then
+        echo "FAIL $name: exit $rc (wanted $code), $lines line(s): $err (wanted: $want)"
+        failures=$((failures + 1))
+    else
+        passed=$((passed + 1))
+    fi
+    if ls "$work"/out* "$work"/.out* "$work"/.rayrad-* >/dev/null 2>&1; then
+        echo "FAIL $name: left output: $(ls -a "$work" | tr '\n' ' ')"
+        failures=$((failures + 1))
+        rm -f "$work"/out* "$work"/.out* "$work"/.rayrad-*
+    fi
+}
+
+scene() {  # scene NAME JSON: writes $work/NAME.json
+    printf '%s\n' "$2" > "$work/$1.json"
+}
