@@ -2,6 +2,8 @@
 
 #include <core/input_error.h>
 #include <core/input_file.h>
+#include <scene/gltf_reader.h>
+#include <scene/mesh_builder.h>
 #include <scene/ply_reader.h>
 #include <scene/polygon.h>
 
@@ -16,7 +18,6 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <tuple>
 
 namespace rayrad::scene {
 
@@ -53,44 +54,6 @@ ImportedMaterial readMaterial(const aiMaterial* m) {
 }
 
 Vec3 toVec3(const aiVector3D& v) { return Vec3(v.x, v.y, v.z); }
-
-/// Fills an ImportedMesh: one vertex per distinct position (so neighbouring triangles
-/// share corners whether or not the file did), polygons triangulated by ear clipping.
-class MeshBuilder {
-  public:
-    explicit MeshBuilder(ImportedMesh& out) : m_out(out) {}
-
-    uint32_t vertexAt(const Vec3& p) {
-        auto key = std::make_tuple(p.x, p.y, p.z);
-        auto it = m_vertexIndex.find(key);
-        if (it != m_vertexIndex.end()) return it->second;
-        auto id = static_cast<uint32_t>(m_out.positions.size());
-        m_out.positions.push_back(p);
-        m_vertexIndex.emplace(key, id);
-        return id;
-    }
-
-    /// A face of 3 or more vertex indices (into positions, checked by the caller).
-    void addFace(const std::vector<uint32_t>& face, int material) {
-        if (face.size() == 3) {
-            add(face[0], face[1], face[2], material);
-            return;
-        }
-        m_corners.clear();
-        for (uint32_t i : face) m_corners.push_back(m_out.positions[i]);
-        for (const auto& t : triangulate(m_corners)) add(face[t[0]], face[t[1]], face[t[2]], material);
-    }
-
-  private:
-    void add(uint32_t a, uint32_t b, uint32_t c, int material) {
-        m_out.triangles.push_back({a, b, c});
-        m_out.triangleMaterial.push_back(material);
-    }
-
-    ImportedMesh& m_out;
-    std::map<std::tuple<double, double, double>, uint32_t> m_vertexIndex;
-    std::vector<Vec3> m_corners;
-};
 
 /// Walks the node tree, appending every mesh a node references with the node's
 /// accumulated transform. Each mesh's data is checked before it is used.
@@ -206,6 +169,12 @@ ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, c
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "' is not a regular file"));
+    if (hasExtension(path, ".gltf") || hasExtension(path, ".glb")) {
+        ImportedMesh out = readGltf(path, prefix);
+        if (out.triangles.empty())
+            throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));
+        return out;
+    }
     if (hasExtension(path, ".ply")) {
         ImportedMesh out = importPly(path, prefix);
         if (out.triangles.empty())

@@ -105,6 +105,32 @@ expect 2 "PLY claiming 4e9 vertices" "huge.ply': element 'vertex' claims 4000000
 { printf 'ply\nformat binary_little_endian 1.0\n'; head -c 600 /dev/zero | tr '\0' '\377'; } > "$work/garbage.ply"
 scene ply_garbage "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"garbage.ply\", \"material\": \"white\"}], $good_light}"
 expect 2 "PLY with garbage after its header" "ply_garbage.json: /objects/0/file: mesh '$work/garbage.ply': header line 3" -- solve "$work/ply_garbage.json"
+# glTF, read by tinygltf and checked by rayrad (issue 13): the first input is the one that
+# made assimp read past its buffer under the fuzzer.
+mesh_case() {  # mesh_case NAME FILE WANT: a scene whose mesh is FILE (in $work)
+    scene "$1" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"$2\", \"material\": \"white\"}], $good_light}"
+    expect 2 "$1" "$1.json: /objects/0/file: mesh '$work/$2': $3" -- solve "$work/$1.json"
+}
+printf 'glT": {"versioindexarrayn"aaaaaaaaaaaaaaaaaaaaaaaaaaaaa{"aa' > "$work/notjson.gltf"
+mesh_case gltf_not_json notjson.gltf "not a valid glTF 2.0 file"
+tri_buffer='"buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}], "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}]'
+gltf() {  # gltf FILE ACCESSORS: a one-triangle glTF with the given accessors
+    printf '%s\n' "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"mesh\": 0}], \"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"indices\": 1}]}], $tri_buffer, \"accessors\": $2}" > "$work/$1"
+}
+gltf long.gltf '[{"bufferView": 0, "componentType": 5126, "count": 300, "type": "VEC3"}, {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]'
+mesh_case gltf_accessor_too_long long.gltf "mesh 0 POSITION (accessor 0): 300 elements reach past the end of its buffer view"
+gltf offset.gltf '[{"bufferView": 0, "byteOffset": 4000000000, "componentType": 5126, "count": 3, "type": "VEC3"}, {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]'
+mesh_case gltf_accessor_offset offset.gltf "mesh 0 POSITION (accessor 0): 3 elements reach past the end of its buffer view"
+gltf intpos.gltf '[{"bufferView": 0, "componentType": 5125, "count": 3, "type": "VEC3"}, {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]'
+mesh_case gltf_int_positions intpos.gltf "mesh 0: POSITION must be float"
+gltf noaccessor.gltf '[{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}]'
+mesh_case gltf_missing_accessor noaccessor.gltf "not a valid glTF 2.0 file: primitive indices accessor out of bounds"
+gltf badindex.gltf '[{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}, {"bufferView": 1, "componentType": 5126, "count": 1, "type": "SCALAR"}]'
+mesh_case gltf_float_indices badindex.gltf "mesh 0: indices must be unsigned integers"
+printf 'glTF\001\000\000\000\014\000\000\000' > "$work/v1.glb"
+mesh_case glb_version_1 v1.glb "not a valid glTF 2.0 file"
+printf '%s\n' '{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"children": [0]}]}' > "$work/cycle.gltf"
+mesh_case gltf_node_cycle cycle.gltf "the node hierarchy is deeper than 256 levels (a cycle?)"
 mkdir -p "$work/adir.json"
 expect 2 "scene is a directory" "adir.json" -- solve "$work/adir.json"
 
