@@ -312,7 +312,7 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) 
         if (r.sensor.refTotal) e["ref_total_lx"] = *r.sensor.refTotal;
         j["sensors"].push_back(e);
     }
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // names may come from --set or mesh files
 }
 
 }  // namespace rayrad::app

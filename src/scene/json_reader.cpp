@@ -16,13 +16,13 @@ std::string describe(const json& value) {
         case json::value_t::array:
         case json::value_t::object: {
             // Short ones in full ("[1280, 720.5]"), long ones by their size.
-            std::string s = value.dump();
+            std::string s = value.dump(-1, ' ', false, json::error_handler_t::replace);  // invalid UTF-8 from --set
             if (s.size() <= 40) return s;
             return value.is_array() ? fmt::format("an array of {} values", value.size()) : "an object";
         }
         case json::value_t::null: return "null";
         default: {
-            std::string s = value.dump();
+            std::string s = value.dump(-1, ' ', false, json::error_handler_t::replace);  // invalid UTF-8 from --set
             return s.size() > 40 ? s.substr(0, 37) + "..." : s;
         }
     }
