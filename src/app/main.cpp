@@ -52,7 +52,7 @@ struct CommonArgs {
 };
 
 void addCommon(CLI::App* cmd, CommonArgs& a) {
-    cmd->add_option("scene", a.scene, "Scene file (JSON, see docs/scene-format.md)")->required();
+    cmd->add_option("scene", a.scene, "Scene file (JSON, see docs/scene-format.md); - reads it from standard input")->required();
     cmd->add_option("--set", a.sets, "Override a scene value, e.g. --set radiosity.max_edge=0.25 (repeatable)");
     cmd->add_option("--threads", a.threads, "Worker threads (default 0: all cores)")->check(CLI::Range(0, kMaxThreads));
     cmd->add_flag("-q,--quiet", a.quiet, "No progress line");
