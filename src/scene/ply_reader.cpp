@@ -205,6 +205,9 @@ PlyMesh readPly(const std::string& path) {
         }
         if (isVertex && (ix < 0 || iy < 0 || iz < 0))
             throw std::runtime_error("element 'vertex' lacks one of the properties x, y, z");
+        // An element without properties has empty records: nothing to read, however many
+        // it claims (a hostile header claimed 2.7e15 of them: a loop, not an error).
+        if (e.properties.empty()) continue;
         if (isVertex) mesh.positions.reserve(e.count);
         if (isFace) mesh.faces.reserve(e.count);
         std::vector<uint32_t> face;

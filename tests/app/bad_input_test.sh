@@ -131,6 +131,11 @@ printf 'glTF\001\000\000\000\014\000\000\000' > "$work/v1.glb"
 mesh_case glb_version_1 v1.glb "not a valid glTF 2.0 file"
 printf '%s\n' '{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"children": [0]}]}' > "$work/cycle.gltf"
 mesh_case gltf_node_cycle cycle.gltf "the node hierarchy is deeper than 256 levels (a cycle?)"
+# A PLY element without properties that claims 2.7e15 records (found by the fuzzer: it
+# looped over the empty records).
+cp "$src/tests/fuzz/seeds/ply/regression_empty_element.ply" "$work/empty_element.ply"
+scene ply_empty_element "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"empty_element.ply\", \"material\": \"white\"}], $good_light}"
+expect 2 "PLY element without properties" "ply_empty_element.json: /objects/0/file: mesh '$work/empty_element.ply' has no triangles" -- solve "$work/ply_empty_element.json"
 mkdir -p "$work/adir.json"
 expect 2 "scene is a directory" "adir.json" -- solve "$work/adir.json"
 
