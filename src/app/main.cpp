@@ -79,7 +79,7 @@ void addOutputs(OutputFiles& files, const std::vector<std::string>& paths) {
 }
 
 void stageSensors(const app::PipelineRun& run, const std::string& csvPath, OutputFiles& files) {
-    app::checkSensorResults(run.sensors);
+    for (const auto& w : app::checkSensorResults(run.sensors)) fmt::print(stderr, "warning: {}\n", w);
     if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors);
     if (!csvPath.empty()) files.set(csvPath, app::sensorCsv(run.sensors));
 }

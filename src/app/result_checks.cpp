@@ -50,8 +50,10 @@ void checkDisplayImage(const std::string& path, const std::vector<uint8_t>& rgb8
                                   exposure, allBlack ? "black" : "white")));
 }
 
-void checkSensorResults(const std::vector<SensorResult>& results) {
+std::vector<std::string> checkSensorResults(const std::vector<SensorResult>& results) {
+    bool anyLight = false;
     for (const auto& r : results) {
+        anyLight |= r.value.direct != Rgb(0.0) || r.value.indirect != Rgb(0.0);
         const Rgb values[2] = {r.value.direct, r.value.indirect};
         for (const Rgb& v : values)
             for (int c = 0; c < 3; ++c)
@@ -61,6 +63,10 @@ void checkSensorResults(const std::vector<SensorResult>& results) {
                         "light's intensity or luminance absurdly large? Nothing was written",
                         r.sensor.name, toString(r.value.direct), toString(r.value.indirect)));
     }
+    if (results.size() > 1 && !anyLight)
+        return {fmt::format("every one of the {} sensors reads 0 lx: are they inside objects, behind surfaces, or "
+                            "facing away from every light?", results.size())};
+    return {};
 }
 
 }  // namespace rayrad::app

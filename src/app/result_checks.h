@@ -21,7 +21,8 @@ void checkRenderedImage(const HdrImage& image, bool allowBlack);
 /// for the message ("auto", "-40 stops").
 void checkDisplayImage(const std::string& path, const std::vector<uint8_t>& rgb8, const std::string& exposure);
 
-/// Every sensor value finite.
-void checkSensorResults(const std::vector<SensorResult>& results);
+/// Every sensor value finite (else ResultError); returns a warning when there are several
+/// sensors and every one reads 0 lx.
+std::vector<std::string> checkSensorResults(const std::vector<SensorResult>& results);
 
 }  // namespace rayrad::app

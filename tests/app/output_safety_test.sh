@@ -146,6 +146,13 @@ else
     echo "FAIL an EXR does not depend on the exposure"; failures=$((failures + 1))
 fi
 
+if "$rayrad" solve "$good" -q --set 'sensors=[{"name": "a", "position": [0.5,2,0.5], "normal": [0,1,0]}, {"name": "b", "position": [0.5,3,0.5], "normal": [0,1,0]}]' 2>&1 >/dev/null |
+    grep -q "warning: every one of the 2 sensors reads 0 lx"; then
+    passed=$((passed + 1))
+else
+    echo "FAIL every sensor dark: no warning"; failures=$((failures + 1))
+fi
+
 # ---- options (exit 2, before any work) -----------------------------------------------
 expect 2 "--exposure nan" "--exposure: expected stops between -64 and 64, got nan" -- render "$good" -o "$work/out.png" --exposure nan
 expect 2 "--exposure inf" "got inf" -- render "$good" -o "$work/out.png" --exposure inf
