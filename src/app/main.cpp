@@ -3,6 +3,7 @@
 #include <app/result_checks.h>
 #include <app/validate_runs.h>
 #include <app/version.h>
+#include <app/photometry_report.h>
 #include <app/pipeline.h>
 #include <app/problem_size.h>
 #include <app/validate_cube.h>
@@ -222,6 +223,10 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
 }
 
 int runInfo(const CommonArgs& a) {
+    if (app::isPhotometricFile(a.scene)) {
+        fmt::print("{}", app::photometryReport(scene::readPhotometry(a.scene)));
+        return 0;
+    }
     auto scene = app::loadSceneFile(a.scene, overridesOf(a));
     const double estimate = app::checkPatchCount(a.scene, scene);
     auto mesh = radiosity::premesh(scene, scene.meshing);
@@ -334,7 +339,7 @@ int main(int argc, char** argv) {
     solve->add_option("--sensors", solveCsv, "Write the sensor table as CSV");
     addReports(solve, solveReports);
 
-    auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs");
+    auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
     addCommon(info, infoArgs);
 
     app::ValidateOptions validateOptions;

@@ -34,4 +34,11 @@ check "black walls: indirect 0 at A" grep -q '^A,5,5,10,0,0,-1,2000,0,2000,' "$w
 "$rayrad" --help > "$work/help.txt"
 check "help lists commands" grep -q "render" "$work/help.txt"
 
+# A luminaire file (issue 14): info prints what it integrates to.
+"$rayrad" info "$src/tests/data/luminaires/radiance_examp1.ies" > "$work/ies.txt"
+check "info on an IES file: integrated flux" grep -q "integrated flux: 5296.65 lm" "$work/ies.txt"
+check "info on an IES file: output ratio" grep -q "light output ratio: 0.9132" "$work/ies.txt"
+"$rayrad" info "$src/tests/data/luminaires/eulumdatugr_sample_11.ldt" > "$work/ldt.txt"
+check "info on an LDT file: stated and integrated ratio" grep -q "light output ratio: 0.6497 (integrated / lamp flux); stated 0.6497" "$work/ldt.txt"
+
 finish cli

@@ -1,0 +1,179 @@
+// Photometric files (issue 14): IES LM-63 and EULUMDAT parsing, symmetry, integration.
+#include <core/input_error.h>
+#include <scene/photometry.h>
+
+#include "test_support.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace rayrad;
+using namespace rayrad::scene;
+using rayrad::test::sourcePath;
+
+namespace {
+
+/// An IES file (LM-63-2002, type C, metres) with the given angles and candela.
+std::string iesFile(const std::string& version, const std::string& vertical, const std::string& horizontal,
+                    const std::string& candela, size_t nv, size_t nh, const std::string& factors = "1.0 1.0 10",
+                    const std::string& lamp = "1 1000 1.0") {
+    std::ostringstream s;
+    s << version << "\n[TEST] synthetic\nTILT=NONE\n"
+      << lamp << " " << nv << " " << nh << " 1 2 0.5 0.5 0\n"
+      << factors << "\n" << vertical << "\n" << horizontal << "\n" << candela << "\n";
+    return s.str();
+}
+
+std::string repeat(const std::string& value, size_t n) {
+    std::string out;
+    for (size_t i = 0; i < n; ++i) out += value + " ";
+    return out;
+}
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("every bundled luminaire file integrates to the independent reference in expected.csv", "[scene][photometry]") {
+    // tests/data/luminaires/expected.csv: an independent exact integration of the bilinear
+    // grid (the README there says how); rayrad's must agree to rounding.
+    std::ifstream csv(sourcePath("tests/data/luminaires/expected.csv"));
+    REQUIRE(csv);
+    std::string line;
+    std::getline(csv, line);  // header
+    int files = 0;
+    while (std::getline(csv, line)) {
+        const std::string file = line.substr(0, line.find(','));
+        // integrated_lumens is the fifth column; the fourth may hold quoted commas.
+        std::vector<std::string> cells;
+        std::string cell;
+        bool quoted = false;
+        for (char c : line) {
+            if (c == '"') quoted = !quoted;
+            else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
+            else cell += c;
+        }
+        cells.push_back(cell);
+        const double expected = std::stod(cells[4]);
+        const Photometry p = readPhotometry(sourcePath("tests/data/luminaires/" + file));
+        INFO(file);
+        CHECK(p.integratedFlux() == Approx(expected).margin(0.005 + 1e-9));  // the reference has two decimals
+        if (!cells[6].empty()) {  // EULUMDAT's stated LOR, against the integral; see the README for sample_05
+            REQUIRE(p.statedLor);
+            CHECK(*p.statedLor == Approx(std::stod(cells[6])).epsilon(1e-6));
+        }
+        ++files;
+    }
+    CHECK(files == 10);
+}
+
+TEST_CASE("an isotropic source integrates to 4 pi I in every symmetry and both formats", "[scene][photometry]") {
+    const double I = 100;
+    std::string v;
+    for (int a = 0; a <= 180; a += 10) v += std::to_string(a) + " ";
+    const size_t nv = 19;
+    const Photometry rotational = parseIes(iesFile("IESNA:LM-63-2002", v, "0", repeat("100", nv), nv, 1), "iso.ies");
+    const Photometry quadrant = parseIes(iesFile("IESNA:LM-63-2002", v, "0 45 90", repeat("100", 3 * nv), nv, 3), "q.ies");
+    const Photometry half = parseIes(iesFile("IESNA:LM-63-2002", v, "0 90 180", repeat("100", 3 * nv), nv, 3), "h.ies");
+    const Photometry other = parseIes(iesFile("IESNA:LM-63-2002", v, "90 180 270", repeat("100", 3 * nv), nv, 3), "o.ies");
+    const Photometry full = parseIes(iesFile("IESNA:LM-63-2002", v, "0 120 240 360", repeat("100", 4 * nv), nv, 4), "f.ies");
+    for (const Photometry* p : {&rotational, &quadrant, &half, &other, &full}) {
+        INFO(p->file << ": " << p->symmetry());
+        CHECK(p->integratedFlux() == Approx(4 * kPi * I).epsilon(1e-12));
+        CHECK(p->intensity(37, 211) == Approx(I));
+    }
+    CHECK(rotational.symmetry() == "rotational (one plane)");
+    CHECK(quadrant.symmetry() == "quadrant (0–90)");
+    CHECK(half.symmetry() == "bilateral (0–180)");
+    CHECK(other.symmetry() == "bilateral (90–270)");
+}
+
+TEST_CASE("symmetries unfold: a quadrant file answers for every azimuth", "[scene][photometry]") {
+    // I = 100 + C (degrees) on C0..C90, the same at every vertical angle.
+    const Photometry q = parseIes(iesFile("IESNA:LM-63-2002", "0 90", "0 90", "100 100 190 190", 2, 2), "q.ies");
+    CHECK(q.intensity(45, 30) == Approx(130));
+    CHECK(q.intensity(45, 150) == Approx(130));  // mirrored about C90
+    CHECK(q.intensity(45, 210) == Approx(130));  // about C180
+    CHECK(q.intensity(45, 330) == Approx(130));  // about C270
+    CHECK(q.intensity(120, 30) == 0);            // beyond the tabulated vertical range
+    // A half-space table: ∫ over the lower hemisphere of the mean over C, 145 cd.
+    CHECK(q.integratedFlux() == Approx(2 * kPi * 145).epsilon(1e-12));
+}
+
+TEST_CASE("LM-63-2019 does not multiply by the file-generation field; older versions multiply by their factors",
+          "[scene][photometry]") {
+    const std::string v = "0 90 180", c = repeat("10", 3);
+    const Photometry y2019 = parseIes(iesFile("IES:LM-63-2019", v, "0", c, 3, 1, "0.8 1.10 5"), "a.ies");
+    const Photometry y1995 = parseIes(iesFile("IESNA:LM-63-1995", v, "0", c, 3, 1, "0.8 0.5 5"), "b.ies");
+    const Photometry multiplied = parseIes(iesFile("IESNA:LM-63-2002", v, "0", c, 3, 1, "1 1 5", "2 500 3.0"), "c.ies");
+    CHECK(y2019.candela[0][0] == Approx(8));        // ballast factor only
+    CHECK(y1995.candela[0][0] == Approx(4));        // ballast × ballast-lamp factor
+    CHECK(multiplied.candela[0][0] == Approx(30));  // the candela multiplier
+    CHECK(multiplied.lampFlux == Approx(1000));     // 2 lamps × 500 lm
+    const Photometry absolute = parseIes(iesFile("IESNA:LM-63-2002", v, "0", c, 3, 1, "1 1 5", "1 -1 1"), "d.ies");
+    CHECK(absolute.absolute);
+    CHECK(absolute.lampFlux == 0);
+}
+
+TEST_CASE("TILT=INCLUDE, comma-separated numbers wrapped anywhere, feet and round openings", "[scene][photometry]") {
+    const std::string text =
+        "IESNA91\n[TEST] x\nTILT=INCLUDE\n1\n3\n0 45,90\n1.0 0.9\n0.8\n"
+        "1,1000,1,2,1,1,1,-0.5,0,0\n1,1,\n20\n0,180\n0\n50,50\n";
+    const Photometry p = parseIes(text, "tilt.ies");
+    CHECK(p.tiltAngles == std::vector<double>{0, 45, 90});
+    CHECK(p.tiltFactors == std::vector<double>{1.0, 0.9, 0.8});
+    CHECK(p.round);
+    CHECK(p.width == Approx(0.5 * 0.3048));
+    CHECK(p.integratedFlux() == Approx(4 * kPi * 50));
+}
+
+TEST_CASE("EULUMDAT with decimal commas and the C0-C180 symmetry", "[scene][photometry]") {
+    std::ostringstream s;
+    s << "maker\n1\n2\n4\n90\n3\n90\nreport\nname\nnumber\nfile.ldt\ndate\n"
+         "600\n600\n50\n590\n590\n0\n0\n0\n0\n100\n80,5\n1\n0\n1\n1\nLED\n2000\n3000\n80\n20,5\n";
+    for (int i = 0; i < 10; ++i) s << "0\n";
+    for (int c : {0, 90, 180, 270}) s << c << "\n";
+    for (int g : {0, 90, 180}) s << g << "\n";
+    for (int plane = 0; plane < 3; ++plane) s << "400\n400\n400\n";  // C0, C90, C180: 400 cd/klm
+    const Photometry p = parseLdt(s.str(), "sym2.ldt");
+    CHECK(p.format == "EULUMDAT");
+    CHECK(p.symmetry() == "bilateral (0–180)");
+    CHECK(p.horizontal == std::vector<double>{0, 90, 180});
+    CHECK(p.candela[1][1] == Approx(800));  // 400 cd/klm × 2000 lm
+    CHECK(p.statedLor == Approx(0.805));
+    CHECK(p.inputWatts == Approx(20.5));
+    CHECK(p.integratedFlux() == Approx(4 * kPi * 800));
+}
+
+TEST_CASE("a malformed photometric file is an error naming the line", "[scene][photometry]") {
+    const std::string v = "0 90 180";
+    CHECK(errorOf([&] { parseIes("IESNA:LM-63-2002\n[TEST] x\n", "a.ies"); }) ==
+          "a.ies: no TILT= line: not an IES LM-63 photometric file");
+    CHECK(errorOf([&] { parseIes(iesFile("IESNA:LM-63-2002", v, "0", "1 2", 3, 1), "b.ies"); }) ==
+          "b.ies: line 8: the file ends before candela value 3 of 3 (horizontal angle 0, vertical 180)");
+    CHECK(errorOf([&] { parseIes(iesFile("IESNA:LM-63-2002", "0 90 x", "0", "1 2 3", 3, 1), "c.ies"); }) ==
+          "c.ies: line 6: expected vertical angle 3 of 3, got 'x'");
+    CHECK(errorOf([&] { parseIes(iesFile("IESNA:LM-63-2002", "0 90 45", "0", "1 2 3", 3, 1), "d.ies"); }) ==
+          "d.ies: line 6: vertical angles must increase: 45 after 90");
+    CHECK(errorOf([&] { parseIes(iesFile("IESNA:LM-63-2002", v, "0", "1 -2 3", 3, 1), "e.ies"); }) ==
+          "e.ies: line 8: candela value -2 is negative");
+    CHECK(errorOf([&] { parseIes(iesFile("IESNA:LM-63-2002", v, "0", "1 2 3", 3, 1, "1 1 5", "1 0 1"), "f.ies"); }) ==
+          "f.ies: line 4: lumens per lamp must be positive, or -1 for absolute photometry; got 0");
+    CHECK(errorOf([&] { parseLdt("maker\n1\n7\n", "g.ldt"); }) ==
+          "g.ldt: line 3: expected the symmetry indicator Isym (0–4) (a whole number from 0 to 4), got 7");
+    CHECK(errorOf([&] { parseLdt("maker\n1\n1\n1\n0\n3\n", "h.ldt"); }).find("h.ldt: line 6: the file ends before line") == 0);
+    CHECK(errorOf([&] { readPhotometry(sourcePath("tests/data/luminaires/nothere.ies")); }).find("no such file") !=
+          std::string::npos);
+    CHECK(errorOf([&] { readPhotometry("x.txt"); }) == "x.txt: unknown photometric file type '.txt' (use .ies or .ldt)");
+}
