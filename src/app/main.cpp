@@ -250,12 +250,20 @@ int runInfo(const CommonArgs& a) {
     for (const auto& w : app::costWarnings(a.scene, scene, mesh, true)) fmt::print("warning: {}\n", w);
     std::fflush(stdout);  // before the per-sensor checks, which take a while for very many sensors
     for (const auto& w : app::sceneWarnings(scene, mesh, *embree)) fmt::print("warning: {}\n", w);
-    fmt::print("point/spot lights: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
-    for (const auto& l : scene.lights)
+    fmt::print("point/spot lights and luminaires: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
+    for (const auto& l : scene.lights) {
+        if (l.photometry) {
+            const auto peak = l.photometry->peak();
+            fmt::print("  luminaire {} at {}: {:.1f} lm ({:.4g} × the file's table), peak {:.1f} cd, nadir {}, C0 {}\n",
+                       l.photometry->file, toString(l.position), l.photometricFlux, l.photometricScale,
+                       peak.candela * l.photometricScale, toString(l.nadir), toString(l.c0));
+            continue;
+        }
         fmt::print("  {} at {}: {} cd{}\n", l.isSpot ? "spot" : "point", toString(l.position), toString(l.intensity),
                    l.isSpot ? fmt::format(", axis {}, cones {:.4g}°/{:.4g}°", toString(l.direction),
                                           glm::degrees(std::acos(l.cosInner)), glm::degrees(std::acos(l.cosOuter)))
                             : "");
+    }
     fmt::print("sensors: {}\n", scene.sensors.size());
     const radiosity::DirectLight lights(scene);  // its virtual lights are the mirror images' copies of the lights
     const size_t images = lights.imageCount();

@@ -69,7 +69,9 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
 double DirectLight::emittedFlux() const {
     double flux = 0;
     for (const auto& l : m_pointLights) {
-        if (!l.isSpot) {
+        if (l.photometry) {
+            flux += luminance(l.intensity) * l.photometricFlux;  // the file's table, integrated
+        } else if (!l.isSpot) {
             flux += 4 * kPi * luminance(l.intensity);  // Φ = 4π I
         } else {
             // Φ = 2π ∫ I(θ) sinθ dθ over the cone, numerically (midpoint rule).
@@ -87,6 +89,20 @@ double DirectLight::emittedFlux() const {
     }
     for (const auto& a : m_areaLights) flux += kPi * luminance(a.luminance) * a.area;  // Φ = π L A
     return flux;
+}
+
+Rgb DirectLight::pointSourceIntensityToward(size_t s, const Vec3& x) const {
+    const scene::PointLight& l = m_pointLights[s % perChain()];
+    const Vec3 from = pointSourcePosition(s);
+    const Vec3 d = x - from;
+    const double r = glm::length(d);
+    if (r <= 0) return Rgb(0.0);
+    if (s < perChain()) return l.intensityToward(d / r);
+    // An image's transform is a product of reflections: its linear part is orthogonal, so
+    // the direction leaving the real light is the transpose applied to the unfolded one.
+    const MirrorImage& image = m_images[s / perChain() - 1];
+    const Vec3 leaving = glm::transpose(glm::dmat3(image.transform)) * (d / r);
+    return l.intensityToward(leaving) * image.weight;
 }
 
 Vec3 DirectLight::pointSourcePosition(size_t s) const {

@@ -68,6 +68,14 @@ class DirectLight {
     /// Π Ks of the mirrors on source s's path (1 for a real light): of the light it
     /// delivers, a fraction 1/weight − 1 more was absorbed by the mirrors on the way.
     Rgb sourceWeight(size_t s) const { return s < perChain() ? Rgb(1.0) : m_images[s / perChain() - 1].weight; }
+    /// The intensity (cd, RGB; × Π Ks for an image) point source s sends toward the point
+    /// x, along the straight (for an image: unfolded) path, ignoring occluders and apertures.
+    Rgb pointSourceIntensityToward(size_t s, const Vec3& x) const;
+    /// True when point source s sends the same intensity every way (a point light).
+    bool isIsotropic(size_t s) const {
+        const scene::PointLight& l = m_pointLights[s % perChain()];
+        return !l.isSpot && !l.photometry;
+    }
     /// Illuminance (lx) at x, normal n, from point source s alone, with its shadow ray.
     Rgb fromPointSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis) const;
 

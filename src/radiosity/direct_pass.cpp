@@ -55,12 +55,38 @@ std::array<Vec3, 4> evaluationPoints(const PatchMesh& mesh, const Patch& p) {
     return points;
 }
 
+/// Deepest split, and tolerance, of the solid-angle integral of a point source whose
+/// intensity varies with direction (a spot, a luminaire).
+constexpr int kIntensityMaxDepth = 6;
+constexpr double kIntensityRelTolerance = 1e-4;
+
+/// ∫ Y(I(ω)) dω over the solid angle triangle t subtends from point source s (at
+/// `source`), lm: Ω × Y(I toward the centroid), the triangle split in four until the
+/// sum over the children agrees with it.
+double intensityOverSolidAngle(const DirectLight& lights, size_t s, const Vec3& source, const std::array<Vec3, 3>& t,
+                               int depth) {
+    auto coarse = [&](const std::array<Vec3, 3>& u) {
+        const Vec3 c = (u[0] + u[1] + u[2]) / 3.0;
+        return triangleSolidAngle(source, u[0], u[1], u[2]) * luminance(lights.pointSourceIntensityToward(s, c));
+    };
+    const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
+    const std::array<Vec3, 3> child[4] = {{t[0], m01, m20}, {m01, t[1], m12}, {m20, m12, t[2]}, {m01, m12, m20}};
+    double fine = 0;
+    for (const auto& c : child) fine += coarse(c);
+    const double whole = coarse(t);
+    if (depth >= kIntensityMaxDepth || std::abs(fine - whole) <= kIntensityRelTolerance * std::abs(fine)) return fine;
+    double sum = 0;
+    for (const auto& c : child) sum += intensityOverSolidAngle(lights, s, source, c, depth + 1);
+    return sum;
+}
+
 /// Mean illuminance (lx) over patch p from point source s, given its values at the
 /// evaluation points. A point source's E = I cosθ V / d² peaks sharply on a patch it is
 /// close to, and the 4-point rule misses that. Without shadows the mean of
-/// cosθ / d² = h / d³ (h the source's height over the patch's plane) is exact, Ω / A (Ω the
-/// solid angle the patch subtends): the rule's value is rescaled by (Ω / A) / rule(h / d³),
-/// so a source that sees the whole patch delivers exactly I Ω. When the four points
+/// I cosθ / d² over the patch is (1/A) ∫ I dω over the solid angle Ω it subtends: I Ω / A
+/// for a point light, integrated over Ω for a spot or a luminaire. The rule's value is
+/// rescaled by that over the rule's own unshadowed value, so a source that sees the
+/// whole patch delivers exactly ∫ I dω. When the four points
 /// disagree (a shadow edge or a spot's rim crosses the patch) the rule is replaced by the
 /// mean over the `refined` points; so it is when `refine` is set (a mirror's rim may
 /// cross the patch).
@@ -70,9 +96,11 @@ Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
     const Vec3 source = lights.pointSourcePosition(s);
     const double h = glm::dot(normal, source - p.centroid);  // m
     if (h <= 0) return fourPoint;
-    auto kernel = [&](const Vec3& x) {
+    const bool isotropic = lights.isIsotropic(s);
+    auto kernel = [&](const Vec3& x) {  // Y of the unshadowed E (lx), up to I for a point light
         double d = glm::length(source - x);
-        return h / (d * d * d);  // cosθ / d², 1/m²
+        const double k = h / (d * d * d);  // cosθ / d², 1/m²
+        return isotropic ? k : k * luminance(lights.pointSourceIntensityToward(s, x));
     };
     Rgb value = fourPoint;
     double ruleKernel = 0;
@@ -93,7 +121,9 @@ Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         value /= static_cast<double>(refined.size());
         ruleKernel /= static_cast<double>(refined.size());
     }
-    const double exactKernel = triangleSolidAngle(source, mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)) / p.area;
+    const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
+    const double exactKernel = (isotropic ? triangleSolidAngle(source, t[0], t[1], t[2])
+                                          : intensityOverSolidAngle(lights, s, source, t, 0)) / p.area;
     return ruleKernel > 0 ? value * (exactKernel / ruleKernel) : fourPoint;
 }
 

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <core/math.h>
+#include <scene/photometry.h>
 #include <scene/scene_desc.h>
 #include <scene/settings.h>
 
 #include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,6 +62,15 @@ struct PointLight {
     Vec3 direction{0, 0, -1};
     double cosInner = -1, cosOuter = -1;
     std::string where;      ///< JSON pointer (or mesh file) it came from, for messages
+    /// A luminaire: its measured distribution (shared by the lights of one file), its
+    /// axes in the scene (nadir: γ = 0; c0: the C0 plane, ⟂ nadir; C90 = (−nadir) × c0,
+    /// so C grows counter-clockwise seen from above), the factor on the file's candela
+    /// (flux scaling × dimming × maintenance) and the flux that makes, lm. `intensity`
+    /// is then the colour, luminance 1. A point source at its photometric centre.
+    std::shared_ptr<const Photometry> photometry;
+    Vec3 nadir{0, -1, 0}, c0{1, 0, 0};
+    double photometricScale = 1;
+    double photometricFlux = 0;
 
     /// Intensity in cd (RGB) toward the unit direction `w` (from the light).
     Rgb intensityToward(const Vec3& w) const;

@@ -15,6 +15,13 @@
 namespace rayrad::scene {
 
 Rgb PointLight::intensityToward(const Vec3& w) const {
+    if (photometry) {
+        // γ from the nadir, C about it from C0 toward C90 = (−nadir) × c0.
+        const double gamma = glm::degrees(std::acos(std::clamp(glm::dot(w, nadir), -1.0, 1.0)));
+        const Vec3 c90 = glm::cross(-nadir, c0);
+        const double c = glm::degrees(std::atan2(glm::dot(w, c90), glm::dot(w, c0)));
+        return intensity * (photometricScale * photometry->intensity(gamma, c));
+    }
     if (!isSpot) return intensity;
     double c = glm::dot(w, direction);
     if (c >= cosInner) return intensity;
@@ -365,11 +372,32 @@ class Builder {
         }
     }
 
-    static PointLight makeLight(const LightDesc& l) {
+    PointLight makeLight(const LightDesc& l) {
         PointLight p;
         p.where = l.where;
         p.position = l.position;
         p.intensity = l.color * l.intensity;
+        if (l.kind == LightKind::Luminaire) {
+            auto& web = m_photometry[l.resolvedFile];
+            if (!web) {
+                try {
+                    web = std::make_shared<const Photometry>(readPhotometry(l.resolvedFile));
+                } catch (const InputError& e) {
+                    fail(l.where + "/file", e.what());
+                }
+            }
+            if (web->type != PhotometricType::C)
+                fail(l.where + "/file", "'" + l.resolvedFile + "' has type B or A photometry; luminaires take type C only so far");
+            const double fileFlux = web->integratedFlux();
+            if (!(fileFlux > 0)) fail(l.where + "/file", "'" + l.resolvedFile + "' emits no light (its candela table is zero)");
+            p.photometry = web;
+            p.nadir = l.nadir;
+            p.c0 = l.c0;
+            p.intensity = l.color;
+            p.photometricScale = (l.fluxLm ? *l.fluxLm / fileFlux : 1.0) * l.dimming * l.maintenance;
+            p.photometricFlux = p.photometricScale * fileFlux;
+            return p;
+        }
         if (l.kind == LightKind::Spot) {
             p.isSpot = true;
             p.direction = l.direction;
@@ -391,6 +419,7 @@ class Builder {
     const SceneDesc& m_desc;
     std::map<std::string, int> m_fileMaterials;  ///< "<file>:<material>" → scene material
     std::vector<PointLight> m_fileLights;        ///< punctual lights of mesh files, world space
+    std::map<std::string, std::shared_ptr<const Photometry>> m_photometry;  ///< by file: read once
 };
 
 }  // namespace

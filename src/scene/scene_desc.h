@@ -51,7 +51,7 @@ struct ObjectDesc {
     glm::dmat4 transform{1.0};       ///< object → world
 };
 
-enum class LightKind { Point, Spot };
+enum class LightKind { Point, Spot, Luminaire };
 
 struct LightDesc {
     LightKind kind = LightKind::Point;
@@ -62,6 +62,14 @@ struct LightDesc {
     Vec3 direction{0, 0, -1};        ///< spot axis
     double innerAngleDeg = 30.0;     ///< spot: full intensity inside this half-angle
     double outerAngleDeg = 45.0;     ///< spot: zero beyond this half-angle
+    // Luminaire: a photometric file, aimed.
+    std::string file;                ///< as written in the scene
+    std::string resolvedFile;        ///< relative to the working directory
+    Vec3 nadir{0, -1, 0};            ///< unit: where the luminaire's γ = 0 points
+    Vec3 c0{1, 0, 0};                ///< unit, ⟂ nadir: the direction of its C0 plane
+    std::optional<double> fluxLm;    ///< scale the file's table to this flux
+    double dimming = 1.0;            ///< × the light, (0, 1]
+    double maintenance = 1.0;        ///< light-loss factor, (0, 1]
 };
 
 struct CameraDesc {

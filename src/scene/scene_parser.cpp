@@ -3,6 +3,7 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <scene/json_reader.h>
+#include <scene/light_colour.h>
 #include <scene/overrides.h>
 
 #include <fmt/format.h>
@@ -203,21 +204,65 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
     return d;
 }
 
-LightDesc parseLight(JsonObject l) {
+/// A luminaire: a photometric file at a position, aimed; its flux, dimming, maintenance
+/// and colour (RGB or a colour temperature).
+void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
+    l.required("file");
+    d.file = l.string("file").value_or("");
+    const std::filesystem::path f(d.file);
+    d.resolvedFile = f.is_absolute() ? f.string() : (std::filesystem::path(sceneDir) / f).string();
+    if (l.has("aim") && l.has("nadir")) l.error("nadir", "give either \"aim\" (a point) or \"nadir\" (a direction), not both");
+    Vec3 nadir = l.has("aim") ? l.vec3("aim").value_or(d.position - Vec3(0, 1, 0)) - d.position
+                              : l.vec3("nadir").value_or(Vec3(0, -1, 0));
+    if (glm::length(nadir) == 0) {
+        l.error(l.has("aim") ? "aim" : "nadir", "the luminaire's axis must not be zero (aim at a point other than its position)");
+        nadir = Vec3(0, -1, 0);
+    }
+    d.nadir = glm::normalize(nadir);
+    // C0: the given direction with its part along the axis removed.
+    const Vec3 toward = l.vec3("c0_toward").value_or(std::abs(d.nadir.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1));
+    const Vec3 c0 = toward - glm::dot(toward, d.nadir) * d.nadir;
+    if (glm::length(c0) < 1e-9 * std::max(1.0, glm::length(toward))) {
+        l.error("c0_toward", "the C0 direction must not be parallel to the luminaire's axis");
+        d.c0 = std::abs(d.nadir.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
+    } else {
+        d.c0 = glm::normalize(c0);
+    }
+    if (l.has("flux_lm")) d.fluxLm = l.positive("flux_lm", 1.0);
+    d.dimming = l.number("dimming", 1.0);
+    if (!(d.dimming > 0 && d.dimming <= 1)) l.error("dimming", fmt::format("expected a factor in (0, 1], got {}", d.dimming));
+    d.maintenance = l.number("maintenance_factor", 1.0);
+    if (!(d.maintenance > 0 && d.maintenance <= 1))
+        l.error("maintenance_factor", fmt::format("expected a factor in (0, 1], got {}", d.maintenance));
+    if (l.has("color") && l.has("cct_k")) l.error("cct_k", "give either \"color\" or \"cct_k\", not both");
+    if (l.has("cct_k")) {
+        const double k = l.number("cct_k", 4000.0);
+        if (!(k >= kMinColourTemperature && k <= kMaxColourTemperature))
+            l.error("cct_k", fmt::format("expected a colour temperature from {:g} to {:g} K, got {}", kMinColourTemperature,
+                                         kMaxColourTemperature, k));
+        else d.color = colourOfTemperature(k);
+    }
+}
+
+LightDesc parseLight(JsonObject l, const std::string& sceneDir) {
     LightDesc d;
     d.where = l.path();
     l.required("type");
     std::string type = l.string("type").value_or("point");
     if (type == "point") d.kind = LightKind::Point;
     else if (type == "spot") d.kind = LightKind::Spot;
-    else l.error("type", fmt::format("unknown light type \"{}\" (expected \"point\" or \"spot\")", type));
+    else if (type == "luminaire") d.kind = LightKind::Luminaire;
+    else l.error("type", fmt::format("unknown light type \"{}\" (expected \"point\", \"spot\" or \"luminaire\")", type));
     l.required("position");
     d.position = l.vec3("position").value_or(Vec3(0.0));
-    l.required("intensity_cd");
-    d.intensity = l.positive("intensity_cd", 1.0);
+    if (d.kind != LightKind::Luminaire) {
+        l.required("intensity_cd");
+        d.intensity = l.positive("intensity_cd", 1.0);
+    }
     Rgb c = l.rgb("color", 0.0, 1e30, true).value_or(Rgb(1.0));
     if (luminance(c) <= 0) l.error("color", "light colour must have a positive luminance");
     else d.color = c / luminance(c);
+    if (d.kind == LightKind::Luminaire) parseLuminaire(l, d, sceneDir);
     if (d.kind == LightKind::Spot) {
         if (l.has("look_at") && l.has("direction"))
             l.error("direction", "give either \"direction\" or \"look_at\", not both");
@@ -504,7 +549,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         }
     };
     eachObject("objects", [&](JsonObject o, int) { desc.objects.push_back(parseObject(o, materialIndex, sceneDir)); });
-    eachObject("lights", [&](JsonObject o, int) { desc.lights.push_back(parseLight(o)); });
+    eachObject("lights", [&](JsonObject o, int) { desc.lights.push_back(parseLight(o, sceneDir)); });
     if (auto c = top.object("camera")) desc.camera = parseCamera(*c);
     eachObject("sensors", [&](JsonObject o, int i) { desc.sensors.push_back(parseSensor(o, i)); });
     eachObject("sensor_grids", [&](JsonObject o, int i) { parseSensorGrid(o, i, desc.sensors); });

@@ -1,0 +1,151 @@
+// Luminaires from photometric files in scenes (issue 14): the direct light follows the
+// file's table in the luminaire's frame, the flux is the table's integral (or flux_lm),
+// and the indirect light inside a closed sphere is the analytic ρ/(1−ρ) Φ/A.
+#include <app/pipeline.h>
+#include <core/input_error.h>
+#include <scene/light_colour.h>
+#include <scene/photometry.h>
+
+#include "pipeline_test_util.h"
+#include "test_support.h"
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+
+using namespace rayrad;
+using test::quiet;
+
+namespace {
+
+const std::string kIes = test::sourcePath("tests/data/luminaires/radiance_examp1.ies");
+
+/// A closed sphere (radius 1, reflectance rho) with one luminaire at the centre; sensors
+/// at the nadir (A), sideways along C0 (B) and along C90 (C).
+std::string sphereWithLuminaire(double rho, const std::string& luminaire) {
+    return fmt::format(R"({{"materials": {{"m": {{"reflectance": {}}}}},
+        "objects": [{{"type": "sphere", "material": "m", "radius": 1, "subdivisions": 12, "facing": "inward"}}],
+        "lights": [{{"type": "luminaire", "position": [0, 0, 0], {}}}],
+        "sensors": [{{"name": "A", "position": [0, -1, 0], "normal": [0, 1, 0]}},
+                    {{"name": "B", "position": [0.70710678, -0.70710678, 0], "normal": [-0.70710678, 0.70710678, 0]}},
+                    {{"name": "C", "position": [0, -0.70710678, 0.70710678], "normal": [0, 0.70710678, -0.70710678]}}],
+        "radiosity": {{"max_edge": 10, "stop_unshot": 1e-5}}}})",
+                       rho, luminaire);
+}
+
+}  // namespace
+
+TEST_CASE("a luminaire in a closed sphere: direct light from its table, indirect rho/(1-rho) Phi/A", "[luminaire]") {
+    const double rho = 0.5;
+    const std::string json = sphereWithLuminaire(rho, fmt::format(R"("file": "{}", "aim": [0, -1, 0], "c0_toward": [1, 0, 0])", kIes));
+    auto run = app::runPipeline(test::writeTempScene("luminaire_sphere", json), quiet());
+    const scene::Photometry web = scene::readPhotometry(kIes);
+    const double flux = web.integratedFlux();
+    REQUIRE(run.lights->emittedFlux() == Approx(flux).epsilon(1e-12));
+    // Direct: I(γ, C) at distance 1 on the sphere, normal toward the centre (cos = 1).
+    const double expectedDirect[3] = {web.intensity(0, 0), web.intensity(45, 0), web.intensity(45, 90)};
+    const double expectedIndirect = rho / (1 - rho) * flux / run.mesh.totalArea();
+    for (size_t i = 0; i < 3; ++i) {
+        const auto& s = run.sensors[i];
+        INFO(s.sensor.name);
+        CHECK(luminance(s.value.direct) == Approx(expectedDirect[i]).epsilon(1e-6));  // sensor positions to 8 digits
+        CHECK(luminance(s.value.indirect) == Approx(expectedIndirect).epsilon(0.015));  // as for a point light
+    }
+    CHECK(expectedDirect[1] != Approx(expectedDirect[2]).epsilon(0.01));  // the table does differ by azimuth
+    // The energy account holds with a strongly directional source.
+    const auto balance = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    CHECK(std::abs(balance.relativeError()) < 5e-4);
+}
+
+TEST_CASE("luminaire orientation, flux, dimming and maintenance", "[luminaire]") {
+    auto direct = [&](const std::string& fields) {
+        const std::string json = sphereWithLuminaire(0.0, fmt::format(R"("file": "{}", {})", kIes, fields));
+        auto run = app::runPipeline(test::writeTempScene("luminaire_options", json), quiet());
+        std::vector<double> out;
+        for (const auto& s : run.sensors) out.push_back(luminance(s.value.direct));
+        return out;
+    };
+    const auto base = direct(R"("c0_toward": [1, 0, 0])");
+    // C0 turned to +z: what C lit before, B now gets, and the reverse.
+    const auto turned = direct(R"("c0_toward": [0, 0, 1])");
+    CHECK(turned[1] == Approx(base[2]).epsilon(1e-9));
+    CHECK(turned[2] == Approx(base[1]).epsilon(1e-9));
+    // Aimed up: the nadir sensor gets what γ = 180° sends.
+    const scene::Photometry web = scene::readPhotometry(kIes);
+    const auto up = direct(R"("aim": [0, 5, 0])");
+    CHECK(up[0] == Approx(web.intensity(180, 0)).epsilon(1e-9));
+    // flux_lm scales the table; dimming and maintenance multiply.
+    const auto scaled = direct(R"("flux_lm": 1000, "dimming": 0.5, "maintenance_factor": 0.8)");
+    CHECK(scaled[0] == Approx(base[0] * 1000 / web.integratedFlux() * 0.5 * 0.8).epsilon(1e-9));
+}
+
+TEST_CASE("an isotropic photometric file lights a room as a point light of the same intensity", "[luminaire]") {
+    std::string v;
+    for (int a = 0; a <= 180; a += 5) v += std::to_string(a) + " ";
+    std::string c;
+    for (int i = 0; i < 37; ++i) c += "250 ";
+    const std::string ies = "IESNA:LM-63-2002\n[TEST] isotropic\nTILT=NONE\n1 -1 1 37 1 1 2 0 0 0\n1 1 10\n" + v + "\n0\n" + c + "\n";
+    const std::string path = test::writeTempScene("isotropic_ies", "{}");  // a scratch path
+    const std::string iesPath = path.substr(0, path.find_last_of('/')) + "/isotropic.ies";
+    std::ofstream(iesPath) << ies;
+    auto room = [&](const std::string& light) {
+        const std::string json = fmt::format(R"({{"materials": {{"w": {{"reflectance": 0.6}}}},
+            "objects": [{{"type": "box", "min": [0, 0, 0], "max": [3, 2.5, 4], "facing": "inward", "material": "w"}},
+                        {{"type": "box", "min": [1, 0, 1], "max": [2, 0.8, 2], "material": "w"}}],
+            "lights": [{}],
+            "sensors": [{{"name": "floor", "position": [0.5, 0, 3], "normal": [0, 1, 0]}},
+                        {{"name": "wall", "position": [3, 1.2, 2], "normal": [-1, 0, 0]}},
+                        {{"name": "shadow", "position": [1.5, 0, 2.3], "normal": [0, 1, 0]}}],
+            "radiosity": {{"max_edge": 0.5}}}})",
+                                             light);
+        return app::runPipeline(test::writeTempScene("isotropic_room", json), quiet());
+    };
+    auto point = room(R"({"type": "point", "position": [1.4, 2.2, 1.7], "intensity_cd": 250})");
+    auto luminaire = room(fmt::format(R"({{"type": "luminaire", "position": [1.4, 2.2, 1.7], "file": "{}"}})", iesPath));
+    REQUIRE(point.sensors.size() == luminaire.sensors.size());
+    for (size_t i = 0; i < point.sensors.size(); ++i) {
+        INFO(point.sensors[i].sensor.name);
+        CHECK(luminance(luminaire.sensors[i].value.direct) == Approx(luminance(point.sensors[i].value.direct)).epsilon(1e-9));
+        CHECK(luminance(luminaire.sensors[i].value.indirect) ==
+              Approx(luminance(point.sensors[i].value.indirect)).epsilon(1e-6));
+    }
+}
+
+TEST_CASE("a colour temperature gives a light of luminance 1, white near 6500 K", "[luminaire]") {
+    const Rgb d65 = scene::colourOfTemperature(6504);
+    CHECK(luminance(d65) == Approx(1.0));
+    // The Planckian locus at 6504 K lies a little below D65 in y (D65 is greener): its RGB
+    // has a little more red and blue than green.
+    CHECK(d65.r == Approx(1.0).margin(0.05));
+    CHECK(d65.b == Approx(1.0).margin(0.05));
+    CHECK(d65.g < 1.0);
+    const Rgb warm = scene::colourOfTemperature(2700);
+    CHECK(luminance(warm) == Approx(1.0));
+    CHECK(warm.r > warm.g);
+    CHECK(warm.g > warm.b);
+}
+
+TEST_CASE("bad luminaires are named", "[luminaire]") {
+    auto error = [&](const std::string& fields) {
+        try {
+            app::runPipeline(test::writeTempScene("bad_luminaire", sphereWithLuminaire(0.5, fields)), quiet());
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    CHECK(error(R"("file": "nothere.ies")").find("/lights/0/file: ") != std::string::npos);
+    CHECK(error(R"("file": "nothere.ies")").find("no such file") != std::string::npos);
+    CHECK(error(fmt::format(R"("file": "{}", "dimming": 0)", kIes)).find("/lights/0/dimming: expected a factor in (0, 1]") !=
+          std::string::npos);
+    CHECK(error(fmt::format(R"("file": "{}", "aim": [0, 0, 0])", kIes)).find("/lights/0/aim: the luminaire's axis must not be zero") !=
+          std::string::npos);
+    CHECK(error(fmt::format(R"("file": "{}", "c0_toward": [0, -2, 0])", kIes)).find("/lights/0/c0_toward: the C0 direction must not be parallel") !=
+          std::string::npos);
+    CHECK(error(fmt::format(R"("file": "{}", "cct_k": 500)", kIes)).find("/lights/0/cct_k: expected a colour temperature") !=
+          std::string::npos);
+    CHECK(error(fmt::format(R"("file": "{}", "intensity_cd": 5)", kIes)).find("/lights/0/intensity_cd: unknown key") !=
+          std::string::npos);
+}
