@@ -2,6 +2,8 @@
 // file's table in the luminaire's frame, the flux is the table's integral (or flux_lm),
 // and the indirect light inside a closed sphere is the analytic ρ/(1−ρ) Φ/A.
 #include <app/pipeline.h>
+#include <radiosity/direct_light.h>
+#include <scene/scene_parser.h>
 #include <core/input_error.h>
 #include <scene/light_colour.h>
 #include <scene/photometry.h>
@@ -148,4 +150,36 @@ TEST_CASE("bad luminaires are named", "[luminaire]") {
           std::string::npos);
     CHECK(error(fmt::format(R"("file": "{}", "intensity_cd": 5)", kIes)).find("/lights/0/intensity_cd: unknown key") !=
           std::string::npos);
+}
+
+TEST_CASE("a luminaire's mirror image sends the intensity the real luminaire sends along the reflected path",
+          "[luminaire][mirrors]") {
+    // A mirror on the floor (y = 0, facing up) and a luminaire aimed sideways: its image
+    // below the floor lights a receiver above through the mirror with the intensity the
+    // real luminaire sends toward the mirror point.
+    const std::string json = fmt::format(R"({{"materials": {{"w": {{"reflectance": 0.5}}, "m": {{"type": "mirror", "specular_reflectance": 1}}}},
+        "objects": [{{"type": "quad", "material": "m", "vertices": [[-5, 0, -5], [-5, 0, 5], [5, 0, 5], [5, 0, -5]]}},
+                    {{"type": "quad", "material": "w", "vertices": [[-5, 4, -5], [5, 4, -5], [5, 4, 5], [-5, 4, 5]]}}],
+        "lights": [{{"type": "luminaire", "file": "{}", "position": [0, 2, 0], "aim": [1, 1.5, 0.3], "c0_toward": [0, 0, 1]}}]}})",
+                                         kIes);
+    const scene::Scene s = scene::buildScene(scene::parseScene(json, "mirror_luminaire.json"));
+    const radiosity::DirectLight lights(s);
+    REQUIRE(lights.imageCount() == 1);
+    const size_t image = lights.sourceCount() - 1;  // the image of point source 0
+    REQUIRE(lights.isPointSource(image));
+    struct NoOccluders : Visibility {
+        bool visible(const Vec3&, const Vec3&) const override { return true; }
+    } open;
+    int lit = 0;
+    for (const Vec3 x : {Vec3(1, 3, 0.5), Vec3(-2, 3.9, 1), Vec3(0.3, 1, -2), Vec3(2, 1, 1)}) {
+        const Vec3 n(0, -1, 0);
+        const Vec3 d = lights.pointSourcePosition(image) - x;
+        const double geometry = std::abs(glm::dot(n, d)) / glm::length(d) / glm::dot(d, d);  // cosθ / r²
+        const double e = luminance(lights.fromPointSource(image, x, n, open));
+        INFO("x " << toString(x));
+        const double intensity = luminance(lights.pointSourceIntensityToward(image, x));
+        CHECK(e == Approx(intensity * geometry).epsilon(1e-9).margin(1e-12));
+        lit += e > 0;
+    }
+    CHECK(lit >= 2);
 }
