@@ -1,4 +1,5 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
+#include <app/grid_statistics.h>
 #include <app/image_output.h>
 #include <app/result_checks.h>
 #include <app/validate_runs.h>
@@ -25,6 +26,7 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <limits>
@@ -79,10 +81,21 @@ void addOutputs(OutputFiles& files, const std::vector<std::string>& paths) {
         if (!path.empty()) files.add(path);
 }
 
-void stageSensors(const app::PipelineRun& run, const std::string& csvPath, OutputFiles& files) {
+/// The sensor CSV and, when the scene has sensor grids, their statistics beside it
+/// (gridSummaryPath): the outputs `--sensors FILE` asks for.
+std::vector<std::string> sensorOutputs(const scene::SceneDesc& desc, const std::string& csvPath) {
+    if (csvPath.empty()) return {};
+    const bool grids = std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); });
+    if (!grids) return {csvPath};
+    return {csvPath, app::gridSummaryPath(csvPath)};
+}
+
+void stageSensors(const app::PipelineRun& run, const std::vector<std::string>& csvPaths, OutputFiles& files) {
     for (const auto& w : app::checkSensorResults(run.sensors)) fmt::print(stderr, "warning: {}\n", w);
-    if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors);
-    if (!csvPath.empty()) files.set(csvPath, app::sensorCsv(run.sensors));
+    const auto grids = app::gridStatistics(run.sensors);
+    if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors) << app::gridTable(grids);
+    if (!csvPaths.empty()) files.set(csvPaths[0], app::sensorCsv(run.sensors));
+    if (csvPaths.size() > 1) files.set(csvPaths[1], app::gridCsv(grids));
 }
 
 void reportWritten(const std::vector<std::string>& paths) {
@@ -149,11 +162,14 @@ int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& repo
     o.quiet = a.quiet;
     o.logConvergence = !reports.convergence.empty();
     // Read and check the scene, then every output, before any work.
-    OutputFiles files = filesOf(scene::loadScene(a.scene, o.overrides));
-    const std::vector<std::string> outputs{csv, reports.convergence, reports.report};
+    const auto desc = scene::loadScene(a.scene, o.overrides);
+    OutputFiles files = filesOf(desc);
+    const auto csvs = sensorOutputs(desc, csv);
+    std::vector<std::string> outputs{reports.convergence, reports.report};
+    outputs.insert(outputs.begin(), csvs.begin(), csvs.end());
     addOutputs(files, outputs);
     auto run = app::runPipeline(a.scene, o);
-    stageSensors(run, csv, files);
+    stageSensors(run, csvs, files);
     stageReports(run, a.scene, reports, files);
     files.commit();
     reportWritten(outputs);
@@ -204,14 +220,16 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     app::addImageOutputs(images, files);
     for (int k = 1; k <= snapshots; ++k)
         for (const auto& path : images) files.add(app::snapshotPath(path, k));
-    const std::vector<std::string> others{csv, reports.convergence, reports.report};
+    const auto csvs = sensorOutputs(desc, csv);
+    std::vector<std::string> others{reports.convergence, reports.report};
+    others.insert(others.begin(), csvs.begin(), csvs.end());
     addOutputs(files, others);
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
     run.report.begin("tone map + write");
     app::checkRenderedImage(*run.image, allowBlack);
     app::stageImages(images, *run.image, display, "rayrad rendering of " + a.scene, files);
-    stageSensors(run, csv, files);
+    stageSensors(run, csvs, files);
     stageReports(run, a.scene, reports, files);
     files.commit();
     run.report.end();

@@ -14,6 +14,7 @@
 #include <raytrace/camera.h>
 #include <raytrace/ray_tracer.h>
 
+#include <app/grid_statistics.h>
 #include <app/image_output.h>
 
 #include <fmt/format.h>
@@ -312,6 +313,10 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile) 
         if (r.sensor.refTotal) e["ref_total_lx"] = *r.sensor.refTotal;
         j["sensors"].push_back(e);
     }
+    j["grids"] = json::array();
+    for (const auto& g : gridStatistics(run.sensors))
+        j["grids"].push_back({{"grid", g.grid}, {"points", g.points}, {"emin_lx", g.minimum}, {"eavg_lx", g.mean},
+                              {"emax_lx", g.maximum}, {"u0", g.u0()}, {"emin_emax", g.minToMax()}});
     return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // names may come from --set or mesh files
 }
 

@@ -84,6 +84,7 @@ struct CameraDesc {
 /// A point where illuminance is reported, with optional references in lx.
 struct SensorDesc {
     std::string name;
+    std::string grid;                ///< the sensor grid it is a point of ("" for a single sensor)
     Vec3 position{0.0};
     Vec3 normal{0, 0, 1};
     std::optional<double> refDirect, refIndirect, refTotal;

@@ -365,6 +365,7 @@ void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out) {
         for (int i = 0; i < nu; ++i) {
             SensorDesc s;
             s.name = fmt::format("{}[{},{}]", name, i, j);
+            s.grid = name;
             s.position = origin + (i + 0.5) / nu * u + (j + 0.5) / nv * v;
             s.normal = n;
             out.push_back(s);

@@ -153,6 +153,18 @@ else
     echo "FAIL every sensor dark: no warning"; failures=$((failures + 1))
 fi
 
+# Grid statistics beside the sensor CSV (issue 14): written with it, and checked with it.
+grid_set='sensor_grids=[{"name": "floor", "origin": [0.1,0,0.1], "u": [0.8,0,0], "v": [0,0,0.8], "counts": [3,3], "normal": [0,1,0]}]'
+if "$rayrad" solve "$good" -q --set "$grid_set" --sensors "$work/grid.csv" >/dev/null 2>&1 &&
+    grep -q '^floor,9,' "$work/grid.grids.csv"; then
+    passed=$((passed + 1))
+else
+    echo "FAIL grid statistics file"; failures=$((failures + 1))
+fi
+echo keep > "$work/ro.grids.csv"; chmod 444 "$work/ro.grids.csv"
+expect 3 "read-only grid summary" "ro.grids.csv: cannot write: the file exists and is read-only" -- solve "$good" -q --set "$grid_set" --sensors "$work/ro.csv"
+if [ ! -e "$work/ro.csv" ]; then passed=$((passed + 1)); else echo "FAIL the sensor CSV was written although its summary could not be"; failures=$((failures + 1)); fi
+
 # ---- options (exit 2, before any work) -----------------------------------------------
 expect 2 "--exposure nan" "--exposure: expected stops between -64 and 64, got nan" -- render "$good" -o "$work/out.png" --exposure nan
 expect 2 "--exposure inf" "got inf" -- render "$good" -o "$work/out.png" --exposure inf

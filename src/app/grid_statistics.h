@@ -1,0 +1,34 @@
+// What a lighting designer reads off a calculation grid: the minimum, mean and maximum
+// illuminance and the uniformities (EN 12464-1: U0 = Emin / Eavg; also Emin / Emax).
+#pragma once
+
+#include <app/sensor_table.h>
+
+#include <string>
+#include <vector>
+
+namespace rayrad::app {
+
+struct GridStatistics {
+    std::string grid;
+    size_t points = 0;
+    double minimum = 0, mean = 0, maximum = 0;  ///< total illuminance Y, lx
+    double u0() const { return mean > 0 ? minimum / mean : 0; }         ///< Emin / Eavg
+    double minToMax() const { return maximum > 0 ? minimum / maximum : 0; }  ///< Emin / Emax
+};
+
+/// One entry per sensor grid, in the order the grids appear; the total illuminance
+/// (direct + gathered indirect) of each point, every point weighted alike (the points
+/// are cell centres of equal cells).
+std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& results);
+
+/// An aligned text table for the terminal.
+std::string gridTable(const std::vector<GridStatistics>& grids);
+
+/// CSV: grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax.
+std::string gridCsv(const std::vector<GridStatistics>& grids);
+
+/// The summary file beside a sensor CSV: "out/room.csv" → "out/room.grids.csv".
+std::string gridSummaryPath(const std::string& sensorCsvPath);
+
+}  // namespace rayrad::app
