@@ -183,3 +183,35 @@ TEST_CASE("a luminaire's mirror image sends the intensity the real luminaire sen
     }
     CHECK(lit >= 2);
 }
+
+TEST_CASE("the same luminaire as EULUMDAT and as IES gives the same light", "[luminaire]") {
+    // The CIE 190 example luminaire (sample_11.ldt) written out as an IES LM-63-2002 file
+    // with its table in absolute candela: the two readers must agree.
+    const std::string ldt = test::sourcePath("tests/data/luminaires/eulumdatugr_sample_11.ldt");
+    const scene::Photometry p = scene::readPhotometry(ldt);
+    std::string ies = fmt::format("IESNA:LM-63-2002\n[TEST] sample_11 as IES\nTILT=NONE\n1 -1 1 {} {} 1 2 {} {} {}\n1 1 10\n",
+                                  p.vertical.size(), p.horizontal.size(), p.width, p.length, p.height);
+    for (double v : p.vertical) ies += fmt::format("{:.17g} ", v);
+    ies += "\n";
+    for (double h : p.horizontal) ies += fmt::format("{:.17g} ", h);
+    ies += "\n";
+    for (const auto& plane : p.candela) {
+        for (double cd : plane) ies += fmt::format("{:.17g} ", cd);
+        ies += "\n";
+    }
+    const std::string iesPath = "/tmp/rayrad_test_sample_11.ies";
+    std::ofstream(iesPath) << ies;
+    const scene::Photometry q = scene::readPhotometry(iesPath);
+    CHECK(q.integratedFlux() == Approx(p.integratedFlux()).epsilon(1e-12));
+    for (double gamma : {0.0, 12.5, 47.0, 89.0, 120.0})
+        for (double c : {0.0, 33.0, 90.0, 181.0, 287.5}) CHECK(q.intensity(gamma, c) == Approx(p.intensity(gamma, c)).epsilon(1e-12));
+    auto sensors = [&](const std::string& file) {
+        const std::string json = sphereWithLuminaire(0.5, fmt::format(R"("file": "{}", "c0_toward": [0, 0, 1])", file));
+        return app::runPipeline(test::writeTempScene("ldt_vs_ies", json), quiet()).sensors;
+    };
+    const auto a = sensors(ldt), b = sensors(iesPath);
+    for (size_t i = 0; i < a.size(); ++i) {
+        CHECK(luminance(b[i].value.direct) == Approx(luminance(a[i].value.direct)).epsilon(1e-9));
+        CHECK(luminance(b[i].value.indirect) == Approx(luminance(a[i].value.indirect)).epsilon(1e-9));
+    }
+}
