@@ -8,6 +8,7 @@
 #include <app/pipeline.h>
 #include <app/problem_size.h>
 #include <app/validate_cube.h>
+#include <app/validate_luminaire.h>
 #include <app/validate_sphere.h>
 #include <app/scene_warnings.h>
 #include <app/sensor_table.h>
@@ -383,6 +384,13 @@ int main(int argc, char** argv) {
     validateSphere->add_option("--out", sphereOptions.outDir, "Output directory")->default_str(sphereOptions.outDir);
     validateSphere->add_option("--threads", sphereOptions.threads, "Worker threads per run (default: all cores)")
         ->check(CLI::Range(0, kMaxThreads));
+    app::ValidateLuminaireOptions luminaireOptions;
+    luminaireOptions.dataDir = app::bundledPath(luminaireOptions.dataDir);
+    auto* validateLuminaire = validate->add_subcommand(
+        "luminaire", "Every bundled photometric file: direct light from its table, a closed sphere's indirect light");
+    validateLuminaire->add_option("--data", luminaireOptions.dataDir, "Directory with .ies and .ldt files")
+        ->default_str(luminaireOptions.dataDir);
+    validateLuminaire->add_option("--out", luminaireOptions.outDir, "Output directory")->default_str(luminaireOptions.outDir);
     validate->require_subcommand(1);
     validateCube->add_flag("--quick", validateOptions.quick, "A subset at 1 200 and 4 800 triangles (about a minute)");
     validateCube->add_option("--scene", validateOptions.scene, "The cube scene")->default_str(validateOptions.scene);
@@ -401,6 +409,7 @@ int main(int argc, char** argv) {
 
     try {
         if (validateSphere->parsed()) return app::validateSphere(sphereOptions);
+        if (validateLuminaire->parsed()) return app::validateLuminaire(luminaireOptions);
         if (validate->parsed()) return app::validateCube(validateOptions);
         CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : infoArgs;
         std::unique_ptr<tbb::global_control> threads;
