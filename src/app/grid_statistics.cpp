@@ -40,7 +40,7 @@ std::string gridTable(const std::vector<GridStatistics>& grids) {
 std::string gridCsv(const std::vector<GridStatistics>& grids) {
     std::string s = "grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax\n";
     for (const auto& g : grids)
-        s += fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.6f},{:.6f}\n", g.grid, g.points, g.minimum, g.mean, g.maximum, g.u0(),
+        s += fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.6f},{:.6f}\n", csvField(g.grid), g.points, g.minimum, g.mean, g.maximum, g.u0(),
                          g.minToMax());
     return s;
 }

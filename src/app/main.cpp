@@ -1,6 +1,7 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
 #include <app/grid_statistics.h>
 #include <app/image_output.h>
+#include <app/light_group_parts.h>
 #include <app/result_checks.h>
 #include <app/validate_runs.h>
 #include <app/version.h>
@@ -15,6 +16,7 @@
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <core/result_error.h>
+#include <scene/light_groups.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
 #include <radiosity/mesher.h>
@@ -82,21 +84,47 @@ void addOutputs(OutputFiles& files, const std::vector<std::string>& paths) {
         if (!path.empty()) files.add(path);
 }
 
-/// The sensor CSV and, when the scene has sensor grids, their statistics beside it
-/// (gridSummaryPath): the outputs `--sensors FILE` asks for.
-std::vector<std::string> sensorOutputs(const scene::SceneDesc& desc, const std::string& csvPath) {
-    if (csvPath.empty()) return {};
-    const bool grids = std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); });
-    if (!grids) return {csvPath};
-    return {csvPath, app::gridSummaryPath(csvPath)};
+/// What `--sensors FILE.csv` writes: the points and, beside them, the grid statistics
+/// (when the scene has grids) and each light group's part (when its emitters name groups).
+struct SensorFiles {
+    std::string points, grids, groups;
+    std::vector<std::string> all() const {
+        std::vector<std::string> out;
+        for (const auto* p : {&points, &grids, &groups})
+            if (!p->empty()) out.push_back(*p);
+        return out;
+    }
+};
+
+SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath) {
+    SensorFiles f;
+    if (csvPath.empty()) return f;
+    f.points = csvPath;
+    if (std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); }))
+        f.grids = app::gridSummaryPath(csvPath);
+    if (!desc.sensors.empty() && app::hasLightGroups(desc)) f.groups = app::lightGroupPath(csvPath);
+    return f;
 }
 
-void stageSensors(const app::PipelineRun& run, const std::vector<std::string>& csvPaths, OutputFiles& files) {
+/// The sensor table, grid statistics and light groups' parts (one more solve per group),
+/// on stdout and into the files.
+void reportSensors(app::PipelineRun& run, const std::string& sceneFile, const app::PipelineOptions& options,
+                   const SensorFiles& f, OutputFiles& files) {
     for (const auto& w : app::checkSensorResults(run.sensors)) fmt::print(stderr, "warning: {}\n", w);
     const auto grids = app::gridStatistics(run.sensors);
     if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors) << app::gridTable(grids);
-    if (!csvPaths.empty()) files.set(csvPaths[0], app::sensorCsv(run.sensors));
-    if (csvPaths.size() > 1) files.set(csvPaths[1], app::gridCsv(grids));
+    if (!f.points.empty()) files.set(f.points, app::sensorCsv(run.sensors));
+    if (!f.grids.empty()) files.set(f.grids, app::gridCsv(grids));
+    const auto groups = scene::lightGroups(run.scene);
+    if (groups.empty() || run.sensors.empty()) return;
+    run.report.begin(fmt::format("light groups ({} solves)", groups.size()));
+    const app::LightGroupParts parts = app::solveLightGroups(sceneFile, options, run, groups);
+    run.report.end();
+    std::cout << "\nlight groups (total lx; each group solved alone, the light being linear in the emission):\n"
+              << app::lightGroupTable(run.sensors, parts);
+    fmt::print(stderr, "light groups: {} solved alone; their sum differs from the full solve by at most {:.3f} %\n",
+               groups.size(), 100 * app::largestGroupSumDifference(run.sensors, parts));
+    if (!f.groups.empty()) files.set(f.groups, app::lightGroupCsv(run.sensors, parts));
 }
 
 void reportWritten(const std::vector<std::string>& paths) {
@@ -165,12 +193,12 @@ int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& repo
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
     OutputFiles files = filesOf(desc);
-    const auto csvs = sensorOutputs(desc, csv);
-    std::vector<std::string> outputs{reports.convergence, reports.report};
-    outputs.insert(outputs.begin(), csvs.begin(), csvs.end());
+    const SensorFiles csvs = sensorFiles(desc, csv);
+    std::vector<std::string> outputs = csvs.all();
+    outputs.insert(outputs.end(), {reports.convergence, reports.report});
     addOutputs(files, outputs);
     auto run = app::runPipeline(a.scene, o);
-    stageSensors(run, csvs, files);
+    reportSensors(run, a.scene, o, csvs, files);
     stageReports(run, a.scene, reports, files);
     files.commit();
     reportWritten(outputs);
@@ -221,16 +249,16 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     app::addImageOutputs(images, files);
     for (int k = 1; k <= snapshots; ++k)
         for (const auto& path : images) files.add(app::snapshotPath(path, k));
-    const auto csvs = sensorOutputs(desc, csv);
-    std::vector<std::string> others{reports.convergence, reports.report};
-    others.insert(others.begin(), csvs.begin(), csvs.end());
+    const SensorFiles csvs = sensorFiles(desc, csv);
+    std::vector<std::string> others = csvs.all();
+    others.insert(others.end(), {reports.convergence, reports.report});
     addOutputs(files, others);
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
-    run.report.begin("tone map + write");
     app::checkRenderedImage(*run.image, allowBlack);
+    reportSensors(run, a.scene, o, csvs, files);
+    run.report.begin("tone map + write");
     app::stageImages(images, *run.image, display, "rayrad rendering of " + a.scene, files);
-    stageSensors(run, csvs, files);
     stageReports(run, a.scene, reports, files);
     files.commit();
     run.report.end();

@@ -6,6 +6,7 @@
 
 #include <core/progress.h>
 #include <radiosity/direct_pass.h>
+#include <scene/light_groups.h>
 #include <radiosity/edge_vertices.h>
 #include <radiosity/gather.h>
 #include <radiosity/sensors.h>
@@ -139,6 +140,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     PipelineRun run;
     run.report.begin("parse + build scene");
     run.scene = loadSceneFile(sceneFile, options.overrides);
+    if (options.lightGroup) scene::keepLightGroup(run.scene, *options.lightGroup);
 
     checkPatchCount(sceneFile, run.scene);
     run.report.begin("premesh");

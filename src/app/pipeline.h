@@ -36,6 +36,8 @@ struct PipelineOptions {
     /// Where the snapshots go: their paths (snapshotPath) were added to it before the run.
     OutputFiles* files = nullptr;
     tonemap::DisplayOptions display;
+    /// Solve with the emitters of this light group only (scene/light_groups.h).
+    std::optional<std::string> lightGroup;
 };
 
 /// One line of the convergence log, taken at a push-pull.

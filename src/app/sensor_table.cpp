@@ -45,6 +45,13 @@ Row rowOf(const SensorResult& r) {
 
 }  // namespace
 
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string q;
+    for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return "\"" + q + "\"";
+}
+
 std::string sensorCsv(const std::vector<SensorResult>& results) {
     bool refs = anyReference(results);
     std::string s = "sensor,x,y,z,nx,ny,nz,direct_lx,indirect_lx,total_lx";
@@ -56,12 +63,7 @@ std::string sensorCsv(const std::vector<SensorResult>& results) {
         Row row = rowOf(r);
         const auto& p = r.sensor.position;
         const auto& n = r.sensor.normal;
-        std::string name = r.sensor.name;
-        if (name.find_first_of(",\"") != std::string::npos) {
-            std::string q;
-            for (char c : name) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-            name = "\"" + q + "\"";
-        }
+        const std::string name = csvField(r.sensor.name);
         s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}", name, p.x, p.y, p.z, n.x,
                          n.y, n.z, row.direct, row.indirect, row.total);
         if (refs)

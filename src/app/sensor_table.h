@@ -22,6 +22,9 @@ struct SensorResult {
 /// and, with references, err_indirect_vertex_pct. Illuminances are luminance-weighted Y.
 std::string sensorCsv(const std::vector<SensorResult>& results);
 
+/// A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a newline.
+std::string csvField(const std::string& text);
+
 /// The same as an aligned text table for the terminal.
 std::string sensorTable(const std::vector<SensorResult>& results);
 

@@ -27,6 +27,7 @@ struct Material {
     /// One side of a two-sided diffuse surface: the builder adds the back as a coincident
     /// reversed surface (the ray tracer shows whichever side's front faces the ray).
     bool twoSided = false;
+    std::string lightGroup;  ///< emissive: the light group it belongs to ("" none)
     bool isEmissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     bool isDiffuse() const { return kind == SurfaceKind::Diffuse; }
 };
@@ -62,6 +63,7 @@ struct PointLight {
     Vec3 direction{0, 0, -1};
     double cosInner = -1, cosOuter = -1;
     std::string where;      ///< JSON pointer (or mesh file) it came from, for messages
+    std::string lightGroup; ///< the light group it belongs to ("" none)
     /// A luminaire: its measured distribution (shared by the lights of one file), its
     /// axes in the scene (nadir: γ = 0; c0: the C0 plane, ⟂ nadir; C90 = (−nadir) × c0,
     /// so C grows counter-clockwise seen from above), the factor on the file's candela

@@ -125,6 +125,7 @@ class Builder {
             mat.specular = m.specular;
             mat.ior = m.ior;
             mat.twoSided = m.twoSided;
+            mat.lightGroup = m.lightGroup;
             if (m.emissive && m.luminance > 0) mat.emission = m.color / luminance(m.color) * m.luminance;
             s.materials.push_back(mat);
         }
@@ -375,6 +376,7 @@ class Builder {
     PointLight makeLight(const LightDesc& l) {
         PointLight p;
         p.where = l.where;
+        p.lightGroup = l.lightGroup;
         p.position = l.position;
         p.intensity = l.color * l.intensity;
         if (l.kind == LightKind::Luminaire) {

@@ -29,6 +29,7 @@ struct MaterialDesc {
     double flux = 0.0;               ///< total emitted flux in lm (if given instead)
     bool twoSided = false;           ///< diffuse: both sides reflect (else the back is black)
     std::optional<Rgb> backReflectance;  ///< two-sided: the back's reflectance (default: the front's)
+    std::string lightGroup;          ///< emissive: the light group it belongs to ("" none)
 };
 
 enum class ObjectKind { Quad, Polygon, Box, Sphere, Mesh };
@@ -70,6 +71,7 @@ struct LightDesc {
     std::optional<double> fluxLm;    ///< scale the file's table to this flux
     double dimming = 1.0;            ///< × the light, (0, 1]
     double maintenance = 1.0;        ///< light-loss factor, (0, 1]
+    std::string lightGroup;          ///< the light group it belongs to ("" none)
 };
 
 struct CameraDesc {

@@ -22,6 +22,14 @@ namespace {
 
 // ---- pieces ----------------------------------------------------------------------
 
+/// "group": the light group an emitter belongs to (a name; "" when not given).
+std::string lightGroupOf(JsonObject& o) {
+    if (!o.has("group")) return "";
+    const std::string g = o.string("group").value_or("");
+    if (g.empty()) o.error("group", "a light group needs a name");
+    return g;
+}
+
 MaterialDesc parseMaterial(JsonObject m, const std::string& name) {
     MaterialDesc d;
     d.name = name;
@@ -63,6 +71,7 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name) {
         if (hasL == hasF) m.error("luminance_cd_m2", "an emissive material needs exactly one of \"luminance_cd_m2\" or \"flux_lm\"");
         if (hasL) d.luminance = m.positive("luminance_cd_m2", 0.0);
         if (hasF) d.flux = m.positive("flux_lm", 0.0);
+        d.lightGroup = lightGroupOf(m);
     }
     m.finish();
     return d;
@@ -248,6 +257,7 @@ void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
 LightDesc parseLight(JsonObject l, const std::string& sceneDir) {
     LightDesc d;
     d.where = l.path();
+    d.lightGroup = lightGroupOf(l);
     l.required("type");
     std::string type = l.string("type").value_or("point");
     if (type == "point") d.kind = LightKind::Point;
