@@ -1,4 +1,5 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
+#include <app/false_colour_output.h>
 #include <app/grid_statistics.h>
 #include <app/image_output.h>
 #include <app/light_group_parts.h>
@@ -178,11 +179,36 @@ void printSolveSummary(const app::PipelineRun& run) {
 struct ReportArgs {
     std::string convergence;  ///< --convergence FILE.csv
     std::string report;       ///< --report FILE.json
+    std::string gridPicture;  ///< --grid-picture FILE.png
+    std::string falseColour;  ///< render --false-colour FILE.png
 };
+
+/// Checks the report outputs before the work (a picture must be PNG or JPEG; a grid
+/// picture needs grids) and adds them; returns them for the "wrote" lines.
+std::vector<std::string> addReportOutputs(const scene::SceneDesc& desc, const ReportArgs& r, OutputFiles& files) {
+    for (const auto* picture : {&r.gridPicture, &r.falseColour}) {
+        if (picture->empty()) continue;
+        tonemap::checkImageFormat(*picture);
+        if (tonemap::isHdrFormat(*picture))
+            throw OutputError(placeMessage(*picture, "", "a false-colour picture is a display image: use .png or .jpg"));
+    }
+    if (!r.gridPicture.empty() &&
+        std::none_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); }))
+        throw InputError(placeMessage(desc.file, "", "--grid-picture: the scene has no sensor grid or work plane"));
+    const std::vector<std::string> out{r.convergence, r.report, r.gridPicture, r.falseColour};
+    for (const auto& path : out)
+        if (!path.empty()) files.add(path);
+    return out;
+}
 
 void stageReports(const app::PipelineRun& run, const std::string& scene, const ReportArgs& r, OutputFiles& files) {
     if (!r.convergence.empty()) files.set(r.convergence, app::convergenceCsv(run));
     if (!r.report.empty()) files.set(r.report, app::runReportJson(run, scene));
+    auto picture = [&](const std::string& path, const tonemap::Picture& p) {
+        files.set(path, tonemap::encodeDisplayImage(path, p.width, p.height, p.rgb));
+    };
+    if (!r.gridPicture.empty()) picture(r.gridPicture, app::gridPicture(run.sensors));
+    if (!r.falseColour.empty() && run.image) picture(r.falseColour, app::luminancePicture(*run.image));
 }
 
 int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& reports) {
@@ -195,8 +221,9 @@ int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& repo
     OutputFiles files = filesOf(desc);
     const SensorFiles csvs = sensorFiles(desc, csv);
     std::vector<std::string> outputs = csvs.all();
-    outputs.insert(outputs.end(), {reports.convergence, reports.report});
     addOutputs(files, outputs);
+    const auto reportOutputs = addReportOutputs(desc, reports, files);
+    outputs.insert(outputs.end(), reportOutputs.begin(), reportOutputs.end());
     auto run = app::runPipeline(a.scene, o);
     reportSensors(run, a.scene, o, csvs, files);
     stageReports(run, a.scene, reports, files);
@@ -251,8 +278,9 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
         for (const auto& path : images) files.add(app::snapshotPath(path, k));
     const SensorFiles csvs = sensorFiles(desc, csv);
     std::vector<std::string> others = csvs.all();
-    others.insert(others.end(), {reports.convergence, reports.report});
     addOutputs(files, others);
+    const auto reportOutputs = addReportOutputs(desc, reports, files);
+    others.insert(others.end(), reportOutputs.begin(), reportOutputs.end());
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
     app::checkRenderedImage(*run.image, allowBlack);
@@ -369,6 +397,8 @@ int main(int argc, char** argv) {
                         "indirect error at every sensor with a reference: vertex values always, the gather each "
                         "time the unshot energy has halved)");
         cmd->add_option("--report", r.report, "Write a JSON account of the run (stages, time, memory, sensors)");
+        cmd->add_option("--grid-picture", r.gridPicture,
+                        "Write the sensor grids' illuminance in false colour (.png/.jpg): isolux lines, legend, statistics");
     };
 
     auto* render = cli.add_subcommand("render", "Solve the lighting and render the scene's camera view");
@@ -384,6 +414,8 @@ int main(int argc, char** argv) {
     render->add_option("--snapshots", snapshots,
                        "Also render K images during the solve (NAME.snap01.EXT ...), evenly spaced in log unshot energy")
         ->check(CLI::Range(0, 100));
+    render->add_option("--false-colour", renderReports.falseColour,
+                       "Also write the rendering's luminance in false colour (.png/.jpg; log scale, legend in cd/m²)");
     bool allowBlack = false;
     render->add_flag("--allow-black", allowBlack,
                      "Write the image even when every pixel is black (otherwise that is an error, exit 4)");

@@ -87,6 +87,7 @@ struct Camera {
 struct Sensor {
     std::string name;
     std::string grid;  ///< the sensor grid it is a point of ("" for a single sensor)
+    int gridU = -1, gridV = -1;  ///< its cell in the grid (u along the first axis)
     Vec3 position{0.0};
     Vec3 normal{0, 0, 1};
     std::optional<double> refDirect, refIndirect, refTotal;  ///< lx

@@ -145,7 +145,7 @@ class Builder {
             s.camera = Camera{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height};
         }
         for (const auto& d : m_desc.sensors)
-            s.sensors.push_back({d.name, d.grid, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
+            s.sensors.push_back({d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
         computeBounds(s);
         return s;
     }

@@ -377,6 +377,7 @@ void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out) {
             SensorDesc s;
             s.name = fmt::format("{}[{},{}]", name, i, j);
             s.grid = name;
+            s.gridU = i, s.gridV = j;
             s.position = origin + (i + 0.5) / nu * u + (j + 0.5) / nv * v;
             s.normal = n;
             out.push_back(s);
@@ -444,6 +445,7 @@ void parseWorkPlane(JsonObject w, int index, std::vector<SensorDesc>& out) {
             SensorDesc s;
             s.name = fmt::format("{}[{},{}]", name, i, j);
             s.grid = name;
+            s.gridU = i, s.gridV = j;
             s.position = x;
             s.normal = up;
             out.push_back(s);

@@ -165,6 +165,16 @@ echo keep > "$work/ro.grids.csv"; chmod 444 "$work/ro.grids.csv"
 expect 3 "read-only grid summary" "ro.grids.csv: cannot write: the file exists and is read-only" -- solve "$good" -q --set "$grid_set" --sensors "$work/ro.csv"
 if [ ! -e "$work/ro.csv" ]; then passed=$((passed + 1)); else echo "FAIL the sensor CSV was written although its summary could not be"; failures=$((failures + 1)); fi
 
+# False-colour pictures (issue 14): written when asked, checked like every output.
+if "$rayrad" render "$good" -q --set "$grid_set" --grid-picture "$work/fc_grid.png" --false-colour "$work/fc_lum.png" -o "$work/fc.png" >/dev/null 2>&1 &&
+    [ -s "$work/fc_grid.png" ] && [ -s "$work/fc_lum.png" ]; then
+    passed=$((passed + 1))
+else
+    echo "FAIL false-colour pictures"; failures=$((failures + 1))
+fi
+expect 2 "--grid-picture without grids" "--grid-picture: the scene has no sensor grid or work plane" -- solve "$good" -q --grid-picture "$work/outg.png"
+expect 3 "--false-colour as EXR" "outf.exr: a false-colour picture is a display image: use .png or .jpg" -- render "$good" -q -o "$work/out.png" --false-colour "$work/outf.exr"
+
 # ---- options (exit 2, before any work) -----------------------------------------------
 expect 2 "--exposure nan" "--exposure: expected stops between -64 and 64, got nan" -- render "$good" -o "$work/out.png" --exposure nan
 expect 2 "--exposure inf" "got inf" -- render "$good" -o "$work/out.png" --exposure inf
