@@ -1,41 +1,16 @@
 #include <app/plot.h>
 
 #include <tonemap/image_io.h>
+#include <tonemap/text_drawing.h>
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
-#include <cctype>
 #include <cmath>
-#include <map>
 
 namespace rayrad::app {
 
 namespace {
-
-/// 5×7 glyphs, one byte per row, bit 4 = leftmost column.
-const std::map<char, std::array<uint8_t, 7>>& font() {
-    static const std::map<char, std::array<uint8_t, 7>> f = {
-        {'0', {14, 17, 19, 21, 25, 17, 14}}, {'1', {4, 12, 4, 4, 4, 4, 14}},     {'2', {14, 17, 1, 2, 4, 8, 31}},
-        {'3', {31, 2, 4, 2, 1, 17, 14}},     {'4', {2, 6, 10, 18, 31, 2, 2}},    {'5', {31, 16, 30, 1, 1, 17, 14}},
-        {'6', {6, 8, 16, 30, 17, 17, 14}},   {'7', {31, 1, 2, 4, 8, 8, 8}},      {'8', {14, 17, 17, 14, 17, 17, 14}},
-        {'9', {14, 17, 17, 15, 1, 2, 12}},   {'.', {0, 0, 0, 0, 0, 12, 12}},     {'-', {0, 0, 0, 31, 0, 0, 0}},
-        {'+', {0, 4, 4, 31, 4, 4, 0}},       {'%', {24, 25, 2, 4, 8, 19, 3}},    {'(', {2, 4, 8, 8, 8, 4, 2}},
-        {')', {8, 4, 2, 2, 2, 4, 8}},        {',', {0, 0, 0, 0, 12, 4, 8}},      {':', {0, 12, 12, 0, 12, 12, 0}},
-        {'/', {1, 1, 2, 4, 8, 16, 16}},      {'=', {0, 0, 31, 0, 31, 0, 0}},     {'A', {14, 17, 17, 31, 17, 17, 17}},
-        {'B', {30, 17, 17, 30, 17, 17, 30}}, {'C', {14, 17, 16, 16, 16, 17, 14}}, {'D', {28, 18, 17, 17, 17, 18, 28}},
-        {'E', {31, 16, 16, 30, 16, 16, 31}}, {'F', {31, 16, 16, 30, 16, 16, 16}}, {'G', {14, 17, 16, 23, 17, 17, 15}},
-        {'H', {17, 17, 17, 31, 17, 17, 17}}, {'I', {14, 4, 4, 4, 4, 4, 14}},     {'J', {7, 2, 2, 2, 2, 18, 12}},
-        {'K', {17, 18, 20, 24, 20, 18, 17}}, {'L', {16, 16, 16, 16, 16, 16, 31}}, {'M', {17, 27, 21, 21, 17, 17, 17}},
-        {'N', {17, 17, 25, 21, 19, 17, 17}}, {'O', {14, 17, 17, 17, 17, 17, 14}}, {'P', {30, 17, 17, 30, 16, 16, 16}},
-        {'Q', {14, 17, 17, 17, 21, 18, 13}}, {'R', {30, 17, 17, 30, 20, 18, 17}}, {'S', {15, 16, 16, 14, 1, 1, 30}},
-        {'T', {31, 4, 4, 4, 4, 4, 4}},       {'U', {17, 17, 17, 17, 17, 17, 14}}, {'V', {17, 17, 17, 17, 17, 10, 4}},
-        {'W', {17, 17, 17, 21, 21, 21, 10}}, {'X', {17, 17, 10, 4, 10, 17, 17}}, {'Y', {17, 17, 10, 4, 4, 4, 4}},
-        {'Z', {31, 1, 2, 4, 8, 16, 31}},
-    };
-    return f;
-}
 
 class Canvas {
   public:
@@ -54,21 +29,22 @@ class Canvas {
                 for (int dy = 0; dy < width; ++dy) set(x + dx, y + dy, c);
         }
     }
-    void text(int x, int y, const std::string& s, const Rgb& c = Rgb(0.0)) {
-        for (char ch : s) {
-            auto it = font().find(static_cast<char>(std::toupper(static_cast<unsigned char>(ch))));
-            if (it != font().end())
-                for (int r = 0; r < 7; ++r)
-                    for (int col = 0; col < 5; ++col)
-                        if (it->second[r] & (16 >> col)) set(x + col, y + r, c);
-            x += 6;
-        }
+    /// Text whose vertical middle is at y, starting at x (or ending there, or centred).
+    void text(int x, int y, const std::string& s, tonemap::TextLabel::Align align = tonemap::TextLabel::Align::Left) {
+        m_labels.push_back({x, y, s, align, true, kTextSize});
     }
-    const std::vector<uint8_t>& pixels() const { return m_rgb; }
+    /// The picture with its text set (DejaVu Sans through OpenImageIO).
+    std::vector<uint8_t> pixels() const {
+        std::vector<uint8_t> out = m_rgb;
+        tonemap::drawText(out, m_w, m_h, m_labels);
+        return out;
+    }
 
   private:
+    static constexpr int kTextSize = 12;  ///< px
     int m_w, m_h;
     std::vector<uint8_t> m_rgb;
+    std::vector<tonemap::TextLabel> m_labels;
 };
 
 }  // namespace
@@ -100,22 +76,22 @@ void writePlotPng(const std::string& path, const std::vector<PlotPanel>& panels)
                 double xx = x0 + (e - lx0) / (lx1 - lx0) * (x1 - x0);
                 cv.line(xx, y0, xx, y1, grey);
                 std::string label = e >= 0 ? fmt::format("{:.0f}", std::pow(10.0, e)) : fmt::format("{:g}", std::pow(10.0, e));
-                cv.text(static_cast<int>(xx) - 3 * static_cast<int>(label.size()), static_cast<int>(y1) + 5, label);
+                cv.text(static_cast<int>(xx), static_cast<int>(y1) + 10, label, tonemap::TextLabel::Align::Centre);
             }
         double step = (p.yMax - p.yMin) / 8;
         for (int k = 0; k <= 8; ++k) {
             double v = p.yMin + k * step, yy = Y(v);
             cv.line(x0, yy, x1, yy, std::abs(v) < 1e-12 ? Rgb(0.4) : grey);
             std::string label = fmt::format("{:+g}", v);
-            cv.text(static_cast<int>(x0) - 6 * static_cast<int>(label.size()) - 4, static_cast<int>(yy) - 3, label);
+            cv.text(static_cast<int>(x0) - 4, static_cast<int>(yy), label, tonemap::TextLabel::Align::Right);
         }
         cv.line(x0, y0, x0, y1, black);
         cv.line(x0, y1, x1, y1, black);
         cv.line(x1, y0, x1, y1, black);
         cv.line(x0, y0, x1, y0, black);
-        cv.text(static_cast<int>(x0), 8, p.title);
-        cv.text(static_cast<int>((x0 + x1) / 2) - 3 * static_cast<int>(p.xLabel.size()), static_cast<int>(y1) + 20, p.xLabel);
-        cv.text(ox + 4, static_cast<int>(y0) - 14 + 0, p.yLabel);
+        cv.text(static_cast<int>((x0 + x1) / 2), 9, p.title, tonemap::TextLabel::Align::Centre);
+        cv.text(static_cast<int>((x0 + x1) / 2), static_cast<int>(y1) + 27, p.xLabel, tonemap::TextLabel::Align::Centre);
+        cv.text(static_cast<int>(x0) - 4, static_cast<int>(y0) - 10, p.yLabel, tonemap::TextLabel::Align::Right);
         for (size_t si = 0; si < p.series.size(); ++si) {
             const auto& s = p.series[si];
             for (size_t k = 1; k < s.points.size(); ++k) {
@@ -124,7 +100,7 @@ void writePlotPng(const std::string& path, const std::vector<PlotPanel>& panels)
             }
             int ly = ph + static_cast<int>(si) * legendH;
             cv.line(ox + left, ly + 3, ox + left + 18, ly + 3, s.color, 3);
-            cv.text(ox + left + 24, ly, s.label);
+            cv.text(ox + left + 24, ly + 3, s.label);
         }
     }
     tonemap::writeDisplayImage(path, pw * static_cast<int>(panels.size()), h, cv.pixels());

@@ -23,7 +23,7 @@ struct PlotPanel {
 };
 
 /// Draws the panels side by side with axes, ticks, a zero line and a legend, and
-/// writes a PNG (atomically). Text uses a built-in 5×7 upper-case font.
+/// writes a PNG (atomically). Text is set in DejaVu Sans (tonemap/text_drawing.h).
 void writePlotPng(const std::string& path, const std::vector<PlotPanel>& panels);
 
 }  // namespace rayrad::app

@@ -192,9 +192,9 @@ void plotGroup(const std::string& path, const std::vector<Result>& results, cons
     std::vector<PlotPanel> panels;
     for (const char* point : {"A", "C"}) {
         PlotPanel panel;
-        panel.title = fmt::format("{}: POINT {} INDIRECT ERROR (VERTEX)", title, point);
-        panel.xLabel = "SOLVE TIME S";
-        panel.yLabel = "ERROR %";
+        panel.title = fmt::format("{}: indirect error at {} (vertex values)", title, point);
+        panel.xLabel = "solve time, s";
+        panel.yLabel = "error, %";
         panel.yMin = -20, panel.yMax = 20;
         size_t k = 0;
         for (const auto& r : results) {
@@ -217,9 +217,7 @@ void plotGroup(const std::string& path, const std::vector<Result>& results, cons
 int validateCube(const ValidateOptions& o) {
     std::error_code ec;
     if (!fs::is_regular_file(o.scene, ec)) throw InputError(placeMessage(o.scene, "", "no such file"));
-    fs::create_directories(o.outDir, ec);
-    if (ec) throw InputError(placeMessage(o.outDir, "", "cannot create the output directory: " + ec.message()));
-    checkWritable((fs::path(o.outDir) / "results.csv").string());
+    prepareResults(o.outDir);
 
     std::string exe = selfExe();
     auto configs = configurations(o.quick);
@@ -312,8 +310,8 @@ int validateCube(const ValidateOptions& o) {
 
     std::string meshPlot = (fs::path(o.outDir) / "error_vs_time_mesh.png").string();
     std::string clusterPlot = (fs::path(o.outDir) / "error_vs_time_clusters.png").string();
-    plotGroup(meshPlot, results, "mesh", "MESH SWEEP");
-    plotGroup(clusterPlot, results, "clusters", "CLUSTER SWEEP");
+    plotGroup(meshPlot, results, "mesh", "Mesh sweep");
+    plotGroup(clusterPlot, results, "clusters", "Cluster sweep");
     fmt::print("\nwrote {}, {}, {} and one report, convergence log and log per run\n", csvPath, meshPlot, clusterPlot);
     return 0;
 }

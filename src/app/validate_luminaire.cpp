@@ -1,6 +1,7 @@
 #include <app/validate_luminaire.h>
 
 #include <app/pipeline.h>
+#include <app/validate_runs.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <radiosity/solution.h>
@@ -134,12 +135,9 @@ Result validateFile(const std::string& file, const std::string& outDir) {
 }  // namespace
 
 int validateLuminaire(const ValidateLuminaireOptions& o) {
-    std::error_code ec;
-    fs::create_directories(o.outDir, ec);
-    if (ec) throw InputError(placeMessage(o.outDir, "", "cannot create the output directory: " + ec.message()));
-    const std::string csvPath = (fs::path(o.outDir) / "results.csv").string();
-    checkWritable(csvPath);
+    const std::string csvPath = prepareResults(o.outDir);
     std::vector<std::string> files;
+    std::error_code ec;
     for (const auto& e : fs::directory_iterator(o.dataDir, ec)) {
         std::string ext = e.path().extension().string();
         for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

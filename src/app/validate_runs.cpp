@@ -1,5 +1,8 @@
 #include <app/validate_runs.h>
 
+#include <core/input_error.h>
+#include <core/output_file.h>
+
 #include <filesystem>
 
 #include <fcntl.h>
@@ -36,6 +39,16 @@ std::string bundledPath(const std::string& relative) {
     for (const auto& c : candidates)
         if (fs::exists(c, ec)) return c.lexically_normal().string();
     return relative;
+}
+
+std::string prepareResults(const std::string& outDir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(outDir, ec);
+    if (ec) throw InputError(placeMessage(outDir, "", "cannot create the output directory: " + ec.message()));
+    const std::string csvPath = (fs::path(outDir) / "results.csv").string();
+    checkWritable(csvPath);
+    return csvPath;
 }
 
 }  // namespace rayrad::app

@@ -14,6 +14,10 @@ inline std::string selfExe() { return "/proc/self/exe"; }
 /// the source tree this binary was built from. The path as given if none has it.
 std::string bundledPath(const std::string& relative);
 
+/// Creates `outDir` (and its parents) and returns outDir/results.csv, checked writable;
+/// throws InputError or OutputError naming the problem.
+std::string prepareResults(const std::string& outDir);
+
 /// Runs args (args[0] the program) with stdout and stderr to logPath; the exit code, or
 /// -1 when it could not start or did not exit normally. Each child has its own peak memory.
 int runChild(const std::vector<std::string>& args, const std::string& logPath);

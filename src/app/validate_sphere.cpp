@@ -41,11 +41,8 @@ std::string errors(const json& report, const char* key) {
 }  // namespace
 
 int validateSphere(const ValidateSphereOptions& o) {
+    const std::string csvPath = prepareResults(o.outDir);
     std::error_code ec;
-    fs::create_directories(o.outDir, ec);
-    if (ec) throw InputError(placeMessage(o.outDir, "", "cannot create the output directory: " + ec.message()));
-    std::string csvPath = (fs::path(o.outDir) / "results.csv").string();
-    checkWritable(csvPath);
     std::vector<SphereRun> runs;
     for (int n : {8, 32})
         for (bool clusters : {true, false})

@@ -3,6 +3,7 @@
 #include <scene/photometry.h>
 
 #include <core/input_error.h>
+#include <scene/text_lines.h>
 
 #include <fmt/format.h>
 
@@ -15,20 +16,7 @@ namespace {
 
 class LdtLines {
   public:
-    LdtLines(const std::string& text, std::string name) : m_name(std::move(name)) {
-        std::string line;
-        for (size_t i = 0; i < text.size(); ++i) {
-            const char c = text[i];
-            if (c == '\r' || c == '\n') {
-                m_lines.push_back(line);
-                line.clear();
-                if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-            } else {
-                line += c;
-            }
-        }
-        if (!line.empty()) m_lines.push_back(line);
-    }
+    LdtLines(const std::string& text, std::string name) : m_name(std::move(name)), m_lines(splitLines(text)) {}
 
     [[noreturn]] void fail(size_t line, const std::string& why) const {
         throw InputError(placeMessage(m_name, fmt::format("line {}", line), why));

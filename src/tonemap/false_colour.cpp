@@ -2,8 +2,7 @@
 
 #include <core/input_error.h>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include <tonemap/text_drawing.h>
 
 #include <fmt/format.h>
 
@@ -15,7 +14,6 @@ namespace rayrad::tonemap {
 
 namespace {
 
-constexpr const char* kFont = "DejaVuSans";
 constexpr int kFontSize = 15;        ///< px
 constexpr int kLegendWidth = 170;    ///< px, to the right of the field
 constexpr int kMargin = 12;          ///< px
@@ -92,9 +90,15 @@ Picture renderFalseColour(const ScalarField& field, const FalseColourOptions& o)
     const int n = std::max(1, o.pixelsPerValue);
     const int fw = field.width * n, fh = field.height * n;
     const int width = fw + kLegendWidth + 2 * kMargin, height = std::max(fh, 260) + 2 * kMargin + kFontSize * 2;
-    OIIO::ImageBuf buf(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
-    const float white[3] = {1, 1, 1};
-    OIIO::ImageBufAlgo::fill(buf, white);
+    Picture out;
+    out.width = width;
+    out.height = height;
+    out.rgb.assign(static_cast<size_t>(width) * height * 3, 255);
+    auto set = [&](int x, int y, const float rgb[3]) {
+        if (x < 0 || y < 0 || x >= width || y >= height) return;
+        for (int c = 0; c < 3; ++c)
+            out.rgb[(static_cast<size_t>(y) * width + x) * 3 + c] = static_cast<uint8_t>(std::lround(std::clamp(rgb[c], 0.0f, 1.0f) * 255));
+    };
     auto at = [&](int x, int y) { return field.values[static_cast<size_t>(y) * field.width + x]; };
     std::vector<double> value(static_cast<size_t>(fw) * fh, std::numeric_limits<double>::quiet_NaN());
     for (int py = 0; py < fh; ++py)
@@ -132,7 +136,7 @@ Picture renderFalseColour(const ScalarField& field, const FalseColourOptions& o)
                         rgb[0] = rgb[1] = rgb[2] = 0.08f;
                 }
             }
-            buf.setpixel(kMargin + px, kMargin + kFontSize * 2 + py, rgb);
+            set(kMargin + px, kMargin + kFontSize * 2 + py, rgb);
         }
 
     // The legend: a colour bar with a tick and a number at every level, the title above.
@@ -140,30 +144,17 @@ Picture renderFalseColour(const ScalarField& field, const FalseColourOptions& o)
     for (int y = 0; y < barHeight; ++y) {
         float rgb[3];
         paletteColour(1.0 - static_cast<double>(y) / (barHeight - 1), rgb);
-        for (int x = 0; x < 24; ++x) buf.setpixel(barX + x, barTop + y, rgb);
+        for (int x = 0; x < 24; ++x) set(barX + x, barTop + y, rgb);
     }
     const float ink[3] = {0.05f, 0.05f, 0.05f};
-    auto text = [&](int x, int y, const std::string& s, OIIO::ImageBufAlgo::TextAlignY align) {
-        if (!OIIO::ImageBufAlgo::render_text(buf, x, y, s, kFontSize, kFont, ink, OIIO::ImageBufAlgo::TextAlignX::Left, align))
-            throw InputError(fmt::format("cannot draw text for the false-colour legend: {} (is the font {} installed? "
-                                         "Debian package fonts-dejavu-core)",
-                                         buf.geterror(), kFont));
-    };
+    std::vector<TextLabel> labels;
     for (double v : levels) {
         const int y = barTop + static_cast<int>(std::lround((1 - scalePosition(v, lo, maximum, o.logScale)) * (barHeight - 1)));
-        for (int x = 24; x < 30; ++x) buf.setpixel(barX + x, y, ink);
-        text(barX + 34, y, label(v) + " " + o.unit, OIIO::ImageBufAlgo::TextAlignY::Center);
+        for (int x = 24; x < 30; ++x) set(barX + x, y, ink);
+        labels.push_back({barX + 34, y, label(v) + " " + o.unit, TextLabel::Align::Left, true, kFontSize});
     }
-    text(kMargin, kMargin + kFontSize, o.title, OIIO::ImageBufAlgo::TextAlignY::Baseline);
-
-    Picture out;
-    out.width = width;
-    out.height = height;
-    out.rgb.resize(static_cast<size_t>(width) * height * 3);
-    std::vector<float> pixels(out.rgb.size());
-    buf.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, pixels.data());
-    for (size_t i = 0; i < pixels.size(); ++i)
-        out.rgb[i] = static_cast<uint8_t>(std::lround(std::clamp(pixels[i], 0.0f, 1.0f) * 255));
+    labels.push_back({kMargin, kMargin + kFontSize, o.title, TextLabel::Align::Left, false, kFontSize});
+    drawText(out.rgb, width, height, labels);
     return out;
 }
 
