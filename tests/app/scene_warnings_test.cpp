@@ -37,7 +37,7 @@ const char* kBlock = R"(, {"type": "box", "material": "wall", "min": [1, 0, 1], 
 
 }  // namespace
 
-TEST_CASE("a sound room gets no warning; sensors on edges and corners are not 'buried'", "[warnings]") {
+TEST_CASE("a sound room gets no warning and sensors on edges and corners are not 'buried'", "[warnings]") {
     auto w = warningsFor("sound", kBlock, kLight,
                          R"({"name": "floor", "position": [3, 0, 3], "normal": [0, 1, 0]},
                             {"name": "edge", "position": [0, 0, 3], "normal": [0, 1, 0]},

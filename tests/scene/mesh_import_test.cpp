@@ -73,7 +73,7 @@ std::string importError(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("PLY: ASCII, binary little and big endian give the same triangles; quads are triangulated",
+TEST_CASE("PLY: ASCII, binary little and big endian give the same triangles and quads are triangulated",
           "[scene][import]") {
     std::string format = GENERATE("ascii", "binary_little_endian", "binary_big_endian");
     auto mesh = importMesh(writePly("tri_" + format + ".ply", kVertices, {{0, 1, 2}, {0, 2, 3}, {0, 1, 4}}, format),
@@ -124,7 +124,7 @@ TEST_CASE("PLY: every truncation of a binary file loads or gives an InputError",
     }
 }
 
-TEST_CASE("OBJ with .mtl: usemtl groups become materials (Kd reflectance, Ke emission); a JSON material overrides",
+TEST_CASE("OBJ with .mtl: usemtl groups become materials (Kd reflectance, Ke emission) and a JSON material overrides",
           "[scene][import]") {
     std::ofstream("/tmp/rayrad_test_room.mtl") << "newmtl wall\nKd 0.6 0.5 0.4\n\nnewmtl lamp\nKd 0 0 0\nKe 100 100 100\n"
                                                   "map_Kd wall.png\n";

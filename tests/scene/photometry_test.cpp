@@ -111,7 +111,7 @@ TEST_CASE("symmetries unfold: a quadrant file answers for every azimuth", "[scen
     CHECK(q.integratedFlux() == Approx(2 * kPi * 145).epsilon(1e-12));
 }
 
-TEST_CASE("LM-63-2019 does not multiply by the file-generation field; older versions multiply by their factors",
+TEST_CASE("LM-63-2019 does not multiply by the file-generation field but older versions multiply by their factors",
           "[scene][photometry]") {
     const std::string v = "0 90 180", c = repeat("10", 3);
     const Photometry y2019 = parseIes(iesFile("IES:LM-63-2019", v, "0", c, 3, 1, "0.8 1.10 5"), "a.ies");
