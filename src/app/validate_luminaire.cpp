@@ -6,6 +6,7 @@
 #include <core/output_file.h>
 #include <radiosity/solution.h>
 #include <scene/photometry.h>
+#include <scene/scene.h>
 
 #include <fmt/format.h>
 
@@ -20,7 +21,7 @@ namespace rayrad::app {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr double kHeight = 3.0;            ///< m, luminaire above the floor
+constexpr double kHeight = 3.0;            ///< m, luminaire above the floor (more for a large opening)
 constexpr double kMaxGammaDeg = 80.0;      ///< farther out the floor points are too far away
 constexpr double kRho = 0.5;               ///< the closed sphere's reflectance
 constexpr double kDirectBound = 1e-6;      ///< relative: exact at the table's nodes
@@ -54,7 +55,9 @@ Result validateFile(const std::string& file, const std::string& outDir) {
     r.flux = p.integratedFlux();
     const auto start = std::chrono::steady_clock::now();
     const std::string absolute = fs::absolute(file).string();
-    // (1) Direct light on a black floor at the table's nodes in the C0 and C90 planes.
+    // (1) Direct light on a black floor at the table's nodes in the C0 and C90 planes,
+    // beyond the near field (kNearFieldSizes opening sizes), where the luminaire is a point.
+    const double height = std::max(kHeight, 1.01 * scene::kNearFieldSizes * std::max(p.width, p.length) / std::cos(kMaxGammaDeg * kPi / 180));
     // C0 along +x; C90 = (−nadir) × c0 = +y × +x = −z.
     std::string sensors;
     struct Expected {
@@ -67,11 +70,11 @@ Result validateFile(const std::string& file, const std::string& outDir) {
         for (size_t v = 0; v < p.vertical.size(); ++v) {
             const double gamma = p.vertical[v];
             if (gamma >= kMaxGammaDeg) break;
-            const double g = gamma * kPi / 180, rho = kHeight * std::tan(g), cr = c * kPi / 180;
+            const double g = gamma * kPi / 180, rho = height * std::tan(g), cr = c * kPi / 180;
             const double x = rho * std::cos(cr), z = -rho * std::sin(cr);
             sensors += fmt::format("{}{{\"name\": \"p{}\", \"position\": [{:.17g}, 0, {:.17g}], \"normal\": [0, 1, 0]}}",
                                    sensors.empty() ? "" : ", ", expected.size(), x, z);
-            expected.push_back({p.candela[h][v] * std::pow(std::cos(g), 3) / (kHeight * kHeight)});  // E = I cos³γ / h²
+            expected.push_back({p.candela[h][v] * std::pow(std::cos(g), 3) / (height * height)});  // E = I cos³γ / h²
         }
     }
     const std::string floor = fmt::format(
@@ -79,7 +82,7 @@ Result validateFile(const std::string& file, const std::string& outDir) {
             "objects": [{{"type": "quad", "material": "black", "vertices": [[-40, 0, -40], [-40, 0, 40], [40, 0, 40], [40, 0, -40]]}}],
             "lights": [{{"type": "luminaire", "file": "{}", "position": [0, {}, 0], "aim": [0, 0, 0], "c0_toward": [1, 0, 0]}}],
             "sensors": [{}], "radiosity": {{"max_edge": 10}}}})",
-        absolute, kHeight, sensors);
+        absolute, height, sensors);
     PipelineOptions quiet;
     quiet.quiet = true;
     const auto direct = runPipeline(writeScene(outDir, r.file + ".floor", floor), quiet);

@@ -92,16 +92,18 @@ double DirectLight::emittedFlux() const {
 }
 
 Rgb DirectLight::pointSourceIntensityToward(size_t s, const Vec3& x) const {
-    const scene::PointLight& l = m_pointLights[s % perChain()];
-    const Vec3 from = pointSourcePosition(s);
-    const Vec3 d = x - from;
+    const Vec3 d = x - pointSourcePosition(s);
     const double r = glm::length(d);
-    if (r <= 0) return Rgb(0.0);
-    if (s < perChain()) return l.intensityToward(d / r);
+    return r > 0 ? pointSourceIntensityAlong(s, d / r) : Rgb(0.0);
+}
+
+Rgb DirectLight::pointSourceIntensityAlong(size_t s, const Vec3& w) const {
+    const scene::PointLight& l = m_pointLights[s % perChain()];
+    if (s < perChain()) return l.intensityToward(w);
     // An image's transform is a product of reflections: its linear part is orthogonal, so
     // the direction leaving the real light is the transpose applied to the unfolded one.
     const MirrorImage& image = m_images[s / perChain() - 1];
-    const Vec3 leaving = glm::transpose(glm::dmat3(image.transform)) * (d / r);
+    const Vec3 leaving = glm::transpose(glm::dmat3(image.transform)) * w;
     return l.intensityToward(leaving) * image.weight;
 }
 
@@ -110,17 +112,39 @@ Vec3 DirectLight::pointSourcePosition(size_t s) const {
     return s < perChain() ? p : m_images[s / perChain() - 1].point(p);
 }
 
-Rgb DirectLight::unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n) {
-    Vec3 d = l.position - x;
+namespace {
+/// E = I(ω) cosθ / d² at x from a source at p sending l's distribution.
+Rgb pointIlluminance(const scene::PointLight& l, const Vec3& p, const Vec3& x, const Vec3& n) {
+    Vec3 d = p - x;
     double r2 = glm::dot(d, d);
     if (r2 <= 0) return Rgb(0.0);
     double r = std::sqrt(r2);
     double cosTheta = glm::dot(n, d) / r;
     if (cosTheta <= 0) return Rgb(0.0);
-    return l.intensityToward(-d / r) * (cosTheta / r2);  // E = I cosθ / d²
+    return l.intensityToward(-d / r) * (cosTheta / r2);
+}
+}  // namespace
+
+bool DirectLight::inNearField(const scene::PointLight& l, const Vec3& x) {
+    return !l.openingPoints.empty() && glm::length(x - l.position) < scene::kNearFieldSizes * l.openingSize;
+}
+
+Rgb DirectLight::unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n) {
+    if (!inNearField(l, x)) return pointIlluminance(l, l.position, x, n);
+    Rgb sum(0.0);  // the opening's parts, each with 1/n of the distribution
+    for (const Vec3& p : l.openingPoints) sum += pointIlluminance(l, p, x, n);
+    return sum / static_cast<double>(l.openingPoints.size());
 }
 
 Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) {
+    if (inNearField(l, x)) {
+        Rgb sum(0.0);
+        for (const Vec3& p : l.openingPoints) {
+            const Rgb e = pointIlluminance(l, p, x, n);
+            if (e != Rgb(0.0) && vis.visibleFromSurface(x, n, p)) sum += e;
+        }
+        return sum / static_cast<double>(l.openingPoints.size());
+    }
     const Rgb e = unshadowedFromPointLight(l, x, n);
     if (e == Rgb(0.0) || !vis.visibleFromSurface(x, n, l.position)) return Rgb(0.0);
     return e;

@@ -71,6 +71,23 @@ class DirectLight {
     /// The intensity (cd, RGB; × Π Ks for an image) point source s sends toward the point
     /// x, along the straight (for an image: unfolded) path, ignoring occluders and apertures.
     Rgb pointSourceIntensityToward(size_t s, const Vec3& x) const;
+    /// True when x is in the near field of real point source s: a luminaire's light then
+    /// leaves from its whole opening (images stay point sources).
+    bool inNearFieldOf(size_t s, const Vec3& x) const { return s < perChain() && inNearField(m_pointLights[s], x); }
+    /// The points point source s's light leaves from as seen from x: a luminaire's
+    /// opening's parts when x is within `sizes` times the opening's size, else its position.
+    std::vector<Vec3> emissionPoints(size_t s, const Vec3& x, double sizes = scene::kNearFieldSizes) const {
+        if (s < perChain()) {
+            const scene::PointLight& l = m_pointLights[s];
+            if (!l.openingPoints.empty() && glm::length(x - l.position) < sizes * l.openingSize) return l.openingPoints;
+        }
+        return {pointSourcePosition(s)};
+    }
+    /// The intensity (cd, RGB; × Π Ks for an image) point source s sends along the unit
+    /// direction w (for an image: the unfolded direction), one part's share in the near field
+    /// being this / the number of parts.
+    Rgb pointSourceIntensityAlong(size_t s, const Vec3& w) const;
+    static bool inNearField(const scene::PointLight& l, const Vec3& x);
     /// True when point source s sends the same intensity every way (a point light).
     bool isIsotropic(size_t s) const {
         const scene::PointLight& l = m_pointLights[s % perChain()];
@@ -105,6 +122,9 @@ class DirectLight {
   private:
     size_t perChain() const { return m_pointLights.size() + m_areaLights.size(); }
     /// E = I(ω) cosθ / d² without the shadow ray.
+    /// Point and spot lights, and luminaires beyond their near field: E = I(ω) cosθ / d²
+    /// from the position. A luminaire within kNearFieldSizes of its opening's size: the
+    /// mean over its opening's parts (each with its own shadow ray in fromPointLight).
     static Rgb unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n);
     static Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis);
     static Rgb fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,

@@ -58,6 +58,9 @@ std::array<Vec3, 4> evaluationPoints(const PatchMesh& mesh, const Patch& p) {
 /// Deepest split, and tolerance, of the solid-angle integral of a point source whose
 /// intensity varies with direction (a spot, a luminaire).
 constexpr int kIntensityMaxDepth = 6;
+/// Within this many opening sizes of a luminaire, the direct pass integrates over its
+/// opening's parts (see pointSourceMean).
+constexpr double kOpeningKernelSizes = 5.0;
 constexpr double kIntensityRelTolerance = 1e-4;
 
 /// ∫ Y(I(ω)) dω over the solid angle triangle t subtends from point source s (at
@@ -66,8 +69,9 @@ constexpr double kIntensityRelTolerance = 1e-4;
 double intensityOverSolidAngle(const DirectLight& lights, size_t s, const Vec3& source, const std::array<Vec3, 3>& t,
                                int depth) {
     auto coarse = [&](const std::array<Vec3, 3>& u) {
-        const Vec3 c = (u[0] + u[1] + u[2]) / 3.0;
-        return triangleSolidAngle(source, u[0], u[1], u[2]) * luminance(lights.pointSourceIntensityToward(s, c));
+        const Vec3 d = (u[0] + u[1] + u[2]) / 3.0 - source;
+        const double r = glm::length(d);
+        return r > 0 ? triangleSolidAngle(source, u[0], u[1], u[2]) * luminance(lights.pointSourceIntensityAlong(s, d / r)) : 0.0;
     };
     const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
     const std::array<Vec3, 3> child[4] = {{t[0], m01, m20}, {m01, t[1], m12}, {m20, m12, t[2]}, {m01, m12, m20}};
@@ -93,15 +97,28 @@ double intensityOverSolidAngle(const DirectLight& lights, size_t s, const Vec3& 
 Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights, size_t s,
                     const Visibility& vis, const std::array<Vec3, 4>& points, const Rgb* values, const Rgb& fourPoint,
                     const std::vector<std::array<double, 2>>& refined, bool refine) {
-    const Vec3 source = lights.pointSourcePosition(s);
-    const double h = glm::dot(normal, source - p.centroid);  // m
-    if (h <= 0) return fourPoint;
+    // The rescaling below corrects the rule's sampling of a peaked kernel. Close to a
+    // luminaire (within kOpeningKernelSizes of its opening's size) the kernel is its
+    // opening's parts' (each with an equal share of the distribution); farther, even in
+    // its near field where the values come from the parts, the point kernel is close
+    // enough and far cheaper.
+    const std::vector<Vec3> sources = lights.emissionPoints(s, p.centroid, kOpeningKernelSizes);
     const bool isotropic = lights.isIsotropic(s);
     auto kernel = [&](const Vec3& x) {  // Y of the unshadowed E (lx), up to I for a point light
-        double d = glm::length(source - x);
-        const double k = h / (d * d * d);  // cosθ / d², 1/m²
-        return isotropic ? k : k * luminance(lights.pointSourceIntensityToward(s, x));
+        double sum = 0;
+        for (const Vec3& source : sources) {
+            const double h = glm::dot(normal, source - x);  // m
+            if (h <= 0) continue;
+            const Vec3 d = x - source;
+            const double r = glm::length(d);
+            const double k = h / (r * r * r);  // cosθ / d², 1/m²
+            sum += isotropic ? k : k * luminance(lights.pointSourceIntensityAlong(s, d / r));
+        }
+        return sum / static_cast<double>(sources.size());
     };
+    bool above = false;  // some source in front of the patch's plane
+    for (const Vec3& source : sources) above |= glm::dot(normal, source - p.centroid) > 0;
+    if (!above) return fourPoint;
     Rgb value = fourPoint;
     double ruleKernel = 0;
     int lit = 0;
@@ -122,8 +139,11 @@ Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         ruleKernel /= static_cast<double>(refined.size());
     }
     const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
-    const double exactKernel = (isotropic ? triangleSolidAngle(source, t[0], t[1], t[2])
-                                          : intensityOverSolidAngle(lights, s, source, t, 0)) / p.area;
+    double exactKernel = 0;  // the mean over the sources of (1/A) ∫ I dω over the patch
+    for (const Vec3& source : sources)
+        exactKernel += (isotropic ? triangleSolidAngle(source, t[0], t[1], t[2])
+                                  : intensityOverSolidAngle(lights, s, source, t, 0)) / p.area;
+    exactKernel /= static_cast<double>(sources.size());
     return ruleKernel > 0 ? value * (exactKernel / ruleKernel) : fourPoint;
 }
 

@@ -80,16 +80,22 @@ double Photometry::intensity(double verticalDeg, double horizontalDeg) const {
     if (candela.empty()) return 0;
     double v = verticalDeg;
     if (type != PhotometricType::C && near(vertical.front(), 0)) v = std::abs(v);  // symmetric about the horizontal
-    std::vector<double> column(horizontal.size());
-    for (size_t h = 0; h < horizontal.size(); ++h) column[h] = interpolate(vertical, candela[h], v);
-    if (horizontal.size() == 1) return column[0];
+    auto plane = [&](size_t h) { return interpolate(vertical, candela[h], v); };
+    if (horizontal.size() == 1) return plane(0);
     const double h = unfoldHorizontal(*this, horizontalDeg);
     if (type == PhotometricType::C && h > horizontal.back() && near(horizontal.front(), 0)) {
         // A full circle stored without its 360° plane (C0 … C345): wrap to C0.
         const double t = (h - horizontal.back()) / (360 - horizontal.back());
-        return column.back() + t * (column.front() - column.back());
+        return (1 - t) * plane(horizontal.size() - 1) + t * plane(0);
     }
-    return interpolate(horizontal, column, h);
+    if (h < horizontal.front() - 1e-9 || h > horizontal.back() + 1e-9) return 0.0;
+    // The two stored planes around h, then linear between them.
+    auto hi = std::upper_bound(horizontal.begin(), horizontal.end(), h);
+    if (hi == horizontal.end()) return plane(horizontal.size() - 1);
+    if (hi == horizontal.begin()) return plane(0);
+    const size_t j = static_cast<size_t>(hi - horizontal.begin());
+    const double t = (h - horizontal[j - 1]) / (horizontal[j] - horizontal[j - 1]);
+    return (1 - t) * plane(j - 1) + t * plane(j);
 }
 
 double Photometry::integratedFlux() const {

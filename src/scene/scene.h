@@ -56,6 +56,10 @@ struct SurfaceGroup {
 
 /// A point light or a spot, in candela. I(θ) = intensity for θ ≤ inner, a smooth step
 /// down to 0 at the outer angle (spots); isotropic for points.
+/// A luminaire is a point source beyond this many times its opening's size, an area source
+/// (its opening, each part with the distribution) within.
+constexpr double kNearFieldSizes = 5.0;
+
 struct PointLight {
     Vec3 position{0.0};
     Rgb intensity{0.0};     ///< cd per channel on the axis (luminance-weighted Y = given cd)
@@ -73,6 +77,12 @@ struct PointLight {
     Vec3 nadir{0, -1, 0}, c0{1, 0, 0};
     double photometricScale = 1;
     double photometricFlux = 0;
+    /// A luminaire's luminous opening (the file's width and length, in the plane ⟂ nadir
+    /// through `position`) as a grid of equal parts, world space; empty without one.
+    /// Within kNearFieldSizes of its size the light leaves from these points, each with
+    /// 1/n of the distribution; farther, from `position`.
+    std::vector<Vec3> openingPoints;
+    double openingSize = 0;  ///< m, the opening's larger dimension
 
     /// Intensity in cd (RGB) toward the unit direction `w` (from the light).
     Rgb intensityToward(const Vec3& w) const;

@@ -398,6 +398,7 @@ class Builder {
             p.intensity = l.color;
             p.photometricScale = (l.fluxLm ? *l.fluxLm / fileFlux : 1.0) * l.dimming * l.maintenance;
             p.photometricFlux = p.photometricScale * fileFlux;
+            if (!l.pointSource) addOpening(p, *web);
             return p;
         }
         if (l.kind == LightKind::Spot) {
@@ -408,6 +409,25 @@ class Builder {
             if (p.cosInner - p.cosOuter < 1e-12) p.cosInner = p.cosOuter + 1e-12;  // hard-edged spot
         }
         return p;
+    }
+
+    /// The luminous opening as a grid of up to kOpeningParts × kOpeningParts equal parts (a
+    /// round one: the parts of that grid inside the circle), in the plane ⟂ nadir, length
+    /// along C0.
+    static constexpr double kOpeningParts = 4;
+    static void addOpening(PointLight& p, const Photometry& web) {
+        const double length = web.round ? web.width : web.length, width = web.width;
+        p.openingSize = std::max(length, width);
+        if (!(p.openingSize > 0)) return;
+        const Vec3 c90 = glm::cross(-p.nadir, p.c0);
+        const int kl = std::max(1, static_cast<int>(std::lround(kOpeningParts * length / p.openingSize)));
+        const int kw = std::max(1, static_cast<int>(std::lround(kOpeningParts * width / p.openingSize)));
+        for (int i = 0; i < kl; ++i)
+            for (int j = 0; j < kw; ++j) {
+                const double u = ((i + 0.5) / kl - 0.5) * length, v = ((j + 0.5) / kw - 0.5) * width;
+                if (web.round && u * u + v * v > 0.25 * width * width) continue;
+                p.openingPoints.push_back(p.position + u * p.c0 + v * c90);
+            }
     }
 
     static void computeBounds(Scene& s) {

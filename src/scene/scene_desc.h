@@ -71,6 +71,7 @@ struct LightDesc {
     std::optional<double> fluxLm;    ///< scale the file's table to this flux
     double dimming = 1.0;            ///< × the light, (0, 1]
     double maintenance = 1.0;        ///< light-loss factor, (0, 1]
+    bool pointSource = false;        ///< ignore the file's opening: a point source at any distance
     std::string lightGroup;          ///< the light group it belongs to ("" none)
 };
 

@@ -244,6 +244,7 @@ void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
     d.maintenance = l.number("maintenance_factor", 1.0);
     if (!(d.maintenance > 0 && d.maintenance <= 1))
         l.error("maintenance_factor", fmt::format("expected a factor in (0, 1], got {}", d.maintenance));
+    d.pointSource = l.boolean("point_source").value_or(false);
     if (l.has("color") && l.has("cct_k")) l.error("cct_k", "give either \"color\" or \"cct_k\", not both");
     if (l.has("cct_k")) {
         const double k = l.number("cct_k", 4000.0);

@@ -8,6 +8,7 @@
 #include <app/light_group_parts.h>
 #include <scene/light_colour.h>
 #include <scene/light_groups.h>
+#include <radiosity/form_factor.h>
 #include <scene/photometry.h>
 
 #include "pipeline_test_util.h"
@@ -23,6 +24,8 @@ using namespace rayrad;
 using test::quiet;
 
 namespace {
+
+double kNearFieldSizes() { return scene::kNearFieldSizes; }
 
 const std::string kIes = test::sourcePath("tests/data/luminaires/radiance_examp1.ies");
 
@@ -43,7 +46,8 @@ std::string sphereWithLuminaire(double rho, const std::string& luminaire) {
 
 TEST_CASE("a luminaire in a closed sphere: direct light from its table, indirect rho/(1-rho) Phi/A", "[luminaire]") {
     const double rho = 0.5;
-    const std::string json = sphereWithLuminaire(rho, fmt::format(R"("file": "{}", "aim": [0, -1, 0], "c0_toward": [1, 0, 0])", kIes));
+    // A point source (its 1.2 m opening would make the sphere its near field).
+    const std::string json = sphereWithLuminaire(rho, fmt::format(R"("file": "{}", "aim": [0, -1, 0], "c0_toward": [1, 0, 0], "point_source": true)", kIes));
     auto run = app::runPipeline(test::writeTempScene("luminaire_sphere", json), quiet());
     const scene::Photometry web = scene::readPhotometry(kIes);
     const double flux = web.integratedFlux();
@@ -65,7 +69,7 @@ TEST_CASE("a luminaire in a closed sphere: direct light from its table, indirect
 
 TEST_CASE("luminaire orientation, flux, dimming and maintenance", "[luminaire]") {
     auto direct = [&](const std::string& fields) {
-        const std::string json = sphereWithLuminaire(0.0, fmt::format(R"("file": "{}", {})", kIes, fields));
+        const std::string json = sphereWithLuminaire(0.0, fmt::format(R"("file": "{}", "point_source": true, {})", kIes, fields));
         auto run = app::runPipeline(test::writeTempScene("luminaire_options", json), quiet());
         std::vector<double> out;
         for (const auto& s : run.sensors) out.push_back(luminance(s.value.direct));
@@ -261,4 +265,45 @@ TEST_CASE("light groups: each group's part, scaled, gives what a re-solve with t
     // the sum stays within the solve's own discretisation (measured 0.25 % here, 0.10 % in
     // the office scene).
     check(R"("radiosity": {"max_edge": 0.4})", 5e-3, 5e-3);
+}
+
+TEST_CASE("near a luminaire its light leaves from the whole opening: a Lambertian square against pi L F", "[luminaire]") {
+    // A 0.6 m square opening with the far-field distribution of a Lambertian emitter,
+    // I(γ) = L A cos γ: within five sizes of it the illuminance is the area source's,
+    // E = π L F (the analytic form factor); beyond, the point source's I cos θ / d².
+    const double side = 0.6, L = 1000, I0 = L * side * side;
+    std::string v, c;
+    for (int a = 0; a <= 180; a += 5) {
+        v += std::to_string(a) + " ";
+        c += fmt::format("{:.17g} ", a <= 90 ? I0 * std::cos(a * kPi / 180) : 0.0);
+    }
+    const std::string ies = fmt::format("IESNA:LM-63-2002\n[TEST] Lambertian square\nTILT=NONE\n1 -1 1 37 1 1 2 {} {} 0\n1 1 10\n{}\n0\n{}\n",
+                                        side, side, v, c);
+    const std::string iesPath = "/tmp/rayrad_test_lambertian.ies";
+    std::ofstream(iesPath) << ies;
+    const double heights[] = {0.3, 0.6, 1.2, 2.5, 4.0};
+    std::string sensors;
+    for (size_t i = 0; i < 5; ++i)
+        sensors += fmt::format("{}{{\"name\": \"h{}\", \"position\": [0.1, {}, 0.05], \"normal\": [0, 1, 0]}}", i ? ", " : "", i,
+                               5.0 - heights[i]);
+    const std::string json = fmt::format(R"({{"materials": {{"black": {{"reflectance": 0}}}},
+        "objects": [{{"type": "quad", "material": "black", "vertices": [[-20, 0, -20], [-20, 0, 20], [20, 0, 20], [20, 0, -20]]}}],
+        "lights": [{{"type": "luminaire", "file": "{}", "position": [0, 5, 0], "aim": [0, 0, 0], "c0_toward": [1, 0, 0]}}],
+        "sensors": [{}], "radiosity": {{"max_edge": 10}}}})",
+                                         iesPath, sensors);
+    auto run = app::runPipeline(test::writeTempScene("near_field", json), quiet());
+    const scene::Photometry web = scene::readPhotometry(iesPath);  // the table as bilinear as rayrad reads it
+    const Vec3 square[4] = {{-0.3, 5, -0.3}, {0.3, 5, -0.3}, {0.3, 5, 0.3}, {-0.3, 5, 0.3}};  // facing down
+    for (size_t i = 0; i < 5; ++i) {
+        const Vec3 x(0.1, 5.0 - heights[i], 0.05);
+        const double areaSource = kPi * L * radiosity::formFactorToPolygon(x, Vec3(0, 1, 0), square, 4, Vec3(0, -1, 0));
+        const Vec3 d = Vec3(0, 5, 0) - x;
+        const double r = glm::length(d), cosg = d.y / r;
+        const double gamma = std::acos(cosg) * 180 / kPi;
+        const double pointSource = web.intensity(gamma, std::atan2(-x.z, x.x) * 180 / kPi) * cosg / (r * r);
+        const double got = luminance(run.sensors[i].value.direct);
+        INFO("height " << heights[i] << ": got " << got << ", area source " << areaSource << ", point source " << pointSource);
+        if (heights[i] < kNearFieldSizes() * side) CHECK(got == Approx(areaSource).epsilon(0.02));
+        else CHECK(got == Approx(pointSource).epsilon(1e-9));
+    }
 }
