@@ -71,12 +71,15 @@ std::vector<scene::Override> overridesOf(const CommonArgs& a) {
     return out;
 }
 
-/// The files a run reads (the scene, its mesh files), so that no output can be one of them.
+/// The files a run reads (the scene, its mesh and photometric files), so that no output
+/// can be one of them.
 OutputFiles filesOf(const scene::SceneDesc& desc) {
     OutputFiles files;
     files.addInput(desc.file);
     for (const auto& o : desc.objects)
         if (!o.resolvedFile.empty()) files.addInput(o.resolvedFile);
+    for (const auto& l : desc.lights)
+        if (!l.resolvedFile.empty()) files.addInput(l.resolvedFile);
     return files;
 }
 

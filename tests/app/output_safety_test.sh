@@ -37,6 +37,11 @@ check "scene unchanged through a symlink" same_scene
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$work/tri.obj"
 scene withmesh "{\"materials\": {\"white\": {\"reflectance\": 0.5}}, \"objects\": [{\"type\": \"mesh\", \"file\": \"tri.obj\", \"material\": \"white\"}], \"lights\": [{\"type\": \"point\", \"position\": [0.3,0.3,1], \"intensity_cd\": 10}]}"
 expect 3 "--report is a mesh file" "tri.obj: cannot write: it is an input of this run" -- solve "$work/withmesh.json" --report "$work/tri.obj" -q
+cp "$src/tests/data/luminaires/radiance_examp1.ies" "$work/lum.ies"
+cp "$work/lum.ies" "$work/lum.orig"
+expect 3 "--sensors is a luminaire's file" "lum.ies: cannot write: it is an input of this run" -- solve "$good" -q \
+    --set 'lights=[{"type": "luminaire", "file": "lum.ies", "position": [0.5, 0.9, 0.5]}]' --sensors "$work/lum.ies"
+check "luminaire file unchanged" cmp -s "$work/lum.ies" "$work/lum.orig"
 
 # ---- paths that cannot be written (exit 3, before any work) --------------------------
 mkdir "$work/adir"
