@@ -1,0 +1,23 @@
+// Sensors, sensor grids and work planes: the scene parser's part for where illuminance is
+// reported (scene_parser.cpp reads the rest).
+#pragma once
+
+#include <scene/json_reader.h>
+#include <scene/scene_desc.h>
+
+#include <vector>
+
+namespace rayrad::scene {
+
+/// One sensor: name (default "S<index>"), position, normal, optional reference values.
+SensorDesc parseSensor(JsonObject s, int index);
+
+/// A grid: counts[0] × counts[1] sensors at the cell centres of the parallelogram
+/// (origin, u, v), appended to `out`.
+void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out);
+
+/// A horizontal work plane over a room outline (EN 12464-1 spacing by default), appended
+/// to `out`.
+void parseWorkPlane(JsonObject w, int index, std::vector<SensorDesc>& out);
+
+}  // namespace rayrad::scene
