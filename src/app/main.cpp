@@ -301,7 +301,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
 }
 
 int runInfo(const CommonArgs& a) {
-    if (app::isPhotometricFile(a.scene)) {
+    if (scene::isPhotometricFile(a.scene)) {
         fmt::print("{}", app::photometryReport(scene::readPhotometry(a.scene)));
         return 0;
     }

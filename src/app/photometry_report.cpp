@@ -2,16 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <cctype>
-#include <filesystem>
 
 namespace rayrad::app {
-
-bool isPhotometricFile(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".ies" || ext == ".ldt";
-}
 
 std::string photometryReport(const scene::Photometry& p) {
     static const char* kTypes[] = {"C", "B", "A"};

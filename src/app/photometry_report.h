@@ -8,9 +8,6 @@
 
 namespace rayrad::app {
 
-/// True for the extensions of photometric files (.ies, .ldt, any case).
-bool isPhotometricFile(const std::string& path);
-
 /// The report: format, type, symmetry and grid, stated lamp flux, integrated flux, light
 /// output ratio (integrated and, for EULUMDAT, stated), peak intensity and its direction,
 /// the luminous opening, watts, tilt.

@@ -142,9 +142,7 @@ int validateLuminaire(const ValidateLuminaireOptions& o) {
     std::vector<std::string> files;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(o.dataDir, ec)) {
-        std::string ext = e.path().extension().string();
-        for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (ext == ".ies" || ext == ".ldt") files.push_back(e.path().string());
+        if (scene::isPhotometricFile(e.path().string())) files.push_back(e.path().string());
     }
     if (ec || files.empty()) throw InputError(placeMessage(o.dataDir, "", "no .ies or .ldt files here"));
     std::sort(files.begin(), files.end());

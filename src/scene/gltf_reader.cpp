@@ -1,6 +1,7 @@
 #include <scene/gltf_reader.h>
 
 #include <core/input_error.h>
+#include <core/text.h>
 #include <scene/mesh_builder.h>
 
 #include <fmt/format.h>
@@ -18,7 +19,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 
 namespace rayrad::scene {
 
@@ -298,8 +298,7 @@ ImportedMesh readGltf(const std::string& path, const std::string& errorPrefix) {
     loader.SetImageLoader(skipImage, nullptr);
     tinygltf::Model model;
     std::string error, warning;
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lowerExtension(path);
     bool ok = false;
     try {
         ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, path)

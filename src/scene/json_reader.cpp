@@ -1,9 +1,9 @@
 #include <scene/json_reader.h>
 
+#include <core/text.h>
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -44,12 +44,8 @@ static size_t editDistance(const std::string& a, const std::string& b) {
 }
 
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
-    auto lower = [](std::string t) {
-        for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return t;
-    };
     for (const auto& c : candidates)
-        if (lower(c) == lower(word)) return c;  // "Materials" → "materials"
+        if (toLower(c) == toLower(word)) return c;  // "Materials" → "materials"
     std::string best;
     size_t bestDistance = 4;
     for (const auto& c : candidates) {
@@ -77,11 +73,7 @@ const json* JsonObject::get(const std::string& key) {
 /// or (keys of 6 letters or more) two letters off. Stricter than closestMatch(), because
 /// the other keys of the object are not known yet ("max" is not a typo of "min").
 static bool likelyTypo(const std::string& word, const std::string& key) {
-    auto lower = [](std::string t) {
-        for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return t;
-    };
-    if (lower(word) == lower(key)) return true;  // "Intensity_CD": keys are case-sensitive
+    if (toLower(word) == toLower(key)) return true;  // "Intensity_CD": keys are case-sensitive
     size_t d = editDistance(word, key);
     if (d <= 1 || (key.size() >= 6 && d <= 2)) return true;
     if (word.size() != key.size()) return false;
@@ -115,8 +107,7 @@ std::optional<double> JsonObject::number(const std::string& key) {
     if (v->is_string()) {
         // JSON has no NaN/Inf; people write them as strings. Name the problem plainly.
         std::string s = v->get<std::string>();
-        std::string lower = s;
-        std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+        const std::string lower = toLower(s);
         if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos) {
             error(key, fmt::format("expected a finite number, got {}", describe(*v)));
             return std::nullopt;

@@ -2,6 +2,7 @@
 
 #include <core/input_error.h>
 #include <core/input_file.h>
+#include <core/text.h>
 #include <scene/gltf_reader.h>
 #include <scene/mesh_builder.h>
 #include <scene/ply_reader.h>
@@ -153,11 +154,7 @@ ImportedMesh importPly(const std::string& path, const std::string& prefix) {
     return out;
 }
 
-bool hasExtension(const std::string& path, const std::string& ext) {
-    std::string e = std::filesystem::path(path).extension().string();
-    for (auto& ch : e) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    return e == ext;
-}
+bool hasExtension(const std::string& path, const std::string& ext) { return lowerExtension(path) == ext; }
 
 }  // namespace
 

@@ -3,13 +3,13 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <core/math.h>
+#include <core/text.h>
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <filesystem>
 
 namespace rayrad::scene {
 
@@ -149,13 +149,16 @@ Photometry::Peak Photometry::peak() const {
     return best;
 }
 
+bool isPhotometricFile(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".ies" || ext == ".ldt";
+}
+
 Photometry readPhotometry(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".ies" && ext != ".ldt")
-        throw InputError(placeMessage(path, "", "unknown photometric file type '" + ext + "' (use .ies or .ldt)"));
+    if (!isPhotometricFile(path))
+        throw InputError(placeMessage(path, "", "unknown photometric file type '" + lowerExtension(path) + "' (use .ies or .ldt)"));
     const std::string text = readInputFile(path, "photometric file", kMaxPhotometryBytes);
-    return ext == ".ies" ? parseIes(text, path) : parseLdt(text, path);
+    return lowerExtension(path) == ".ies" ? parseIes(text, path) : parseLdt(text, path);
 }
 
 }  // namespace rayrad::scene

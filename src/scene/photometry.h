@@ -62,6 +62,9 @@ struct Photometry {
     std::string symmetry() const;
 };
 
+/// True for the extensions of photometric files: .ies and .ldt, any case.
+bool isPhotometricFile(const std::string& path);
+
 /// Reads an IES LM-63 (1986, 1991, 1995, 2002, 2019) or EULUMDAT (.ldt) file, by its
 /// extension (.ies, .ldt, any case). Throws InputError naming the file and the line.
 Photometry readPhotometry(const std::string& path);

@@ -2,6 +2,7 @@
 
 #include <core/input_error.h>
 #include <core/output_file.h>
+#include <core/text.h>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -10,18 +11,10 @@
 namespace OCIO = OCIO_NAMESPACE;
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 
 namespace rayrad::tonemap {
 
 namespace {
-
-std::string extensionOf(const std::string& path) {
-    std::string e = std::filesystem::path(path).extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), ::tolower);
-    return e;
-}
 
 /// Encodes an image into memory through an OIIO IOProxy, the format by `path`'s extension.
 std::string encode(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc format, const void* data) {
@@ -39,10 +32,10 @@ std::string encode(const std::string& path, const OIIO::ImageSpec& spec, OIIO::T
 
 }  // namespace
 
-bool isHdrFormat(const std::string& path) { return extensionOf(path) == ".exr"; }
+bool isHdrFormat(const std::string& path) { return lowerExtension(path) == ".exr"; }
 
 void checkImageFormat(const std::string& path) {
-    std::string e = extensionOf(path);
+    std::string e = lowerExtension(path);
     if (e != ".exr" && e != ".png" && e != ".jpg" && e != ".jpeg")
         throw OutputError(placeMessage(path, "", "unknown image format '" + e + "' (use .exr, .png or .jpg)"));
 }
