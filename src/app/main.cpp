@@ -100,12 +100,15 @@ struct SensorFiles {
     }
 };
 
+bool hasSensorGrids(const scene::SceneDesc& desc) {
+    return std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); });
+}
+
 SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath) {
     SensorFiles f;
     if (csvPath.empty()) return f;
     f.points = csvPath;
-    if (std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); }))
-        f.grids = app::gridSummaryPath(csvPath);
+    if (hasSensorGrids(desc)) f.grids = app::gridSummaryPath(csvPath);
     if (!desc.sensors.empty() && app::hasLightGroups(desc)) f.groups = app::lightGroupPath(csvPath);
     return f;
 }
@@ -195,12 +198,21 @@ std::vector<std::string> addReportOutputs(const scene::SceneDesc& desc, const Re
         if (tonemap::isHdrFormat(*picture))
             throw OutputError(placeMessage(*picture, "", "a false-colour picture is a display image: use .png or .jpg"));
     }
-    if (!r.gridPicture.empty() &&
-        std::none_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); }))
+    if (!r.gridPicture.empty() && !hasSensorGrids(desc))
         throw InputError(placeMessage(desc.file, "", "--grid-picture: the scene has no sensor grid or work plane"));
     const std::vector<std::string> out{r.convergence, r.report, r.gridPicture, r.falseColour};
     for (const auto& path : out)
         if (!path.empty()) files.add(path);
+    return out;
+}
+
+/// The sensor files, then the reports: checked and added; all of them, for the "wrote" lines.
+std::vector<std::string> addSensorAndReportOutputs(const scene::SceneDesc& desc, const SensorFiles& csvs,
+                                                   const ReportArgs& reports, OutputFiles& files) {
+    std::vector<std::string> out = csvs.all();
+    addOutputs(files, out);
+    const auto more = addReportOutputs(desc, reports, files);
+    out.insert(out.end(), more.begin(), more.end());
     return out;
 }
 
@@ -223,10 +235,7 @@ int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& repo
     const auto desc = scene::loadScene(a.scene, o.overrides);
     OutputFiles files = filesOf(desc);
     const SensorFiles csvs = sensorFiles(desc, csv);
-    std::vector<std::string> outputs = csvs.all();
-    addOutputs(files, outputs);
-    const auto reportOutputs = addReportOutputs(desc, reports, files);
-    outputs.insert(outputs.end(), reportOutputs.begin(), reportOutputs.end());
+    const std::vector<std::string> outputs = addSensorAndReportOutputs(desc, csvs, reports, files);
     auto run = app::runPipeline(a.scene, o);
     reportSensors(run, a.scene, o, csvs, files);
     stageReports(run, a.scene, reports, files);
@@ -280,10 +289,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     for (int k = 1; k <= snapshots; ++k)
         for (const auto& path : images) files.add(app::snapshotPath(path, k));
     const SensorFiles csvs = sensorFiles(desc, csv);
-    std::vector<std::string> others = csvs.all();
-    addOutputs(files, others);
-    const auto reportOutputs = addReportOutputs(desc, reports, files);
-    others.insert(others.end(), reportOutputs.begin(), reportOutputs.end());
+    const std::vector<std::string> others = addSensorAndReportOutputs(desc, csvs, reports, files);
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
     app::checkRenderedImage(*run.image, allowBlack);

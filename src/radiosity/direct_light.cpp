@@ -125,8 +125,8 @@ Rgb pointIlluminance(const scene::PointLight& l, const Vec3& p, const Vec3& x, c
 }
 }  // namespace
 
-bool DirectLight::inNearField(const scene::PointLight& l, const Vec3& x) {
-    return !l.openingPoints.empty() && glm::length(x - l.position) < scene::kNearFieldSizes * l.openingSize;
+bool DirectLight::inNearField(const scene::PointLight& l, const Vec3& x, double sizes) {
+    return !l.openingPoints.empty() && glm::length(x - l.position) < sizes * l.openingSize;
 }
 
 Rgb DirectLight::unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n) {

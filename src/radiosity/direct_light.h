@@ -77,17 +77,15 @@ class DirectLight {
     /// The points point source s's light leaves from as seen from x: a luminaire's
     /// opening's parts when x is within `sizes` times the opening's size, else its position.
     std::vector<Vec3> emissionPoints(size_t s, const Vec3& x, double sizes = scene::kNearFieldSizes) const {
-        if (s < perChain()) {
-            const scene::PointLight& l = m_pointLights[s];
-            if (!l.openingPoints.empty() && glm::length(x - l.position) < sizes * l.openingSize) return l.openingPoints;
-        }
+        if (s < perChain() && inNearField(m_pointLights[s], x, sizes)) return m_pointLights[s].openingPoints;
         return {pointSourcePosition(s)};
     }
     /// The intensity (cd, RGB; × Π Ks for an image) point source s sends along the unit
     /// direction w (for an image: the unfolded direction), one part's share in the near field
     /// being this / the number of parts.
     Rgb pointSourceIntensityAlong(size_t s, const Vec3& w) const;
-    static bool inNearField(const scene::PointLight& l, const Vec3& x);
+    /// x within `sizes` times l's opening's size of it (l a luminaire with an opening).
+    static bool inNearField(const scene::PointLight& l, const Vec3& x, double sizes = scene::kNearFieldSizes);
     /// True when point source s sends the same intensity every way (a point light).
     bool isIsotropic(size_t s) const {
         const scene::PointLight& l = m_pointLights[s % perChain()];
