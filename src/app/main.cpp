@@ -1,13 +1,11 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
-#include <app/false_colour_output.h>
-#include <app/grid_statistics.h>
 #include <app/image_output.h>
-#include <app/light_group_parts.h>
 #include <app/result_checks.h>
 #include <app/validate_runs.h>
 #include <app/version.h>
 #include <app/photometry_report.h>
 #include <app/pipeline.h>
+#include <app/run_outputs.h>
 #include <app/problem_size.h>
 #include <app/validate_cube.h>
 #include <app/validate_luminaire.h>
@@ -17,7 +15,6 @@
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <core/result_error.h>
-#include <scene/light_groups.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
 #include <radiosity/mesher.h>
@@ -34,7 +31,6 @@
 #include <csignal>
 #include <cstdio>
 #include <limits>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -69,74 +65,6 @@ std::vector<scene::Override> overridesOf(const CommonArgs& a) {
     std::vector<scene::Override> out;
     for (const auto& s : a.sets) out.push_back(scene::parseOverride(s));
     return out;
-}
-
-/// The files a run reads (the scene, its mesh and photometric files), so that no output
-/// can be one of them.
-OutputFiles filesOf(const scene::SceneDesc& desc) {
-    OutputFiles files;
-    files.addInput(desc.file);
-    for (const auto& o : desc.objects)
-        if (!o.resolvedFile.empty()) files.addInput(o.resolvedFile);
-    for (const auto& l : desc.lights)
-        if (!l.resolvedFile.empty()) files.addInput(l.resolvedFile);
-    return files;
-}
-
-void addOutputs(OutputFiles& files, const std::vector<std::string>& paths) {
-    for (const auto& path : paths)
-        if (!path.empty()) files.add(path);
-}
-
-/// What `--sensors FILE.csv` writes: the points and, beside them, the grid statistics
-/// (when the scene has grids) and each light group's part (when its emitters name groups).
-struct SensorFiles {
-    std::string points, grids, groups;
-    std::vector<std::string> all() const {
-        std::vector<std::string> out;
-        for (const auto* p : {&points, &grids, &groups})
-            if (!p->empty()) out.push_back(*p);
-        return out;
-    }
-};
-
-bool hasSensorGrids(const scene::SceneDesc& desc) {
-    return std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); });
-}
-
-SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath) {
-    SensorFiles f;
-    if (csvPath.empty()) return f;
-    f.points = csvPath;
-    if (hasSensorGrids(desc)) f.grids = app::gridSummaryPath(csvPath);
-    if (!desc.sensors.empty() && app::hasLightGroups(desc)) f.groups = app::lightGroupPath(csvPath);
-    return f;
-}
-
-/// The sensor table, grid statistics and light groups' parts (one more solve per group),
-/// on stdout and into the files.
-void reportSensors(app::PipelineRun& run, const std::string& sceneFile, const app::PipelineOptions& options,
-                   const SensorFiles& f, OutputFiles& files) {
-    for (const auto& w : app::checkSensorResults(run.sensors)) fmt::print(stderr, "warning: {}\n", w);
-    const auto grids = app::gridStatistics(run.sensors);
-    if (!run.sensors.empty()) std::cout << app::sensorTable(run.sensors) << app::gridTable(grids);
-    if (!f.points.empty()) files.set(f.points, app::sensorCsv(run.sensors));
-    if (!f.grids.empty()) files.set(f.grids, app::gridCsv(grids));
-    const auto groups = scene::lightGroups(run.scene);
-    if (groups.empty() || run.sensors.empty()) return;
-    run.report.begin(fmt::format("light groups ({} solves)", groups.size()));
-    const app::LightGroupParts parts = app::solveLightGroups(sceneFile, options, run, groups);
-    run.report.end();
-    std::cout << "\nlight groups (total lx; each group solved alone, the light being linear in the emission):\n"
-              << app::lightGroupTable(run.sensors, parts);
-    fmt::print(stderr, "light groups: {} solved alone; their sum differs from the full solve by at most {:.3f} %\n",
-               groups.size(), 100 * app::largestGroupSumDifference(run.sensors, parts));
-    if (!f.groups.empty()) files.set(f.groups, app::lightGroupCsv(run.sensors, parts));
-}
-
-void reportWritten(const std::vector<std::string>& paths) {
-    for (const auto& path : paths)
-        if (!path.empty()) fmt::print(stderr, "wrote {}\n", path);
 }
 
 void printSolveSummary(const app::PipelineRun& run) {
@@ -182,65 +110,21 @@ void printSolveSummary(const app::PipelineRun& run) {
                st.overshooting ? "on" : "off");
 }
 
-struct ReportArgs {
-    std::string convergence;  ///< --convergence FILE.csv
-    std::string report;       ///< --report FILE.json
-    std::string gridPicture;  ///< --grid-picture FILE.png
-    std::string falseColour;  ///< render --false-colour FILE.png
-};
-
-/// Checks the report outputs before the work (a picture must be PNG or JPEG; a grid
-/// picture needs grids) and adds them; returns them for the "wrote" lines.
-std::vector<std::string> addReportOutputs(const scene::SceneDesc& desc, const ReportArgs& r, OutputFiles& files) {
-    for (const auto* picture : {&r.gridPicture, &r.falseColour}) {
-        if (picture->empty()) continue;
-        tonemap::checkImageFormat(*picture);
-        if (tonemap::isHdrFormat(*picture))
-            throw OutputError(placeMessage(*picture, "", "a false-colour picture is a display image: use .png or .jpg"));
-    }
-    if (!r.gridPicture.empty() && !hasSensorGrids(desc))
-        throw InputError(placeMessage(desc.file, "", "--grid-picture: the scene has no sensor grid or work plane"));
-    const std::vector<std::string> out{r.convergence, r.report, r.gridPicture, r.falseColour};
-    for (const auto& path : out)
-        if (!path.empty()) files.add(path);
-    return out;
-}
-
-/// The sensor files, then the reports: checked and added; all of them, for the "wrote" lines.
-std::vector<std::string> addSensorAndReportOutputs(const scene::SceneDesc& desc, const SensorFiles& csvs,
-                                                   const ReportArgs& reports, OutputFiles& files) {
-    std::vector<std::string> out = csvs.all();
-    addOutputs(files, out);
-    const auto more = addReportOutputs(desc, reports, files);
-    out.insert(out.end(), more.begin(), more.end());
-    return out;
-}
-
-void stageReports(const app::PipelineRun& run, const std::string& scene, const ReportArgs& r, OutputFiles& files) {
-    if (!r.convergence.empty()) files.set(r.convergence, app::convergenceCsv(run));
-    if (!r.report.empty()) files.set(r.report, app::runReportJson(run, scene));
-    auto picture = [&](const std::string& path, const tonemap::Picture& p) {
-        files.set(path, tonemap::encodeDisplayImage(path, p.width, p.height, p.rgb));
-    };
-    if (!r.gridPicture.empty()) picture(r.gridPicture, app::gridPicture(run.sensors));
-    if (!r.falseColour.empty() && run.image) picture(r.falseColour, app::luminancePicture(*run.image));
-}
-
-int runSolve(const CommonArgs& a, const std::string& csv, const ReportArgs& reports) {
+int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs& reports) {
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
     o.quiet = a.quiet;
     o.logConvergence = !reports.convergence.empty();
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
-    OutputFiles files = filesOf(desc);
-    const SensorFiles csvs = sensorFiles(desc, csv);
-    const std::vector<std::string> outputs = addSensorAndReportOutputs(desc, csvs, reports, files);
+    OutputFiles files = app::filesOf(desc);
+    const app::SensorFiles csvs = app::sensorFiles(desc, csv);
+    const std::vector<std::string> outputs = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     auto run = app::runPipeline(a.scene, o);
-    reportSensors(run, a.scene, o, csvs, files);
-    stageReports(run, a.scene, reports, files);
+    app::reportSensors(run, a.scene, o, csvs, files);
+    app::stageReports(run, a.scene, reports, files);
     files.commit();
-    reportWritten(outputs);
+    app::reportWritten(outputs);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
@@ -268,7 +152,7 @@ tonemap::DisplayOptions parseExposure(const std::string& exposure, tonemap::Disp
 
 int runRender(const CommonArgs& a, const std::vector<std::string>& images, const std::string& csv,
               std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
-              const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const ReportArgs& reports) {
+              const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const app::ReportArgs& reports) {
     const tonemap::DisplayOptions display = parseExposure(exposure, displayIn);
     tonemap::checkDisplayOptions(display);
     app::PipelineOptions o;
@@ -284,23 +168,23 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
     if (!desc.camera) throw InputError(placeMessage(a.scene, "/camera", "rendering needs a camera"));
-    OutputFiles files = filesOf(desc);
+    OutputFiles files = app::filesOf(desc);
     app::addImageOutputs(images, files);
     for (int k = 1; k <= snapshots; ++k)
         for (const auto& path : images) files.add(app::snapshotPath(path, k));
-    const SensorFiles csvs = sensorFiles(desc, csv);
-    const std::vector<std::string> others = addSensorAndReportOutputs(desc, csvs, reports, files);
+    const app::SensorFiles csvs = app::sensorFiles(desc, csv);
+    const std::vector<std::string> others = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
     app::checkRenderedImage(*run.image, allowBlack);
-    reportSensors(run, a.scene, o, csvs, files);
+    app::reportSensors(run, a.scene, o, csvs, files);
     run.report.begin("tone map + write");
     app::stageImages(images, *run.image, display, "rayrad rendering of " + a.scene, files);
-    stageReports(run, a.scene, reports, files);
+    app::stageReports(run, a.scene, reports, files);
     files.commit();
     run.report.end();
-    reportWritten(images);
-    reportWritten(others);
+    app::reportWritten(images);
+    app::reportWritten(others);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
@@ -398,9 +282,9 @@ int main(int argc, char** argv) {
     std::string renderCsv, solveCsv, exposure = "auto";
     std::optional<int> spp, seed;
     int snapshots = 0;
-    ReportArgs renderReports, solveReports;
+    app::ReportArgs renderReports, solveReports;
     tonemap::DisplayOptions display;
-    auto addReports = [](CLI::App* cmd, ReportArgs& r) {
+    auto addReports = [](CLI::App* cmd, app::ReportArgs& r) {
         cmd->add_option("--convergence", r.convergence,
                         "Log error against time at every push-pull as CSV (seconds, shots, unshot %, and the "
                         "indirect error at every sensor with a reference: vertex values always, the gather each "
