@@ -98,6 +98,16 @@ double Photometry::intensity(double verticalDeg, double horizontalDeg) const {
     return (1 - t) * plane(j - 1) + t * plane(j);
 }
 
+double Photometry::intensityToward(double x, double y, double z) const {
+    auto deg = [](double radians) { return radians / kDeg; };
+    switch (type) {
+    case PhotometricType::C: return intensity(deg(std::acos(std::clamp(z, -1.0, 1.0))), deg(std::atan2(y, x)));
+    case PhotometricType::B: return intensity(deg(std::asin(std::clamp(y, -1.0, 1.0))), deg(std::atan2(x, z)));
+    case PhotometricType::A: return intensity(deg(std::asin(std::clamp(x, -1.0, 1.0))), deg(std::atan2(y, z)));
+    }
+    return 0;
+}
+
 double Photometry::integratedFlux() const {
     if (candela.empty()) return 0;
     const bool sine = type == PhotometricType::C;

@@ -12,9 +12,11 @@ namespace rayrad::scene {
 /// C: vertical angle γ from the nadir (0 down, 180 up) and horizontal angle C about the
 ///    luminaire's vertical axis (C0 along its length): dω = sin γ dγ dC. Almost every
 ///    indoor and street luminaire.
-/// B (floodlights) and A (automotive): a vertical angle V from the luminaire's horizontal
-///    plane (−90 to 90) and a horizontal angle H about the axis perpendicular to V's
-///    plane: dω = cos V dV dH. B and A differ in which luminaire axis H turns about.
+/// B (floodlights) and A (automotive): the polar axis lies across the beam, the
+///    luminaire's width (B) or length (A). H is the angle of a plane through that axis,
+///    turned from the nadir (H = 0, the beam's axis); V is the angle within the plane from
+///    the nadir side toward the polar axis (−90 to 90): dω = cos V dV dH (CIE 121's
+///    B-planes and β angles, IES LM-75).
 enum class PhotometricType { C, B, A };
 
 struct Photometry {
@@ -49,6 +51,12 @@ struct Photometry {
     /// I at (vertical, horizontal) angles in degrees (any horizontal angle: the file's
     /// symmetry unfolds it), bilinear in the grid; 0 outside the vertical range.
     double intensity(double verticalDeg, double horizontalDeg) const;
+    /// I toward a unit direction given in the luminaire's frame: x along C0 (its length),
+    /// y along C90 (its width), z along its axis (the nadir).
+    ///   C: γ = acos z, C = atan2(y, x).
+    ///   B: V = asin y (toward the width, C90), H = atan2(x, z) (the nadir turned toward C0).
+    ///   A: V = asin x (toward the length, C0), H = atan2(y, z) (the nadir turned toward C90).
+    double intensityToward(double x, double y, double z) const;
     /// The luminous flux ∫ I dω, lm: I bilinear in the angles, integrated exactly in the
     /// vertical angle (linear I times sin γ, or cos V for types A/B, in closed form) and by
     /// the trapezoid rule across the unfolded horizontal planes.

@@ -16,11 +16,9 @@ namespace rayrad::scene {
 
 Rgb PointLight::intensityToward(const Vec3& w) const {
     if (photometry) {
-        // γ from the nadir, C about it from C0 toward C90 = (−nadir) × c0.
-        const double gamma = glm::degrees(std::acos(std::clamp(glm::dot(w, nadir), -1.0, 1.0)));
+        // The luminaire's frame: C0, C90 = (−nadir) × C0, nadir.
         const Vec3 c90 = glm::cross(-nadir, c0);
-        const double c = glm::degrees(std::atan2(glm::dot(w, c90), glm::dot(w, c0)));
-        return intensity * (photometricScale * photometry->intensity(gamma, c));
+        return intensity * (photometricScale * photometry->intensityToward(glm::dot(w, c0), glm::dot(w, c90), glm::dot(w, nadir)));
     }
     if (!isSpot) return intensity;
     double c = glm::dot(w, direction);
@@ -388,8 +386,6 @@ class Builder {
                     fail(l.where + "/file", e.what());
                 }
             }
-            if (web->type != PhotometricType::C)
-                fail(l.where + "/file", "'" + l.resolvedFile + "' has type B or A photometry; luminaires take type C only so far");
             const double fileFlux = web->integratedFlux();
             if (!(fileFlux > 0)) fail(l.where + "/file", "'" + l.resolvedFile + "' emits no light (its candela table is zero)");
             p.photometry = web;

@@ -214,13 +214,8 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
     return d;
 }
 
-/// A luminaire: a photometric file at a position, aimed; its flux, dimming, maintenance
-/// and colour (RGB or a colour temperature).
-void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
-    l.required("file");
-    d.file = l.string("file").value_or("");
-    const std::filesystem::path f(d.file);
-    d.resolvedFile = f.is_absolute() ? f.string() : (std::filesystem::path(sceneDir) / f).string();
+/// A luminaire aimed: "aim" (a point) or "nadir" (a direction), and "c0_toward".
+void parseLuminaireAim(JsonObject& l, LightDesc& d) {
     if (l.has("aim") && l.has("nadir")) l.error("nadir", "give either \"aim\" (a point) or \"nadir\" (a direction), not both");
     Vec3 nadir = l.has("aim") ? l.vec3("aim").value_or(d.position - Vec3(0, 1, 0)) - d.position
                               : l.vec3("nadir").value_or(Vec3(0, -1, 0));
@@ -237,6 +232,36 @@ void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
         d.c0 = std::abs(d.nadir.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
     } else {
         d.c0 = glm::normalize(c0);
+    }
+}
+
+/// A luminaire turned as DIALux turns one: "rotation_deg": [x, y, z], rotations in degrees
+/// about the scene's x, y and z axes, applied in that order to the luminaire at rest
+/// (pointing down, −y, with C0 along +x). Right-handed: positive turns counter-clockwise
+/// seen from the axis' positive end.
+void parseLuminaireRotation(JsonObject& l, LightDesc& d) {
+    for (const char* key : {"aim", "nadir", "c0_toward"})
+        if (l.has(key)) l.error(key, fmt::format("give either \"rotation_deg\" or \"{}\", not both", key));
+    const Vec3 angles = l.vec3("rotation_deg").value_or(Vec3(0.0));
+    glm::dmat4 r(1.0);
+    r = glm::rotate(glm::dmat4(1.0), glm::radians(angles.x), Vec3(1, 0, 0)) * r;
+    r = glm::rotate(glm::dmat4(1.0), glm::radians(angles.y), Vec3(0, 1, 0)) * r;
+    r = glm::rotate(glm::dmat4(1.0), glm::radians(angles.z), Vec3(0, 0, 1)) * r;
+    d.nadir = glm::normalize(Vec3(glm::dmat3(r) * Vec3(0, -1, 0)));
+    d.c0 = glm::normalize(Vec3(glm::dmat3(r) * Vec3(1, 0, 0)));
+}
+
+/// A luminaire: a photometric file at a position, aimed; its flux, dimming, maintenance
+/// and colour (RGB or a colour temperature).
+void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
+    l.required("file");
+    d.file = l.string("file").value_or("");
+    const std::filesystem::path f(d.file);
+    d.resolvedFile = f.is_absolute() ? f.string() : (std::filesystem::path(sceneDir) / f).string();
+    if (l.has("rotation_deg")) {
+        parseLuminaireRotation(l, d);
+    } else {
+        parseLuminaireAim(l, d);
     }
     if (l.has("flux_lm")) d.fluxLm = l.positive("flux_lm", 1.0);
     d.dimming = l.number("dimming", 1.0);

@@ -84,9 +84,43 @@ TEST_CASE("luminaire orientation, flux, dimming and maintenance", "[luminaire]")
     const scene::Photometry web = scene::readPhotometry(kIes);
     const auto up = direct(R"("aim": [0, 5, 0])");
     CHECK(up[0] == Approx(web.intensity(180, 0)).epsilon(1e-9));
+    // DIALux-style rotations about the scene's x, y, z axes of the luminaire at rest
+    // (down, C0 along +x): 90° about y turns C0 to −z; 90° about z turns the axis to +x
+    // and C0 to +y.
+    CHECK(direct(R"("rotation_deg": [0, 0, 0])") == base);
+    const auto aboutY = direct(R"("rotation_deg": [0, 90, 0])");
+    const auto c0minusZ = direct(R"("c0_toward": [0, 0, -1])");
+    const auto aboutZ = direct(R"("rotation_deg": [0, 0, 90])");
+    const auto sideways = direct(R"("nadir": [1, 0, 0], "c0_toward": [0, 1, 0])");
+    for (size_t i = 0; i < 3; ++i) {
+        CHECK(aboutY[i] == Approx(c0minusZ[i]).epsilon(1e-9));
+        CHECK(aboutZ[i] == Approx(sideways[i]).epsilon(1e-9));
+    }
+    CHECK(aboutY[1] == Approx(base[2]).epsilon(1e-9));  // C0 now where C90 was: sensor B gets C90's light
     // flux_lm scales the table; dimming and maintenance multiply.
     const auto scaled = direct(R"("flux_lm": 1000, "dimming": 0.5, "maintenance_factor": 0.8)");
     CHECK(scaled[0] == Approx(base[0] * 1000 / web.integratedFlux() * 0.5 * 0.8).epsilon(1e-9));
+}
+
+TEST_CASE("a type B floodlight file lights the sphere by its H and V angles", "[luminaire]") {
+    // I = 300 + H + 2 V (degrees) on H, V in ±90.
+    std::string cd;
+    for (int h = -90; h <= 90; h += 45)
+        for (int v = -90; v <= 90; v += 45) cd += std::to_string(300 + h + 2 * v) + " ";
+    const std::string ies = "IESNA:LM-63-2002\n[TEST] type B\nTILT=NONE\n1 -1 1 5 5 2 2 0 0 0\n1 1 10\n"
+                            "-90 -45 0 45 90\n-90 -45 0 45 90\n" + cd + "\n";
+    const std::string scratch = test::writeTempScene("type_b_ies", "{}");
+    const std::string iesPath = scratch.substr(0, scratch.find_last_of('/')) + "/flood_b.ies";
+    std::ofstream(iesPath) << ies;
+    const std::string json = sphereWithLuminaire(0.0, fmt::format(R"("file": "{}", "point_source": true, "c0_toward": [1, 0, 0])", iesPath));
+    auto run = app::runPipeline(test::writeTempScene("luminaire_type_b", json), quiet());
+    // A: the nadir, H = V = 0. B: 45° toward C0 (+x), H = 45. C: 45° toward +z, which is
+    // −C90 (C90 = up × C0 = −z): V = −45.
+    const double expected[3] = {300, 300 + 45, 300 - 90};
+    for (size_t i = 0; i < 3; ++i) {
+        INFO(run.sensors[i].sensor.name);
+        CHECK(luminance(run.sensors[i].value.direct) == Approx(expected[i]).epsilon(1e-6));
+    }
 }
 
 TEST_CASE("an isotropic photometric file lights a room as a point light of the same intensity", "[luminaire]") {
@@ -154,6 +188,9 @@ TEST_CASE("bad luminaires are named", "[luminaire]") {
           std::string::npos);
     CHECK(error(fmt::format(R"("file": "{}", "cct_k": 500)", kIes)).find("/lights/0/cct_k: expected a colour temperature") !=
           std::string::npos);
+    CHECK(error(fmt::format(R"("file": "{}", "rotation_deg": [0, 90, 0], "aim": [0, -1, 0])", kIes))
+              .find("/lights/0/aim: give either \"rotation_deg\" or \"aim\"") != std::string::npos);
+    CHECK(error(fmt::format(R"("file": "{}", "rotation_deg": [0, 90])", kIes)).find("/lights/0/rotation_deg: ") != std::string::npos);
     CHECK(error(fmt::format(R"("file": "{}", "intensity_cd": 5)", kIes)).find("/lights/0/intensity_cd: unknown key") !=
           std::string::npos);
 }

@@ -17,13 +17,13 @@ using rayrad::test::sourcePath;
 
 namespace {
 
-/// An IES file (LM-63-2002, type C, metres) with the given angles and candela.
+/// An IES file (metres; photometric type 1 C, 2 B, 3 A) with the given angles and candela.
 std::string iesFile(const std::string& version, const std::string& vertical, const std::string& horizontal,
                     const std::string& candela, size_t nv, size_t nh, const std::string& factors = "1.0 1.0 10",
-                    const std::string& lamp = "1 1000 1.0") {
+                    const std::string& lamp = "1 1000 1.0", int type = 1) {
     std::ostringstream s;
     s << version << "\n[TEST] synthetic\nTILT=NONE\n"
-      << lamp << " " << nv << " " << nh << " 1 2 0.5 0.5 0\n"
+      << lamp << " " << nv << " " << nh << " " << type << " 2 0.5 0.5 0\n"
       << factors << "\n" << vertical << "\n" << horizontal << "\n" << candela << "\n";
     return s.str();
 }
@@ -97,6 +97,40 @@ TEST_CASE("an isotropic source integrates to 4 pi I in every symmetry and both f
     CHECK(quadrant.symmetry() == "quadrant (0–90)");
     CHECK(half.symmetry() == "bilateral (0–180)");
     CHECK(other.symmetry() == "bilateral (90–270)");
+}
+
+TEST_CASE("types B and A: planes about the width or the length, cos V weighting, mirrored halves", "[scene][photometry]") {
+    const std::string v = "-90 -45 0 45 90", h = "-90 -45 0 45 90";
+    // Isotropic over the front hemisphere (H, V in ±90): 2 π I, in both types and stored
+    // whole or as the 0–90 quarter that mirrors about both axes.
+    for (int type : {2, 3}) {
+        const Photometry whole = parseIes(iesFile("IESNA:LM-63-2002", v, h, repeat("100", 25), 5, 5, "1.0 1.0 10", "1 1000 1.0", type), "b.ies");
+        const Photometry quarter = parseIes(iesFile("IESNA:LM-63-2002", "0 45 90", "0 45 90", repeat("100", 9), 3, 3, "1.0 1.0 10", "1 1000 1.0", type), "q.ies");
+        INFO("type " << type);
+        CHECK(whole.type == (type == 2 ? PhotometricType::B : PhotometricType::A));
+        CHECK(whole.integratedFlux() == Approx(2 * kPi * 100).epsilon(1e-12));
+        CHECK(quarter.integratedFlux() == Approx(2 * kPi * 100).epsilon(1e-12));
+        CHECK(quarter.intensityToward(0.3, -0.4, std::sqrt(0.75)) == Approx(100));
+        CHECK(whole.intensityToward(0, 0, -1) == 0);  // behind the luminaire: no H reaches it
+        CHECK(quarter.intensityToward(0.6, 0, -0.8) == 0);
+    }
+    // I = 300 + H + 2 V (degrees): the frame (x along C0, y along C90, z along the nadir)
+    // maps to the angles as documented.
+    std::string cd;
+    for (int hh = -90; hh <= 90; hh += 45)
+        for (int vv = -90; vv <= 90; vv += 45) cd += std::to_string(300 + hh + 2 * vv) + " ";
+    const Photometry b = parseIes(iesFile("IESNA:LM-63-2002", v, h, cd, 5, 5, "1.0 1.0 10", "1 1000 1.0", 2), "b.ies");
+    const Photometry a = parseIes(iesFile("IESNA:LM-63-2002", v, h, cd, 5, 5, "1.0 1.0 10", "1 1000 1.0", 3), "a.ies");
+    const double s = std::sqrt(0.5);
+    CHECK(b.intensityToward(0, 0, 1) == Approx(300));            // the nadir is H = V = 0
+    CHECK(b.intensityToward(s, 0, s) == Approx(300 + 45));       // toward C0: H = 45
+    CHECK(b.intensityToward(0, s, s) == Approx(300 + 90));       // toward C90: V = 45
+    CHECK(b.intensityToward(-s, -s, 0) == Approx(300 - 90 - 90)); // H = -90, V = -45
+    CHECK(a.intensityToward(s, 0, s) == Approx(300 + 90));       // type A: toward C0 is V = 45
+    CHECK(a.intensityToward(0, s, s) == Approx(300 + 45));       // and toward C90 is H = 45
+    // A type C file answers in the same frame: γ from the nadir, C from C0 toward C90.
+    const Photometry q = parseIes(iesFile("IESNA:LM-63-2002", "0 90", "0 90", "100 100 190 190", 2, 2), "q.ies");
+    CHECK(q.intensityToward(0.5 * s, 0.5 * std::sqrt(1.5), s) == Approx(160));  // γ 45, C 60
 }
 
 TEST_CASE("symmetries unfold: a quadrant file answers for every azimuth", "[scene][photometry]") {
