@@ -41,6 +41,7 @@ def main():
         "objects": objects,
         "lights": lights,
         "work_planes": [{"name": "office", "outline": [[0, 0], [W, 0], [W, L], [0, L]], "height": 0.75, "border": 0.5}],
+        "surface_grids": [{"name": "desk", "material": "desk", "facing": [0, 1, 0]}],
         "camera": {"position": [0.4, 1.6, 0.4], "look_at": [4.0, 0.9, 6.5], "up": [0, 1, 0], "vfov_deg": 65,
                    "resolution": [640, 480]},
         "radiosity": {"max_edge": 0.25},

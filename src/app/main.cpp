@@ -121,8 +121,8 @@ int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs&
     const app::SensorFiles csvs = app::sensorFiles(desc, csv);
     const std::vector<std::string> outputs = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     auto run = app::runPipeline(a.scene, o);
-    app::reportSensors(run, a.scene, o, csvs, files);
-    app::stageReports(run, a.scene, reports, files);
+    const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
+    app::stageReports(run, a.scene, reports, groups ? &*groups : nullptr, files);
     files.commit();
     app::reportWritten(outputs);
     printSolveSummary(run);
@@ -177,10 +177,10 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
     app::checkRenderedImage(*run.image, allowBlack);
-    app::reportSensors(run, a.scene, o, csvs, files);
+    const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
     run.report.begin("tone map + write");
     app::stageImages(images, *run.image, display, "rayrad rendering of " + a.scene, files);
-    app::stageReports(run, a.scene, reports, files);
+    app::stageReports(run, a.scene, reports, groups ? &*groups : nullptr, files);
     files.commit();
     run.report.end();
     app::reportWritten(images);

@@ -85,8 +85,4 @@ std::string stagesSummary(const PipelineRun& run);
 /// NAME_vertex_err_pct and NAME_gather_err_pct (indirect light; empty where not computed).
 std::string convergenceCsv(const PipelineRun& run);
 
-/// A machine-readable account of the run (JSON): counts, stages with time and peak
-/// memory, solver statistics, energy balance, sensors with references and errors.
-std::string runReportJson(const PipelineRun& run, const std::string& sceneFile);
-
 }  // namespace rayrad::app

@@ -4,6 +4,7 @@
 #include <app/grid_statistics.h>
 #include <app/light_group_parts.h>
 #include <app/result_checks.h>
+#include <app/run_report.h>
 #include <core/input_error.h>
 #include <scene/light_groups.h>
 #include <tonemap/image_io.h>
@@ -18,7 +19,8 @@ namespace rayrad::app {
 namespace {
 
 bool hasSensorGrids(const scene::SceneDesc& desc) {
-    return std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); });
+    return !desc.surfaceGrids.empty() ||
+           std::any_of(desc.sensors.begin(), desc.sensors.end(), [](const auto& s) { return !s.grid.empty(); });
 }
 
 /// Checks the report outputs before the work (a picture must be PNG or JPEG; a grid
@@ -69,21 +71,21 @@ SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath
     if (csvPath.empty()) return f;
     f.points = csvPath;
     if (hasSensorGrids(desc)) f.grids = gridSummaryPath(csvPath);
-    if (!desc.sensors.empty() && hasLightGroups(desc)) f.groups = lightGroupPath(csvPath);
+    if ((!desc.sensors.empty() || !desc.surfaceGrids.empty()) && hasLightGroups(desc)) f.groups = lightGroupPath(csvPath);
     return f;
 }
 
 /// The sensor table, grid statistics and light groups' parts (one more solve per group),
 /// on stdout and into the files.
-void reportSensors(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options,
-                   const SensorFiles& f, OutputFiles& files) {
+std::optional<LightGroupParts> reportSensors(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options,
+                                             const SensorFiles& f, OutputFiles& files) {
     for (const auto& w : checkSensorResults(run.sensors)) fmt::print(stderr, "warning: {}\n", w);
     const auto grids = gridStatistics(run.sensors);
     if (!run.sensors.empty()) std::cout << sensorTable(run.sensors) << gridTable(grids);
     if (!f.points.empty()) files.set(f.points, sensorCsv(run.sensors));
     if (!f.grids.empty()) files.set(f.grids, gridCsv(grids));
     const auto groups = scene::lightGroups(run.scene);
-    if (groups.empty() || run.sensors.empty()) return;
+    if (groups.empty() || run.sensors.empty()) return std::nullopt;
     run.report.begin(fmt::format("light groups ({} solves)", groups.size()));
     const LightGroupParts parts = solveLightGroups(sceneFile, options, run, groups);
     run.report.end();
@@ -92,6 +94,7 @@ void reportSensors(PipelineRun& run, const std::string& sceneFile, const Pipelin
     fmt::print(stderr, "light groups: {} solved alone; their sum differs from the full solve by at most {:.3f} %\n",
                groups.size(), 100 * largestGroupSumDifference(run.sensors, parts));
     if (!f.groups.empty()) files.set(f.groups, lightGroupCsv(run.sensors, parts));
+    return parts;
 }
 
 void reportWritten(const std::vector<std::string>& paths) {
@@ -109,9 +112,10 @@ std::vector<std::string> addSensorAndReportOutputs(const scene::SceneDesc& desc,
     return out;
 }
 
-void stageReports(const PipelineRun& run, const std::string& scene, const ReportArgs& r, OutputFiles& files) {
+void stageReports(const PipelineRun& run, const std::string& scene, const ReportArgs& r, const LightGroupParts* groups,
+                  OutputFiles& files) {
     if (!r.convergence.empty()) files.set(r.convergence, convergenceCsv(run));
-    if (!r.report.empty()) files.set(r.report, runReportJson(run, scene));
+    if (!r.report.empty()) files.set(r.report, runReportJson(run, scene, groups));
     auto picture = [&](const std::string& path, const tonemap::Picture& p) {
         files.set(path, tonemap::encodeDisplayImage(path, p.width, p.height, p.rgb));
     };

@@ -3,10 +3,12 @@
 // OutputFiles before the work; the contents are given to it after (core/output_file.h).
 #pragma once
 
+#include <app/light_group_parts.h>
 #include <app/pipeline.h>
 #include <core/output_file.h>
 #include <scene/scene_desc.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,12 +43,14 @@ std::vector<std::string> addSensorAndReportOutputs(const scene::SceneDesc& desc,
                                                    const ReportArgs& reports, OutputFiles& files);
 
 /// The sensor table, grid statistics and light groups' parts (one more solve per group),
-/// on stdout and into the files.
-void reportSensors(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options, const SensorFiles& f,
-                   OutputFiles& files);
+/// on stdout and into the files; returns the groups' parts when the scene has groups.
+std::optional<LightGroupParts> reportSensors(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options,
+                                             const SensorFiles& f, OutputFiles& files);
 
-/// The reports' and pictures' contents into the files.
-void stageReports(const PipelineRun& run, const std::string& scene, const ReportArgs& r, OutputFiles& files);
+/// The reports' and pictures' contents into the files (`groups`: the light groups' parts
+/// for the JSON report, or null).
+void stageReports(const PipelineRun& run, const std::string& scene, const ReportArgs& r, const LightGroupParts* groups,
+                  OutputFiles& files);
 
 /// "wrote PATH" on stderr for each non-empty path.
 void reportWritten(const std::vector<std::string>& paths);

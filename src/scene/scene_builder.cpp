@@ -4,12 +4,14 @@
 #include <core/input_error.h>
 #include <scene/mesh_import.h>
 #include <scene/polygon.h>
+#include <scene/surface_grids.h>
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace rayrad::scene {
@@ -144,6 +146,7 @@ class Builder {
         }
         for (const auto& d : m_desc.sensors)
             s.sensors.push_back({d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
+        addSurfaceGrids(s);
         computeBounds(s);
         return s;
     }
@@ -423,6 +426,18 @@ class Builder {
                 const double u = ((i + 0.5) / kl - 0.5) * length, v = ((j + 0.5) / kw - 0.5) * width;
                 if (web.round && u * u + v * v > 0.25 * width * width) continue;
                 p.openingPoints.push_back(p.position + u * p.c0 + v * c90);
+            }
+    }
+
+    /// The surface grids' points, after the sensors; a name used twice is an error.
+    void addSurfaceGrids(Scene& s) {
+        std::set<std::string> names;
+        for (const auto& sensor : s.sensors) names.insert(sensor.name);
+        for (const auto& grid : m_desc.surfaceGrids)
+            for (auto& sensor : surfaceGridSensors(s, grid)) {
+                if (!names.insert(sensor.name).second)
+                    fail(grid.where + "/name", fmt::format("sensor name \"{}\" is used twice", sensor.name));
+                s.sensors.push_back(std::move(sensor));
             }
     }
 

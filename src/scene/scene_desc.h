@@ -94,6 +94,19 @@ struct SensorDesc {
     std::optional<double> refDirect, refIndirect, refTotal;
 };
 
+/// A grid on surfaces of the scene: every planar face of one material (facing a given
+/// way, if asked), a grid of points on each plane they make (expanded by the builder,
+/// which knows the geometry).
+struct SurfaceGridDesc {
+    std::string where;               ///< JSON pointer, for messages
+    std::string name;
+    std::string material;            ///< a scene material, or "<mesh file>:<material>"
+    std::optional<Vec3> facing;      ///< keep faces whose normal is within 10° of this
+    std::optional<double> spacing;   ///< m; none: EN 12464-1's p = 0.2 · 5^log10(d) per plane
+    double offset = 0;               ///< m, the points' height above the surface
+    double minArea = 0.01;           ///< m²: smaller surfaces (a leg's end, a seam) get no grid
+};
+
 struct SceneDesc {
     std::string file;                ///< the scene file's path, for messages
     std::vector<MaterialDesc> materials;
@@ -101,6 +114,7 @@ struct SceneDesc {
     std::vector<LightDesc> lights;
     std::optional<CameraDesc> camera;
     std::vector<SensorDesc> sensors;  ///< points, with grids already expanded
+    std::vector<SurfaceGridDesc> surfaceGrids;  ///< expanded into sensors by the builder
     MeshingOptions meshing;
     ClusterOptions clusters;
     SolverOptions solver;

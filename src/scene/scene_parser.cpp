@@ -498,8 +498,8 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     top.string("description");
     top.string("provenance");
     // Unknown top-level keys first: a misspelt "Materials" explains the errors it causes.
-    top.finish({"materials", "objects", "lights", "camera", "sensors", "sensor_grids", "work_planes", "radiosity", "clusters",
-                "render"});
+    top.finish({"materials", "objects", "lights", "camera", "sensors", "sensor_grids", "work_planes", "surface_grids",
+                "radiosity", "clusters", "render"});
 
     std::map<std::string, int> materialIndex;
     if (auto mats = top.object("materials")) {
@@ -536,6 +536,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     eachObject("sensors", [&](JsonObject o, int i) { desc.sensors.push_back(parseSensor(o, i)); });
     eachObject("sensor_grids", [&](JsonObject o, int i) { parseSensorGrid(o, i, desc.sensors); });
     eachObject("work_planes", [&](JsonObject o, int i) { parseWorkPlane(o, i, desc.sensors); });
+    eachObject("surface_grids", [&](JsonObject o, int i) { desc.surfaceGrids.push_back(parseSurfaceGrid(o, i)); });
     if (auto r = top.object("radiosity")) parseRadiosity(*r, desc);
     if (auto c = top.object("clusters")) parseClusters(*c, desc);
     if (auto r = top.object("render")) parseRender(*r, desc);

@@ -14,10 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-/// EN 12464-1 (after EN 12193): the grid spacing for an area whose longer side is d
-/// metres, p = 0.2 · 5^log10(d) m (0.2 m at 1 m, 1 m at 10 m, 5 m at 100 m), at most 10 m.
-double standardGridSpacing(double d) { return std::min(10.0, 0.2 * std::pow(5.0, std::log10(std::max(d, 1e-3)))); }
-
 void parseReference(JsonObject r, SensorDesc& s) {
     s.refDirect = r.number("direct_lx");
     s.refIndirect = r.number("indirect_lx");
@@ -26,6 +22,8 @@ void parseReference(JsonObject r, SensorDesc& s) {
 }
 
 }  // namespace
+
+double standardGridSpacing(double d) { return std::min(10.0, 0.2 * std::pow(5.0, std::log10(std::max(d, 1e-3)))); }
 
 SensorDesc parseSensor(JsonObject s, int index) {
     SensorDesc d;
@@ -142,6 +140,24 @@ void parseWorkPlane(JsonObject w, int index, std::vector<SensorDesc>& out) {
             ++kept;
         }
     if (kept == 0) w.context().error(w.path(), "no grid point lies inside the outline and its border");
+}
+
+SurfaceGridDesc parseSurfaceGrid(JsonObject g, int index) {
+    SurfaceGridDesc d;
+    d.where = g.path();
+    d.name = g.string("name").value_or("surface" + std::to_string(index));
+    g.required("material");
+    d.material = g.string("material").value_or("");
+    if (g.has("facing")) {
+        d.facing = g.vec3("facing");
+        if (d.facing && glm::length(*d.facing) == 0) g.error("facing", "the direction must not be zero");
+        else if (d.facing) d.facing = glm::normalize(*d.facing);
+    }
+    if (g.has("spacing")) d.spacing = g.positive("spacing", 1.0);
+    d.offset = g.nonNegative("offset", 0.0);
+    d.minArea = g.nonNegative("min_area", d.minArea);
+    g.finish();
+    return d;
 }
 
 }  // namespace rayrad::scene

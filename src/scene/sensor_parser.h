@@ -20,4 +20,12 @@ void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out);
 /// to `out`.
 void parseWorkPlane(JsonObject w, int index, std::vector<SensorDesc>& out);
 
+/// A grid on surfaces of the scene (a material's faces), checked here and expanded by
+/// the builder (scene/surface_grids.h).
+SurfaceGridDesc parseSurfaceGrid(JsonObject g, int index);
+
+/// EN 12464-1 (after EN 12193): the grid spacing for an area whose longer side is d
+/// metres, p = 0.2 · 5^log10(d) m (0.2 m at 1 m, 1 m at 10 m, 5 m at 100 m), at most 10 m.
+double standardGridSpacing(double d);
+
 }  // namespace rayrad::scene

@@ -41,4 +41,21 @@ check "info on an IES file: output ratio" grep -q "light output ratio: 0.9132" "
 "$rayrad" info "$src/tests/data/luminaires/eulumdatugr_sample_11.ldt" > "$work/ldt.txt"
 check "info on an LDT file: stated and integrated ratio" grep -q "light output ratio: 0.6497 (integrated / lamp flux); stated 0.6497" "$work/ldt.txt"
 
+# Light groups (issue 14): each group's part per sensor in the groups CSV and the JSON report.
+cat > "$work/groups.json" <<'JSON'
+{"materials": {"w": {"reflectance": 0.5}},
+ "objects": [{"type": "box", "min": [0, 0, 0], "max": [3, 2.5, 3], "facing": "inward", "material": "w"}],
+ "lights": [{"type": "point", "position": [1, 2.2, 1], "intensity_cd": 100, "group": "left"},
+            {"type": "point", "position": [2, 2.2, 2], "intensity_cd": 50, "group": "right"}],
+ "sensors": [{"name": "desk", "position": [1.5, 0.8, 1.5], "normal": [0, 1, 0]}],
+ "radiosity": {"max_edge": 1}}
+JSON
+"$rayrad" solve "$work/groups.json" --sensors "$work/g.csv" --report "$work/g.report.json" -q > "$work/groups.txt" 2> "$work/groups.err"
+check "light groups: exit 0" test $? -eq 0
+check "light groups: table" grep -q "light groups (total lx" "$work/groups.txt"
+check "light groups: csv rows" test "$(grep -c '^desk,' "$work/g.groups.csv")" -eq 2
+check "light groups: report names them" grep -q '"left"' "$work/g.report.json"
+check "light groups: report parts" grep -q '"largest_sum_difference_pct"' "$work/g.report.json"
+check "light groups: report has both parts" test "$(grep -c '"total_lx"' "$work/g.report.json")" -eq 2
+
 finish cli

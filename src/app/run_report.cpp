@@ -1,0 +1,89 @@
+#include <app/run_report.h>
+
+#include <app/grid_statistics.h>
+#include <core/math.h>
+#include <radiosity/shooting_solver.h>
+
+#include <nlohmann/json.hpp>
+
+namespace rayrad::app {
+
+namespace {
+
+/// Each group's name, the largest difference of the groups' sum from the full solve, and
+/// per sensor each group's part: a designer scales a part to dim its group.
+nlohmann::json lightGroupJson(const std::vector<SensorResult>& full, const LightGroupParts& parts) {
+    using nlohmann::json;
+    json j;
+    j["groups"] = json::array();
+    for (const auto& g : parts.groups) j["groups"].push_back(g.empty() ? json(nullptr) : json(g));
+    j["largest_sum_difference_pct"] = 100 * largestGroupSumDifference(full, parts);
+    j["sensors"] = json::array();
+    for (size_t i = 0; i < full.size(); ++i) {
+        json sensor = {{"name", full[i].sensor.name}, {"parts", json::array()}};
+        for (size_t g = 0; g < parts.groups.size(); ++g) {
+            const auto& v = parts.parts[g][i];
+            sensor["parts"].push_back({{"direct_lx", luminance(v.direct)},
+                                       {"indirect_lx", luminance(v.indirect)},
+                                       {"total_lx", luminance(v.direct) + luminance(v.indirect)}});
+        }
+        j["sensors"].push_back(std::move(sensor));
+    }
+    return j;
+}
+
+}  // namespace
+
+std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, const LightGroupParts* groups) {
+    using nlohmann::json;
+    json j;
+    j["scene"] = sceneFile;
+    j["patches"] = run.mesh.patches.size();
+    j["clusters"] = {{"enabled", run.clustering.enabled},
+                     {"count", run.clustering.clusters.size()},
+                     {"multi_patch", run.clustering.multiPatchClusters()},
+                     {"voxel_size_m", run.clustering.voxelSize},
+                     {"max_illuminance_step_lx", run.maxIlluminanceStep}};
+    const auto& s = run.solution;
+    j["solve"] = {{"seconds", s.seconds},
+                  {"shots", s.shots},
+                  {"converged", s.converged},
+                  {"unshot_fraction", s.initialUnshotFlux > 0 ? s.remainingUnshotFlux / s.initialUnshotFlux : 0.0},
+                  {"cluster_transfers", run.shooting.clusterTransfers},
+                  {"image_cluster_transfers", run.shooting.imageTransfers},
+                  {"image_cluster_transfers_carrying_light", run.shooting.imageTransfersLit},
+                  {"patch_pairs", run.shooting.patchPairs},
+                  {"corrections", run.shooting.corrections},
+                  {"push_pulls", run.shooting.pushPulls},
+                  {"channels", run.singleChannel ? 1 : 3}};
+    if (run.lights) {
+        auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
+        j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"absorbed_by_mirrors", b.mirrorAbsorbed},
+                          {"absorbed_on_backs", b.backAbsorbed}, {"unshot", b.unshot},
+                          {"not_accounted_pct", 100 * b.relativeError()}};
+    }
+    j["stages"] = json::array();
+    for (const auto& st : run.report.stages())
+        j["stages"].push_back({{"name", st.name}, {"seconds", st.seconds}, {"cpu_seconds", st.cpuSeconds}, {"peak_bytes", st.peakBytes}});
+    j["total_seconds"] = run.report.totalSeconds();
+    j["peak_bytes"] = peakMemoryBytes();
+    j["sensors"] = json::array();
+    for (const auto& r : run.sensors) {
+        json e = {{"name", r.sensor.name},
+                  {"direct_lx", luminance(r.value.direct)},
+                  {"indirect_lx", luminance(r.value.indirect)}};
+        if (r.value.indirectVertex) e["indirect_vertex_lx"] = luminance(*r.value.indirectVertex);
+        if (r.sensor.refDirect) e["ref_direct_lx"] = *r.sensor.refDirect;
+        if (r.sensor.refIndirect) e["ref_indirect_lx"] = *r.sensor.refIndirect;
+        if (r.sensor.refTotal) e["ref_total_lx"] = *r.sensor.refTotal;
+        j["sensors"].push_back(e);
+    }
+    j["grids"] = json::array();
+    for (const auto& g : gridStatistics(run.sensors))
+        j["grids"].push_back({{"grid", g.grid}, {"points", g.points}, {"emin_lx", g.minimum}, {"eavg_lx", g.mean},
+                              {"emax_lx", g.maximum}, {"u0", g.u0()}, {"emin_emax", g.minToMax()}});
+    if (groups) j["light_groups"] = lightGroupJson(run.sensors, *groups);
+    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // names may come from --set or mesh files
+}
+
+}  // namespace rayrad::app
