@@ -26,7 +26,8 @@ void stageImages(const std::vector<std::string>& paths, const HdrImage& image, c
         } else {
             auto rgb8 = tonemap::toDisplay(image, display);
             if (hasLight) checkDisplayImage(path, rgb8, describeExposure(display));
-            files.set(path, tonemap::encodeDisplayImage(path, image.width, image.height, rgb8));
+            const std::string how = hasLight ? tonemap::describeDisplay(image, display) : std::string();
+            files.set(path, tonemap::encodeDisplayImage(path, image.width, image.height, rgb8, how.empty() ? description : description + "; " + how));
         }
     }
 }
@@ -37,6 +38,7 @@ std::string snapshotPath(const std::string& path, int index) {
 }
 
 std::string describeExposure(const tonemap::DisplayOptions& display) {
+    if (display.tone.op != tonemap::ToneOperator::Exposure) return "tone operator " + tonemap::toneOperatorName(display.tone.op);
     if (!display.autoExposure) return fmt::format("{:g} stops", display.exposureStops);
     return display.exposureStops == 0 ? "auto" : fmt::format("auto {:+g} stops", display.exposureStops);
 }

@@ -168,6 +168,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
     if (!desc.camera) throw InputError(placeMessage(a.scene, "/camera", "rendering needs a camera"));
+    tonemap::checkWhiteBalance(display.whiteBalance, desc.camera->width, desc.camera->height);
     OutputFiles files = app::filesOf(desc);
     app::addImageOutputs(images, files);
     for (int k = 1; k <= snapshots; ++k)
@@ -279,7 +280,7 @@ int main(int argc, char** argv) {
 
     CommonArgs renderArgs, solveArgs, infoArgs;
     std::vector<std::string> outputs;
-    std::string renderCsv, solveCsv, exposure = "auto";
+    std::string renderCsv, solveCsv, exposure = "auto", toneName = "exposure", whiteBalance = "none";
     std::optional<int> spp, seed;
     int snapshots = 0;
     app::ReportArgs renderReports, solveReports;
@@ -301,6 +302,22 @@ int main(int argc, char** argv) {
     render->add_option("--spp", spp, "Samples per pixel (default: render.spp, 4)")->check(CLI::Range(1, 65536));
     render->add_option("--seed", seed, "Random seed; the same seed gives the same image (default 1)")->check(CLI::Range(0, std::numeric_limits<int>::max()));
     render->add_option("--exposure", exposure, "\"auto\" (log-average luminance → 0.18) or stops: 2^stops per cd/m²")->default_str("auto");
+    render->add_option("--tonemap", toneName,
+                       "Tone operator: exposure, tumblin-rushmeier, ward or reinhard (docs/cli.md gives the equations)")
+        ->default_str("exposure");
+    render->add_option("--world-adaptation", display.tone.worldAdaptation,
+                       "World adaptation luminance L_wa, cd/m² (default: the image's log-average)");
+    render->add_option("--display-max", display.tone.displayMax, "The display's white L_dmax, cd/m²")->default_str("100");
+    render->add_option("--display-adaptation", display.tone.displayAdaptation,
+                       "Display adaptation luminance L_da, cd/m² (tumblin-rushmeier; default L_dmax/2)");
+    render->add_option("--max-contrast", display.tone.maxContrast, "The display's contrast C_max (tumblin-rushmeier)")
+        ->default_str("100");
+    render->add_option("--key", display.tone.key, "The key a (reinhard)")->default_str("0.18");
+    render->add_option("--white", display.tone.white,
+                       "The smallest luminance shown white, in key-scaled units (reinhard; default the image's largest)");
+    render->add_option("--white-balance", whiteBalance,
+                       "none, a colour temperature (3000K), grey-world or region:x,y,w,h: adapted to D65 (Bradford)")
+        ->default_str("none");
     render->add_option("--ocio-config", display.ocioConfig, "OpenColorIO config file (default: rayrad's embedded sRGB config)");
     render->add_option("--display", display.display, "OCIO display (default: the config's default)");
     render->add_option("--view", display.view, "OCIO view (default: the display's default)");
@@ -368,6 +385,14 @@ int main(int argc, char** argv) {
         std::unique_ptr<tbb::global_control> threads;
         if (common.threads > 0)
             threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common.threads);
+        if (render->parsed()) {
+            display.tone.op = tonemap::parseToneOperator(toneName);
+            tonemap::checkToneOptions(display.tone);
+            if (exposure != "auto" && display.tone.op != tonemap::ToneOperator::Exposure)
+                throw InputError(placeMessage("", "--exposure", "sets the exposure operator's scale; --tonemap " + toneName +
+                                                                    " chooses its own (give --tonemap exposure)"));
+            display.whiteBalance = tonemap::parseWhiteBalance(whiteBalance);
+        }
         if (render->parsed())
             return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, allowBlack,
                              renderReports);

@@ -3,7 +3,7 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <scene/json_reader.h>
-#include <scene/light_colour.h>
+#include <core/colour_temperature.h>
 #include <scene/overrides.h>
 #include <scene/sensor_parser.h>
 

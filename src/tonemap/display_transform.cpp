@@ -118,14 +118,39 @@ double exposureScale(const HdrImage& image, const DisplayOptions& o) {
     double stops = std::pow(2.0, o.exposureStops);
     if (!o.autoExposure) return stops;
     // Reinhard's key value: the log-average luminance of lit pixels maps to 0.18.
-    double sumLog = 0;
-    size_t n = 0;
-    for (const auto& p : image.pixels) {
-        double y = luminance(p);
-        if (y > 0 && std::isfinite(y)) sumLog += std::log(y), ++n;
+    const double average = logAverageLuminance(image);
+    return average > 0 ? 0.18 / average * stops : stops;
+}
+
+namespace {
+
+HdrImage balanced(const HdrImage& image, const WhiteBalance& wb) {
+    if (wb.kind == WhiteBalance::Kind::None) return image;
+    const Matrix3 m = whiteBalanceMatrix(image, wb);
+    HdrImage out = image;
+    for (auto& p : out.pixels) p = applyMatrix(m, p);
+    return out;
+}
+
+}  // namespace
+
+std::vector<Rgb> toDisplayLinear(const HdrImage& image, const DisplayOptions& options) {
+    const HdrImage source = balanced(image, options.whiteBalance);
+    const ToneCurve curve(source, options.tone, exposureScale(source, options));
+    std::vector<Rgb> out(source.pixels.size());
+    for (size_t i = 0; i < out.size(); ++i) {
+        const Rgb& c = source.pixels[i];
+        const double world = luminance(c);
+        if (!(world > 0) || !std::isfinite(world)) continue;  // black (and non-finite: refused before)
+        out[i] = toDisplayGamut(c * (curve(world) / world));
     }
-    if (n == 0) return stops;
-    return 0.18 / std::exp(sumLog / n) * stops;
+    return out;
+}
+
+std::string describeDisplay(const HdrImage& image, const DisplayOptions& options) {
+    const HdrImage source = balanced(image, options.whiteBalance);
+    const ToneCurve curve(source, options.tone, exposureScale(source, options));
+    return "tone: " + curve.describe() + "; white balance: " + describe(options.whiteBalance, image);
 }
 
 std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOptions& options) {
@@ -137,10 +162,10 @@ std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOpt
 
 std::vector<uint8_t> toDisplay(const HdrImage& image, const DisplayOptions& options) {
     auto cpu = makeProcessor(options);
-    double scale = exposureScale(image, options);
-    std::vector<float> buf(image.pixels.size() * 3);
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(image.pixels[i][c] * scale);
+    const std::vector<Rgb> linear = toDisplayLinear(image, options);
+    std::vector<float> buf(linear.size() * 3);
+    for (size_t i = 0; i < linear.size(); ++i)
+        for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(linear[i][c]);
     OCIO::PackedImageDesc desc(buf.data(), image.width, image.height, 3);
     cpu->apply(desc);
     std::vector<uint8_t> out(buf.size());

@@ -1,7 +1,10 @@
-// Scene-linear cd/m² → display-encoded 8-bit RGB, through an OpenColorIO display/view.
+// Scene-linear cd/m² → display-encoded 8-bit RGB: white balance, tone reproduction
+// (luminance mapped, chroma kept, gamut-mapped), then an OpenColorIO display/view.
 #pragma once
 
 #include <core/hdr_image.h>
+#include <tonemap/tone_operators.h>
+#include <tonemap/white_balance.h>
 
 #include <cstdint>
 #include <memory>
@@ -10,9 +13,11 @@
 
 namespace rayrad::tonemap {
 
-/// Display options: exposure and the OCIO display transform.
+/// Display options: white balance, tone reproduction, and the OCIO display transform.
 struct DisplayOptions {
-    bool autoExposure = true;   ///< key-value exposure: log-average luminance → 0.18
+    WhiteBalance whiteBalance;  ///< applied first, on linear Rec.709
+    ToneOptions tone;           ///< the operator and its parameters
+    bool autoExposure = true;   ///< exposure operator: log-average luminance → 0.18
     double exposureStops = 0;   ///< with autoExposure: added to it; else absolute, 2^stops per cd/m²
     std::string ocioConfig;     ///< path to a user .ocio file; empty = rayrad's embedded config
     std::string display;        ///< empty = the config's default display
@@ -30,11 +35,21 @@ double exposureScale(const HdrImage& image, const DisplayOptions& options);
 /// piecewise sRGB curve, view "Standard"; view "Raw"), so nothing depends on $OCIO.
 const char* embeddedOcioConfig();
 
-/// Converts to 8-bit display RGB, row-major, 3 bytes a pixel. Luminance is scaled by
-/// the exposure, then OCIO's processor from the scene-linear role to (display, view)
-/// is applied, then values are clamped and quantised. Throws InputError for a bad
-/// config path or unknown display/view (with the names).
+/// Converts to 8-bit display RGB, row-major, 3 bytes a pixel: the white balance, then each
+/// pixel's RGB scaled by L_d / L_w (the tone operator's display luminance over the
+/// world luminance) and brought into the display gamut toward grey (toDisplayGamut),
+/// then OCIO's processor from the scene-linear role to (display, view), then quantised.
+/// The view receives display-relative linear values in [0, 1]. Throws InputError for a
+/// bad config path or unknown display/view (with the names), or a bad white-balance region.
 std::vector<uint8_t> toDisplay(const HdrImage& image, const DisplayOptions& options);
+
+/// The display linear RGB before the OCIO view (white balanced, tone mapped, in gamut),
+/// for tests and comparisons.
+std::vector<Rgb> toDisplayLinear(const HdrImage& image, const DisplayOptions& options);
+
+/// "tone: ward: L_wa 54.2 cd/m², L_dmax 100 cd/m²; white balance: 3000 K → D65 (Bradford)",
+/// as written into the display image's metadata.
+std::string describeDisplay(const HdrImage& image, const DisplayOptions& options);
 
 /// Applies the display transform to one scene-linear value (for tests).
 std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOptions& options);

@@ -58,9 +58,11 @@ std::string encodeExr(const std::string& path, const HdrImage& image, const std:
     return encode(path, spec, OIIO::TypeDesc::FLOAT, buf.data());
 }
 
-std::string encodeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8) {
+std::string encodeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8,
+                               const std::string& description) {
     OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
+    if (!description.empty()) spec.attribute("ImageDescription", description);
     spec.attribute("Software", "rayrad");
     spec.attribute("DateTime", "");  // bit-identical files, as for EXR
     return encode(path, spec, OIIO::TypeDesc::UINT8, rgb8.data());

@@ -21,8 +21,10 @@ void checkImageFormat(const std::string& path);
 std::string encodeExr(const std::string& path, const HdrImage& image, const std::string& description);
 
 /// The bytes of a PNG or JPEG file (by `path`'s extension) of display-encoded 8-bit RGB
-/// (already tone mapped and encoded).
-std::string encodeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8);
+/// (already tone mapped and encoded); `description` (how it was tone mapped and white
+/// balanced) goes into the file's ImageDescription.
+std::string encodeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8,
+                               const std::string& description = "");
 
 /// encodeExr, then written safely (core/output_file.h).
 void writeExr(const std::string& path, const HdrImage& image, const std::string& description);

@@ -44,6 +44,14 @@ expect 3 "unwritable csv" "$work/nodir/out.csv: cannot write" -- solve "$work/go
 expect 2 "bad --set" "/radiosity/max_egde: unknown key (did you mean \"max_edge\"?)" -- solve "$work/good.json" --set radiosity.max_egde=1
 expect 2 "--set with slashes" "--set radiosity/max_edge=1: keys are separated by dots: did you mean radiosity.max_edge=1?" -- solve "$work/good.json" --set radiosity/max_edge=1
 expect 2 "bad --exposure" "--exposure: expected \"auto\" or a number" -- render "$work/good.json" -o "$work/out.png" --exposure bright
+# Tone reproduction and white balance (issue 15): named before any work.
+expect 2 "unknown --tonemap" "--tonemap: expected exposure, tumblin-rushmeier, ward or reinhard, got \"aces\"" -- render "$work/good.json" -o "$work/out.png" --tonemap aces
+expect 2 "--exposure with ward" "--exposure: sets the exposure operator's scale" -- render "$work/good.json" -o "$work/out.png" --tonemap ward --exposure 2
+expect 2 "--key nan" "--key: expected a number from 0.0001 to 10, got nan" -- render "$work/good.json" -o "$work/out.png" --tonemap reinhard --key nan
+expect 2 "--display-max inf" "--display-max: expected a number" -- render "$work/good.json" -o "$work/out.png" --tonemap ward --display-max inf
+expect 2 "bad --white-balance" "--white-balance: expected none, a colour temperature" -- render "$work/good.json" -o "$work/out.png" --white-balance warm
+expect 2 "--white-balance 500K" "--white-balance: expected a colour temperature from 1667 to 25000 K" -- render "$work/good.json" -o "$work/out.png" --white-balance 500K
+expect 2 "white-balance region outside" "--white-balance: the region 4,4 8×8 is not inside the 8×8 image" -- render "$work/good.json" -o "$work/out.png" --white-balance region:4,4,8,8
 scene nocamera "{$good_materials, $good_box, $good_light}"
 expect 2 "render without camera" "nocamera.json: /camera: rendering needs a camera" -- render "$work/nocamera.json" -o "$work/out.png"
 

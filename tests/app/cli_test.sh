@@ -24,6 +24,18 @@ check "png written" test -s "$work/c.png"
 check "jpg written" test -s "$work/c.jpg"
 check "no temporary files left" test "$(ls -a "$work" | grep -c '\.tmp')" -eq 0
 
+# Tone reproduction and white balance (issue 15): recorded in the display image's metadata.
+"$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[16,16] --tonemap ward --white-balance 3000K \
+    -o "$work/ward.png" -q > /dev/null 2>&1
+check "ward render exit 0" test $? -eq 0
+check "png records the tone operator" grep -aq "tone: ward: L_wa" "$work/ward.png"
+check "png records the white balance" grep -aq "white balance: 3000 K → D65 (Bradford)" "$work/ward.png"
+for op in tumblin-rushmeier reinhard; do
+    "$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[16,16] --tonemap "$op" --white-balance grey-world \
+        -o "$work/$op.png" -q > /dev/null 2>&1
+    check "$op render exit 0" test $? -eq 0
+done
+
 # Nothing reflects: no secondary pass, sensors still answer (indirect 0).
 "$rayrad" solve "$cube" --set materials.wall.reflectance=0 --set radiosity.max_edge=2.5 --sensors "$work/black.csv" -q \
     > /dev/null 2> "$work/black.err"

@@ -6,7 +6,7 @@
 #include <scene/scene_parser.h>
 #include <core/input_error.h>
 #include <app/light_group_parts.h>
-#include <scene/light_colour.h>
+#include <core/colour_temperature.h>
 #include <scene/light_groups.h>
 #include <radiosity/form_factor.h>
 #include <scene/photometry.h>
@@ -156,14 +156,14 @@ TEST_CASE("an isotropic photometric file lights a room as a point light of the s
 }
 
 TEST_CASE("a colour temperature gives a light of luminance 1, white near 6500 K", "[luminaire]") {
-    const Rgb d65 = scene::colourOfTemperature(6504);
+    const Rgb d65 = colourOfTemperature(6504);
     CHECK(luminance(d65) == Approx(1.0));
     // The Planckian locus at 6504 K lies a little below D65 in y (D65 is greener): its RGB
     // has a little more red and blue than green.
     CHECK(d65.r == Approx(1.0).margin(0.05));
     CHECK(d65.b == Approx(1.0).margin(0.05));
     CHECK(d65.g < 1.0);
-    const Rgb warm = scene::colourOfTemperature(2700);
+    const Rgb warm = colourOfTemperature(2700);
     CHECK(luminance(warm) == Approx(1.0));
     CHECK(warm.r > warm.g);
     CHECK(warm.g > warm.b);

@@ -1,9 +1,9 @@
-// The colour of a light given as a correlated colour temperature.
+// The colour of a light given as a correlated colour temperature (lights, white balance).
 #pragma once
 
 #include <core/math.h>
 
-namespace rayrad::scene {
+namespace rayrad {
 
 constexpr double kMinColourTemperature = 1667;   ///< K, the range of the Planckian-locus fit
 constexpr double kMaxColourTemperature = 25000;  ///< K
@@ -14,4 +14,4 @@ constexpr double kMaxColourTemperature = 25000;  ///< K
 /// adaptation: 6504 K is near white, 2700 K orange). Negative components clipped.
 Rgb colourOfTemperature(double kelvin);
 
-}  // namespace rayrad::scene
+}  // namespace rayrad

@@ -1,8 +1,8 @@
-#include <scene/light_colour.h>
+#include <core/colour_temperature.h>
 
 #include <algorithm>
 
-namespace rayrad::scene {
+namespace rayrad {
 
 Rgb colourOfTemperature(double kelvin) {
     const double t = std::clamp(kelvin, kMinColourTemperature, kMaxColourTemperature);
@@ -20,4 +20,4 @@ Rgb colourOfTemperature(double kelvin) {
     return rgb / luminance(rgb);
 }
 
-}  // namespace rayrad::scene
+}  // namespace rayrad
