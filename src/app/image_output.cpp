@@ -17,16 +17,16 @@ void addImageOutputs(const std::vector<std::string>& paths, OutputFiles& files) 
     }
 }
 
-void stageImages(const std::vector<std::string>& paths, const HdrImage& image, const tonemap::DisplayOptions& display,
-                 const std::string& description, OutputFiles& files) {
+void stageImages(const std::vector<std::string>& paths, const HdrImage& image, const HdrImage& forDisplay,
+                 const tonemap::DisplayOptions& display, const std::string& description, OutputFiles& files) {
     const bool hasLight = std::any_of(image.pixels.begin(), image.pixels.end(), [](const Rgb& p) { return p != Rgb(0.0); });
     for (const auto& path : paths) {
         if (tonemap::isHdrFormat(path)) {
             files.set(path, tonemap::encodeExr(path, image, description + "; pixel values are luminance in cd/m^2"));
         } else {
-            auto rgb8 = tonemap::toDisplay(image, display);
+            auto rgb8 = tonemap::toDisplay(forDisplay, display);
             if (hasLight) checkDisplayImage(path, rgb8, describeExposure(display));
-            const std::string how = hasLight ? tonemap::describeDisplay(image, display) : std::string();
+            const std::string how = hasLight ? tonemap::describeDisplay(forDisplay, display) : std::string();
             files.set(path, tonemap::encodeDisplayImage(path, image.width, image.height, rgb8, how.empty() ? description : description + "; " + how));
         }
     }

@@ -14,11 +14,12 @@ namespace rayrad::app {
 /// written) and adds it to `files`.
 void addImageOutputs(const std::vector<std::string>& paths, OutputFiles& files);
 
-/// Encodes the image for each path (.exr as linear cd/m², others through the display
-/// transform, each display image checked by checkDisplayImage) and gives the bytes to
-/// `files`; nothing is written until files.commit().
-void stageImages(const std::vector<std::string>& paths, const HdrImage& image, const tonemap::DisplayOptions& display,
-                 const std::string& description, OutputFiles& files);
+/// Encodes the image for each path (.exr: `image`, linear cd/m²; others: `forDisplay`,
+/// the range-compressed average, through the display transform, each checked by
+/// checkDisplayImage) and gives the bytes to `files`; nothing is written until
+/// files.commit().
+void stageImages(const std::vector<std::string>& paths, const HdrImage& image, const HdrImage& forDisplay,
+                 const tonemap::DisplayOptions& display, const std::string& description, OutputFiles& files);
 
 /// "out/cube.png" → "out/cube.snap03.png".
 std::string snapshotPath(const std::string& path, int index);

@@ -180,7 +180,8 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     app::checkRenderedImage(*run.image, allowBlack);
     const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
     run.report.begin("tone map + write");
-    app::stageImages(images, *run.image, display, "rayrad rendering of " + a.scene, files);
+    app::stageImages(images, *run.image, run.displayImage ? *run.displayImage : *run.image, display,
+                     "rayrad rendering of " + a.scene, files);
     app::stageReports(run, a.scene, reports, groups ? &*groups : nullptr, files);
     files.commit();
     run.report.end();

@@ -32,6 +32,12 @@ scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Ove
 
 namespace {
 
+/// L_c for the display average (render.display_range_compression), 0 when off.
+double displayCompression(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution) {
+    return scene.render.displayRangeCompression ? raytrace::compressionLuminance(scene, mesh, solution) : 0.0;
+}
+
+
 std::optional<double> errorPct(double value, const std::optional<double>& ref) {
     if (!ref || *ref == 0) return std::nullopt;
     return 100.0 * (value - *ref) / *ref;
@@ -97,11 +103,12 @@ class PushPullObserver {
 
     void writeSnapshot(const radiosity::RadiositySolution& copy) {
         raytrace::PinholeCamera camera(*m_run.scene.camera);
+        raytrace::DisplayAverage forDisplay{displayCompression(m_run.scene, m_run.mesh, copy), {}};
         HdrImage image = raytrace::render(m_run.scene, m_run.mesh, copy, *m_run.lights, *m_run.embree, camera,
-                                          m_run.scene.render);
+                                          m_run.scene.render, {}, &forDisplay);
         std::vector<std::string> paths;
         for (const auto& p : m_options.snapshotOutputs) paths.push_back(snapshotPath(p, m_nextSnapshot));
-        stageImages(paths, image, m_options.display,
+        stageImages(paths, image, forDisplay.image, m_options.display,
                     fmt::format("rayrad snapshot {} after {} shots, {:.3g} s", m_nextSnapshot, copy.shots, copy.seconds),
                     *m_options.files);
         m_options.files->commit();
@@ -231,11 +238,13 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         raytrace::PinholeCamera camera(*run.scene.camera);
         Progress progress("ray trace", options.quiet);
         std::mutex m;
+        raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, run.solution), {}};
         run.image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera,
                                      run.scene.render, [&](double f) {
                                          std::lock_guard<std::mutex> lock(m);
                                          progress.update(f);
-                                     });
+                                     }, &forDisplay);
+        run.displayImage = std::move(forDisplay.image);
     } else if (!run.scene.camera) {
         run.skipped.push_back("ray trace (no camera)");
     }

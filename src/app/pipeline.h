@@ -64,7 +64,8 @@ struct PipelineRun {
     std::unique_ptr<radiosity::DirectLight> lights;
     radiosity::RadiositySolution solution;
     std::vector<SensorResult> sensors;
-    std::optional<HdrImage> image;
+    std::optional<HdrImage> image;         ///< cd/m², the plain average of each pixel's samples (EXR, numbers)
+    std::optional<HdrImage> displayImage;  ///< the range-compressed average display images are made from
     StageReport report;
     std::vector<std::string> skipped;  ///< "stage (reason)" for the stages not needed
     std::vector<std::string> warnings;  ///< scenes that are probably wrong (sceneWarnings), one line each

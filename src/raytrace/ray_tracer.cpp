@@ -83,10 +83,24 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     return L + m.reflectance * (direct + indirect) / kPi;  // L = ρ E / π
 }
 
+double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                            const radiosity::RadiositySolution& solution) {
+    double sumLog = 0, area = 0;
+    for (size_t i = 0; i < mesh.patches.size() && i < solution.directMean.size(); ++i) {
+        const double L = luminance(solution.reflectedLuminance(scene, mesh, i));
+        if (!(L > 0) || !std::isfinite(L)) continue;
+        sumLog += std::log(L) * mesh.patches[i].area;
+        area += mesh.patches[i].area;
+    }
+    return area > 0 ? std::exp(sumLog / area) / 0.18 : 0.0;
+}
+
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
                 const radiosity::DirectLight& lights, const EmbreeScene& embree, const PinholeCamera& camera,
-                const scene::RenderOptions& options, const std::function<void(double)>& onProgress) {
+                const scene::RenderOptions& options, const std::function<void(double)>& onProgress, DisplayAverage* display) {
     HdrImage image(camera.width(), camera.height());
+    const double Lc = display ? display->compressionLuminance : 0.0;
+    if (display) display->image = HdrImage(camera.width(), camera.height());
     const int spp = options.samplesPerPixel;
     const int strata = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(spp)))));
     // area_light_samples is a pixel's budget of shadow rays per area light: its samples
@@ -97,7 +111,8 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
         for (int y = rows.begin(); y != rows.end(); ++y) {
             for (int x = 0; x < image.width; ++x) {
                 Random rng(options.seed, static_cast<uint64_t>(y) * image.width + x);
-                Rgb sum(0.0);
+                Rgb sum(0.0), weighted(0.0);
+                double weights = 0;
                 for (int s = 0; s < spp; ++s) {
                     // Stratified jitter for the first strata² samples, uniform for the rest.
                     double jx, jy;
@@ -109,10 +124,16 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                         jy = rng.nextDouble();
                     }
                     Vec3 dir = camera.direction(x + jx, y + jy);
-                    sum += shadeRay(scene, mesh, solution, lights, embree, camera.position(), dir,
-                                    raysPerHit, rng, 0);
+                    const Rgb sample = shadeRay(scene, mesh, solution, lights, embree, camera.position(), dir, raysPerHit, rng, 0);
+                    sum += sample;
+                    if (Lc > 0) {
+                        const double w = 1 / (1 + std::max(0.0, luminance(sample)) / Lc);
+                        weighted += w * sample;
+                        weights += w;
+                    }
                 }
                 image.at(x, y) = sum / static_cast<double>(spp);
+                if (display) display->image.at(x, y) = Lc > 0 && weights > 0 ? weighted / weights : image.at(x, y);
             }
             int done = ++rowsDone;
             if (onProgress) onProgress(static_cast<double>(done) / image.height);

@@ -13,6 +13,21 @@
 
 namespace rayrad::raytrace {
 
+/// The average a display image is made from: each sample weighted by 1 / (1 + L_s / L_c)
+/// (L_s its luminance), i.e. the samples range-compressed before they are averaged and
+/// the average expanded again. A pixel half covered by a lamp 1 000 × brighter than L_c
+/// then reads about L_c (not 500 L_c, which any display shows as white), so an emitter's
+/// edge shades off over its pixels as the coverage does. Pixels of one level are unchanged.
+struct DisplayAverage {
+    double compressionLuminance = 0;  ///< L_c, cd/m² (0: off)
+    HdrImage image;                   ///< filled by render()
+};
+
+/// L_c for a scene: the display white under the key-value exposure, L̄ / 0.18, with L̄ the
+/// area-weighted log-average of the patches' reflected luminance (cd/m²).
+double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                            const radiosity::RadiositySolution& solution);
+
 /// Renders the camera's view in cd/m² (linear Rec.709). Per sample: the hit's emitted
 /// luminance (front side of area lights) plus ρ/π (E_direct + E_indirect), with
 /// E_direct from shadow rays (stratified on area lights) and virtual lights in the
@@ -21,7 +36,8 @@ namespace rayrad::raytrace {
 /// own random stream seeded by (seed, pixel), so the image does not depend on threads.
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
                 const radiosity::DirectLight& lights, const EmbreeScene& embree, const PinholeCamera& camera,
-                const scene::RenderOptions& options, const std::function<void(double)>& onProgress = {});
+                const scene::RenderOptions& options, const std::function<void(double)>& onProgress = {},
+                DisplayAverage* display = nullptr);
 
 /// Luminance (cd/m², RGB) seen along one ray; used by render() and by tests. Mirrors
 /// (Ks × the reflected ray) and glass (Fresnel reflection + refraction) recurse up to

@@ -435,6 +435,7 @@ void parseRender(JsonObject r, SceneDesc& d) {
     d.render.sensorAreaLightSamples =
         r.integer("sensor_area_light_samples", d.render.sensorAreaLightSamples, 1, 1 << 20);
     d.render.maxDepth = r.integer("max_depth", d.render.maxDepth, 0, 64);
+    d.render.displayRangeCompression = r.boolean("display_range_compression").value_or(d.render.displayRangeCompression);
     r.finish();
 }
 

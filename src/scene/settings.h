@@ -134,6 +134,10 @@ struct RenderOptions {
     /// the light found (0 = every light tested).
     double directThreshold = 0.02;
     int maxDepth = 8;             ///< Whitted recursion through mirrors and glass
+    /// Display images average a pixel's samples after range compression (weights
+    /// 1/(1 + L_s/L_c)), so emitter edges and highlights stay smooth; the EXR keeps the
+    /// plain average.
+    bool displayRangeCompression = true;
 };
 
 }  // namespace rayrad::scene
