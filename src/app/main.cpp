@@ -8,6 +8,7 @@
 #include <app/run_outputs.h>
 #include <app/problem_size.h>
 #include <app/validate_cube.h>
+#include <app/compare.h>
 #include <app/validate_luminaire.h>
 #include <app/validate_sphere.h>
 #include <app/scene_warnings.h>
@@ -340,6 +341,26 @@ int main(int argc, char** argv) {
     auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
     addCommon(info, infoArgs);
 
+    app::CompareOptions compareOptions;
+    auto* compare = cli.add_subcommand("compare", "Compare an image (a rendering) against a reference (a photograph or "
+                                                  "another rendering) in luminance; exit 1 when a --fail-above bound is exceeded");
+    compare->add_option("a", compareOptions.a, "The image under test (EXR, PNG, JPEG); calibrated onto the reference")->required();
+    compare->add_option("b", compareOptions.b, "The reference image")->required();
+    compare->add_option("--a-space", compareOptions.aSpace, "linear, srgb or auto (EXR linear, PNG/JPEG sRGB)")->default_str("auto");
+    compare->add_option("--b-space", compareOptions.bSpace, "as --a-space, for the reference")->default_str("auto");
+    compare->add_option("--regions", compareOptions.regionsFile,
+                        "JSON file of named regions [{\"name\", \"x\", \"y\", \"width\", \"height\"}] with their own figures");
+    compare->add_option("--calibrate", compareOptions.calibrate,
+                        "none, exposure (one least-squares factor) or channels (one per channel: exposure and white balance)")
+        ->default_str("exposure");
+    compare->add_option("--diff-map", compareOptions.diffMap, "Write |relative luminance difference| in false colour (.png/.jpg)");
+    compare->add_option("--side-by-side", compareOptions.sideBySide, "Write the calibrated image and the reference side by side");
+    compare->add_option("--report", compareOptions.report, "Write the figures as JSON");
+    compare->add_option("--csv", compareOptions.csv, "Write the figures as CSV, one row per region");
+    compare->add_option("--fail-above", compareOptions.failAbove,
+                        "METRIC=VALUE, repeatable: exit 1 when the whole image's figure exceeds it (mean_abs_rel_pct, "
+                        "median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, rms_log, ssim_loss = 1 − SSIM)");
+
     app::ValidateOptions validateOptions;
     validateOptions.scene = app::bundledPath(validateOptions.scene);
     auto* validate = cli.add_subcommand("validate", "Reproduce a validation from the paper on this machine");
@@ -379,6 +400,7 @@ int main(int argc, char** argv) {
     }
 
     try {
+        if (compare->parsed()) return app::compareImages(compareOptions);
         if (validateSphere->parsed()) return app::validateSphere(sphereOptions);
         if (validateLuminaire->parsed()) return app::validateLuminaire(luminaireOptions);
         if (validate->parsed()) return app::validateCube(validateOptions);

@@ -36,6 +36,26 @@ for op in tumblin-rushmeier reinhard; do
     check "$op render exit 0" test $? -eq 0
 done
 
+# rayrad compare (issue 15): an image against itself passes a tight bound; against another
+# rendering it reports and fails a bound it exceeds (exit 1); outputs written.
+"$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[24,24] -o "$work/c1.exr" -q > /dev/null 2>&1
+"$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[24,24] --set materials.wall.reflectance=0.6 \
+    -o "$work/c2.exr" -q > /dev/null 2>&1
+echo '[{"name": "centre", "x": 8, "y": 8, "width": 8, "height": 8}]' > "$work/regions.json"
+"$rayrad" compare "$work/c1.exr" "$work/c1.exr" --fail-above mean_abs_rel_pct=1e-9 --fail-above ssim_loss=1e-9 > "$work/same.txt" 2>&1
+check "compare: an image against itself passes" test $? -eq 0
+"$rayrad" compare "$work/c1.exr" "$work/c2.exr" --regions "$work/regions.json" --diff-map "$work/diff.png" \
+    --side-by-side "$work/sbs.png" --report "$work/cmp.json" --csv "$work/cmp.csv" --fail-above p95_abs_rel_pct=0.5 \
+    > "$work/cmp.txt" 2> "$work/cmp.err"
+check "compare: a bound exceeded is exit 1" test $? -eq 1
+check "compare: says which bound" grep -q "p95_abs_rel_pct = .* exceeds 0.5" "$work/cmp.err"
+check "compare: region row" grep -q "^centre" "$work/cmp.txt"
+check "compare: csv rows" test "$(wc -l < "$work/cmp.csv")" -eq 3
+check "compare: json exceeded" grep -q '"exceeded": true' "$work/cmp.json"
+check "compare: pictures" test -s "$work/diff.png" -a -s "$work/sbs.png"
+"$rayrad" compare "$work/c1.exr" "$work/c2.exr" --fail-above bogus=1 > /dev/null 2> "$work/bogus.err"
+check "compare: unknown metric is exit 2" test $? -eq 2
+
 # Nothing reflects: no secondary pass, sensors still answer (indirect 0).
 "$rayrad" solve "$cube" --set materials.wall.reflectance=0 --set radiosity.max_edge=2.5 --sensors "$work/black.csv" -q \
     > /dev/null 2> "$work/black.err"
