@@ -56,6 +56,14 @@ check "compare: pictures" test -s "$work/diff.png" -a -s "$work/sbs.png"
 "$rayrad" compare "$work/c1.exr" "$work/c2.exr" --fail-above bogus=1 > /dev/null 2> "$work/bogus.err"
 check "compare: unknown metric is exit 2" test $? -eq 2
 
+# The golden Cornell box (tests/data/cornell_64.exr, as golden_image_test renders it) through
+# rayrad compare, as an image-diff test would use it.
+"$rayrad" render "$src/scenes/cornell/cornell.json" --set camera.resolution=[64,64] --spp 4 --set radiosity.max_edge=0.1 \
+    -o "$work/cornell64.exr" -q > /dev/null 2>&1
+"$rayrad" compare "$work/cornell64.exr" "$src/tests/data/cornell_64.exr" --calibrate none \
+    --fail-above median_abs_rel_pct=0.5 --fail-above ssim_loss=0.005 > "$work/golden.txt" 2>&1
+check "compare: the golden Cornell box within bounds" test $? -eq 0
+
 # Nothing reflects: no secondary pass, sensors still answer (indirect 0).
 "$rayrad" solve "$cube" --set materials.wall.reflectance=0 --set radiosity.max_edge=2.5 --sensors "$work/black.csv" -q \
     > /dev/null 2> "$work/black.err"

@@ -41,7 +41,7 @@ int shades(const HdrImage& image) {
 
 }  // namespace
 
-TEST_CASE("a lamp's edge shades off in the display image; the EXR's average is untouched", "[image]") {
+TEST_CASE("a lamp's edge shades off in the display image and the EXR's average is untouched", "[image]") {
     const auto compressed = lampRoom(true), plain = lampRoom(false);
     REQUIRE(compressed.displayImage);
     // The radiance image does not depend on the option.

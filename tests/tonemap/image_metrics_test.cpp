@@ -37,7 +37,7 @@ double quantised(double v) {
 
 }  // namespace
 
-TEST_CASE("a fake photograph: exposure ×1.7, a white-balance shift, noise and 8 bits; the factors come back within 1 %",
+TEST_CASE("a fake photograph: exposure ×1.7, a white-balance shift, noise and 8 bits give the factors back within 1 %",
           "[compare]") {
     const HdrImage rendering = scene(96, 64);
     const Rgb shift(1.08, 1.0, 0.86);  // a warmer camera white
@@ -71,7 +71,7 @@ TEST_CASE("a fake photograph: exposure ×1.7, a white-balance shift, noise and 8
     CHECK(exposureFactor(rendering, decoded, whole) / toDisplay == Approx(1.7).epsilon(0.03));
 }
 
-TEST_CASE("an image against itself: no error, SSIM 1; against a shifted copy: SSIM falls", "[compare]") {
+TEST_CASE("an image against itself: no error and SSIM 1, against a shifted copy SSIM falls", "[compare]") {
     const HdrImage a = scene(48, 32);
     const Region whole{"image", 0, 0, 48, 32};
     const ErrorFigures same = compareImages(a, a, whole);
