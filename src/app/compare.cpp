@@ -6,6 +6,7 @@
 #include <core/text.h>
 #include <tonemap/display_transform.h>
 #include <tonemap/false_colour.h>
+#include <tonemap/image_alignment.h>
 #include <tonemap/image_io.h>
 #include <tonemap/image_metrics.h>
 
@@ -38,16 +39,37 @@ HdrImage readLinear(const std::string& path, const std::string& space, const cha
     return encoded ? tonemap::linearFromSrgb(img) : img;
 }
 
-std::vector<Region> readRegions(const std::string& path, int width, int height) {
-    std::vector<Region> regions{{"image", 0, 0, width, height}};
-    if (path.empty()) return regions;
-    const std::string text = readInputFile(path, "regions file", size_t(1) << 20);
-    nlohmann::json j;
+nlohmann::json readJson(const std::string& path, const char* what) {
+    const std::string text = readInputFile(path, what, size_t(1) << 20);
     try {
-        j = nlohmann::json::parse(text);
+        return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         throw InputError(placeMessage(path, "", std::string("not JSON: ") + e.what()));
     }
+}
+
+/// [{"a": [x, y], "b": [x, y]}, ...]: the same point in a and in b, pixels from the top-left.
+std::vector<tonemap::PointPair> readPointPairs(const std::string& path) {
+    const nlohmann::json j = readJson(path, "alignment file");
+    if (!j.is_array()) throw InputError(placeMessage(path, "", "expected an array of {\"a\": [x, y], \"b\": [x, y]}"));
+    std::vector<tonemap::PointPair> pairs;
+    for (size_t i = 0; i < j.size(); ++i) {
+        try {
+            const auto a = j[i].at("a").get<std::array<double, 2>>(), b = j[i].at("b").get<std::array<double, 2>>();
+            for (double v : {a[0], a[1], b[0], b[1]})
+                if (!std::isfinite(v)) throw std::invalid_argument("not finite");
+            pairs.push_back({a[0], a[1], b[0], b[1]});
+        } catch (const std::exception&) {
+            throw InputError(placeMessage(path, "/" + std::to_string(i), "expected {\"a\": [x, y], \"b\": [x, y]} with finite numbers"));
+        }
+    }
+    return pairs;
+}
+
+std::vector<Region> readRegions(const std::string& path, int width, int height) {
+    std::vector<Region> regions{{"image", 0, 0, width, height}};
+    if (path.empty()) return regions;
+    const nlohmann::json j = readJson(path, "regions file");
     if (!j.is_array()) throw InputError(placeMessage(path, "", "expected an array of {\"name\", \"x\", \"y\", \"width\", \"height\"}"));
     for (size_t i = 0; i < j.size(); ++i) {
         const std::string where = "/" + std::to_string(i);
@@ -138,6 +160,16 @@ int compareImages(const CompareOptions& o) {
     files.addInput(o.a);
     files.addInput(o.b);
     if (!o.regionsFile.empty()) files.addInput(o.regionsFile);
+    if (!o.alignFile.empty()) files.addInput(o.alignFile);
+    const std::vector<tonemap::PointPair> pairs = o.alignFile.empty() ? std::vector<tonemap::PointPair>{} : readPointPairs(o.alignFile);
+    tonemap::Homography homography{};
+    if (!pairs.empty()) {
+        try {
+            homography = tonemap::fitHomography(pairs);
+        } catch (const InputError& e) {
+            throw InputError(placeMessage(o.alignFile, "", e.what()));
+        }
+    }
     for (const auto* path : {&o.diffMap, &o.sideBySide}) {
         if (path->empty()) continue;
         files.add(*path);
@@ -149,10 +181,19 @@ int compareImages(const CompareOptions& o) {
 
     HdrImage a = readLinear(o.a, o.aSpace, "--a-space");
     const HdrImage b = readLinear(o.b, o.bSpace, "--b-space");
-    if (a.width != b.width || a.height != b.height)
-        throw InputError(placeMessage(o.a, "", fmt::format("is {}×{} but {} is {}×{}: compare needs images of one size "
-                                                           "(aligning by corresponding points is not built yet)",
+    // Alignment: a resampled onto b's grid through the homography (NaN outside a).
+    double residual = 0;  // px in a: how far the fitted map misses the given points
+    if (!pairs.empty()) {
+        for (const auto& p : pairs) {
+            const auto m = tonemap::mapPoint(homography, p.bx, p.by);
+            residual = std::max(residual, std::hypot(m[0] - p.ax, m[1] - p.ay));
+        }
+        a = tonemap::warpOnto(a, homography, b.width, b.height);
+    } else if (a.width != b.width || a.height != b.height) {
+        throw InputError(placeMessage(o.a, "", fmt::format("is {}×{} but {} is {}×{}: give --align with four or more "
+                                                           "corresponding points, or images of one size",
                                                            a.width, a.height, o.b, b.width, b.height)));
+    }
     const std::vector<Region> regions = readRegions(o.regionsFile, b.width, b.height);
 
     // Calibration over the whole image: a scaled onto b.
@@ -168,12 +209,15 @@ int compareImages(const CompareOptions& o) {
     // Console, CSV, JSON.
     fmt::print("{} against {} ({}×{}); calibration {}: factors {:.5g} {:.5g} {:.5g}\n", o.a, o.b, b.width, b.height,
                o.calibrate, factors[0], factors[1], factors[2]);
+    if (!pairs.empty())
+        fmt::print("aligned by a homography through {} point pairs (largest residual {:.3g} px)\n", pairs.size(), residual);
     fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7}\n", "region", "pixels", "mean %", "|mean| %", "median %",
                "p95 %", "rms ln", "SSIM");
     std::string csv = "region,pixels,mean_rel_pct,mean_abs_rel_pct,median_abs_rel_pct,p95_abs_rel_pct,rms_log,ssim\n";
     nlohmann::json j;
     j["a"] = o.a, j["b"] = o.b, j["width"] = b.width, j["height"] = b.height;
     j["calibration"] = {{"kind", o.calibrate}, {"factors", factors}};
+    if (!pairs.empty()) j["alignment"] = {{"pairs", pairs.size()}, {"homography_b_to_a", homography}, {"largest_residual_px", residual}};
     j["regions"] = nlohmann::json::array();
     for (size_t i = 0; i < regions.size(); ++i) {
         const auto& f = figures[i];

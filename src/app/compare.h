@@ -14,6 +14,7 @@ struct CompareOptions {
     std::string b;                       ///< the reference
     std::string aSpace = "auto";         ///< linear | srgb | auto (EXR/HDR linear, PNG/JPEG sRGB)
     std::string bSpace = "auto";
+    std::string alignFile;               ///< JSON: [{"a": [x, y], "b": [x, y]}, ...], 4 or more pairs
     std::string regionsFile;             ///< JSON: [{"name", "x", "y", "width", "height"}, ...]
     std::string calibrate = "exposure";  ///< none | exposure | channels
     std::string diffMap;                 ///< PNG/JPEG: |relative luminance difference| in %

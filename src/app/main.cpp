@@ -348,6 +348,9 @@ int main(int argc, char** argv) {
     compare->add_option("b", compareOptions.b, "The reference image")->required();
     compare->add_option("--a-space", compareOptions.aSpace, "linear, srgb or auto (EXR linear, PNG/JPEG sRGB)")->default_str("auto");
     compare->add_option("--b-space", compareOptions.bSpace, "as --a-space, for the reference")->default_str("auto");
+    compare->add_option("--align", compareOptions.alignFile,
+                        "JSON file of 4 or more corresponding points [{\"a\": [x, y], \"b\": [x, y]}] (pixels from the "
+                        "top-left): a is resampled onto b's grid through their homography");
     compare->add_option("--regions", compareOptions.regionsFile,
                         "JSON file of named regions [{\"name\", \"x\", \"y\", \"width\", \"height\"}] with their own figures");
     compare->add_option("--calibrate", compareOptions.calibrate,

@@ -53,6 +53,15 @@ check "compare: region row" grep -q "^centre" "$work/cmp.txt"
 check "compare: csv rows" test "$(wc -l < "$work/cmp.csv")" -eq 3
 check "compare: json exceeded" grep -q '"exceeded": true' "$work/cmp.json"
 check "compare: pictures" test -s "$work/diff.png" -a -s "$work/sbs.png"
+echo '[{"a": [2, 2], "b": [2, 2]}, {"a": [22, 2], "b": [22, 2]}, {"a": [22, 22], "b": [22, 22]}, {"a": [2, 22], "b": [2, 22]}]' \
+    > "$work/align.json"
+"$rayrad" compare "$work/c1.exr" "$work/c1.exr" --align "$work/align.json" --fail-above mean_abs_rel_pct=1e-6 > "$work/align.txt" 2>&1
+check "compare --align: the identity passes" test $? -eq 0
+check "compare --align: says so" grep -q "aligned by a homography through 4 point pairs" "$work/align.txt"
+echo '[{"a": [2, 2], "b": [2, 2]}, {"a": [22, 2], "b": [22, 2]}, {"a": [22, 22], "b": [22, 22]}]' > "$work/three.json"
+"$rayrad" compare "$work/c1.exr" "$work/c1.exr" --align "$work/three.json" > /dev/null 2> "$work/three.err"
+check "compare --align with 3 points: exit 2" test $? -eq 2
+check "compare --align with 3 points: named" grep -q "three.json: .*at least 4 point pairs" "$work/three.err"
 "$rayrad" compare "$work/c1.exr" "$work/c2.exr" --fail-above bogus=1 > /dev/null 2> "$work/bogus.err"
 check "compare: unknown metric is exit 2" test $? -eq 2
 

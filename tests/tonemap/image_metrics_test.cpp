@@ -1,13 +1,18 @@
 // rayrad compare's figures (issue 15): the exposure and per-channel factors recovered from
 // a fake photograph, relative errors, log RMS and SSIM.
+#include <core/colour_temperature.h>
 #include <core/random.h>
+#include <tonemap/image_alignment.h>
+#include <tonemap/image_io.h>
 #include <tonemap/image_metrics.h>
 
 #include "test_support.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 
 using namespace rayrad;
 using namespace rayrad::tonemap;
@@ -92,4 +97,68 @@ TEST_CASE("an image against itself: no error and SSIM 1, against a shifted copy 
     CHECK(b.meanRelPct == Approx(10.0).epsilon(1e-9));
     CHECK(b.p95AbsRelPct == Approx(10.0).epsilon(1e-9));
     CHECK(b.rmsLog == Approx(std::log(1.1)).epsilon(0.03));  // ε (1 % of the mean) damps it slightly
+}
+
+TEST_CASE("the round trip: a warped, cropped, re-exposed, white-shifted, noisy JPEG photograph, aligned by four points",
+          "[compare]") {
+    const HdrImage rendering = scene(160, 120);
+    // The photograph's view: its pixel (x, y) sees the rendering at truth(x, y), a
+    // perspective map that also crops (140 × 100 of the rendering's 160 × 120).
+    const Homography truth{0.92, 0.06, 9, -0.04, 0.95, 11, 0.0003, -0.0002, 1};
+    const HdrImage view = warpOnto(rendering, truth, 140, 100);
+    // Exposure ×1.7, the white shifted from 3 000 K to 6 500 K, ±1 % noise, 8-bit sRGB JPEG.
+    const Rgb warm = colourOfTemperature(3000), cool = colourOfTemperature(6500);
+    const Rgb shift(cool.r / warm.r / (cool.g / warm.g), 1.0, cool.b / warm.b / (cool.g / warm.g));
+    const double toDisplay = 1.0 / 400;
+    Random rng(5, 2);
+    std::vector<uint8_t> rgb8(view.pixels.size() * 3);
+    REQUIRE(std::all_of(view.pixels.begin(), view.pixels.end(), [](const Rgb& p) { return std::isfinite(p.r); }));  // a crop
+    for (size_t i = 0; i < view.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double v = view.pixels[i][c] * 1.7 * shift[c] * toDisplay * (1 + 0.02 * (rng.nextDouble() - 0.5));
+            rgb8[3 * i + c] = static_cast<uint8_t>(std::lround(255 * quantised(v)));
+        }
+    const std::string jpeg = "/tmp/rayrad_test_photo.jpg";
+    std::ofstream(jpeg, std::ios::binary) << encodeDisplayImage(jpeg, 140, 100, rgb8);
+    const HdrImage photo = linearFromSrgb(readImage(jpeg));
+    // Four points clicked on both, to a fifth of a pixel.
+    std::vector<PointPair> pairs;
+    for (const auto& b : std::vector<std::array<double, 2>>{{10, 8}, {131, 12}, {127, 93}, {14, 90}}) {
+        const auto a = mapPoint(truth, b[0], b[1]);
+        pairs.push_back({std::round(a[0] * 5) / 5, std::round(a[1] * 5) / 5, b[0], b[1]});
+    }
+    const HdrImage aligned = warpOnto(rendering, fitHomography(pairs), 140, 100);
+    const Region whole{"image", 0, 0, 140, 100};
+    const auto k = channelFactors(aligned, photo, whole);
+    WARN("round trip: factors " << k[0] / toDisplay << ", " << k[1] / toDisplay << ", " << k[2] / toDisplay << " against "
+                                << 1.7 * shift[0] << ", " << 1.7 * shift[1] << ", " << 1.7 * shift[2]);
+    for (int c = 0; c < 3; ++c) {
+        INFO("channel " << c << ": " << k[c] / toDisplay << " against " << 1.7 * shift[c]);
+        CHECK(k[c] / toDisplay == Approx(1.7 * shift[c]).epsilon(0.01));
+    }
+    HdrImage calibrated = aligned;
+    for (auto& p : calibrated.pixels)
+        for (int c = 0; c < 3; ++c) p[c] *= k[c];
+    for (const Region& r : {Region{"left", 5, 5, 40, 40}, Region{"red", 80, 3, 50, 25}, Region{"lower", 40, 60, 60, 35}}) {
+        const ErrorFigures f = compareImages(calibrated, photo, r);
+        WARN(r.name << ": mean " << f.meanRelPct << " %, median |e| " << f.medianAbsRelPct << " %, p95 " << f.p95AbsRelPct << " %");
+        CHECK(std::abs(f.meanRelPct) < 2.0);
+        CHECK(f.medianAbsRelPct < 2.0);
+    }
+}
+
+TEST_CASE("a homography from four points is exact, from more a least-squares fit, and degenerate points are refused", "[compare]") {
+    const Homography truth{1.1, 0.2, 5, -0.1, 0.9, 3, 0.001, 0.0005, 1};
+    std::vector<PointPair> pairs;
+    for (const auto& b : std::vector<std::array<double, 2>>{{0, 0}, {100, 0}, {100, 80}, {0, 80}, {50, 40}, {20, 70}}) {
+        const auto a = mapPoint(truth, b[0], b[1]);
+        pairs.push_back({a[0], a[1], b[0], b[1]});
+    }
+    for (size_t n : {size_t(4), size_t(6)}) {
+        const Homography h = fitHomography(std::vector<PointPair>(pairs.begin(), pairs.begin() + static_cast<long>(n)));
+        for (int i = 0; i < 9; ++i) CHECK(h[i] == Approx(truth[i]).margin(1e-9));
+    }
+    CHECK_THROWS_WITH(fitHomography(std::vector<PointPair>(pairs.begin(), pairs.begin() + 3)), Catch::Contains("at least 4 point pairs"));
+    const std::vector<PointPair> line{{0, 0, 0, 0}, {1, 1, 1, 1}, {2, 2, 2, 2}, {3, 3, 3, 3}};
+    CHECK_THROWS_WITH(fitHomography(line), Catch::Contains("do not determine a homography"));
 }
