@@ -1,5 +1,9 @@
 #include <tonemap/image_metrics.h>
 
+#include <tonemap/tone_operators.h>
+
+#include <lcms2.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -63,7 +67,23 @@ double ssim(const std::vector<double>& a, const std::vector<double>& b, int w, i
     return w * h > 0 ? sum / (static_cast<double>(w) * h) : 1.0;
 }
 
+/// CIELAB (D65 white, Y = 1) of a display-relative linear Rec.709 colour, through lcms2.
+cmsCIELab labOf(const Rgb& c) {
+    static const cmsCIEXYZ white{0.95047, 1.0, 1.08883};
+    const cmsCIEXYZ xyz{0.4124564 * c.r + 0.3575761 * c.g + 0.1804375 * c.b,
+                        0.2126729 * c.r + 0.7151522 * c.g + 0.0721750 * c.b,
+                        0.0193339 * c.r + 0.1191920 * c.g + 0.9503041 * c.b};
+    cmsCIELab lab;
+    cmsXYZ2Lab(&white, &lab, &xyz);
+    return lab;
+}
+
 }  // namespace
+
+double deltaE2000(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    const cmsCIELab la{a[0], a[1], a[2]}, lb{b[0], b[1], b[2]};
+    return cmsCIE2000DeltaE(&la, &lb, 1, 1, 1);
+}
 
 double exposureFactor(const HdrImage& a, const HdrImage& b, const Region& r) {
     // Least squares in log luminance: min Σ (ln k + ln L_a − ln L_b)², so every pixel counts
@@ -146,6 +166,20 @@ ErrorFigures compareImages(const HdrImage& a, const HdrImage& b, const Region& r
         db.push_back(srgbEncode(std::isfinite(lb) ? lb * scale : 0.0));
     });
     f.ssim = ssim(da, db, r.width, r.height);
+    // CIEDE2000 between the displayed colours, same exposure.
+    std::vector<double> de;
+    forEachPixel(r, [&](int x, int y) {
+        const Rgb& pa = a.at(x, y);
+        if (!std::isfinite(luminance(pa))) return;  // outside an aligned image
+        const cmsCIELab la = labOf(toDisplayGamut(pa * scale)), lb = labOf(toDisplayGamut(b.at(x, y) * scale));
+        de.push_back(cmsCIE2000DeltaE(&la, &lb, 1, 1, 1));
+    });
+    if (!de.empty()) {
+        double sum = 0;
+        for (double v : de) sum += v;
+        f.meanDeltaE2000 = sum / static_cast<double>(de.size());
+        f.p95DeltaE2000 = percentile(de, 0.95);
+    }
     return f;
 }
 

@@ -162,3 +162,18 @@ TEST_CASE("a homography from four points is exact, from more a least-squares fit
     const std::vector<PointPair> line{{0, 0, 0, 0}, {1, 1, 1, 1}, {2, 2, 2, 2}, {3, 3, 3, 3}};
     CHECK_THROWS_WITH(fitHomography(line), Catch::Contains("do not determine a homography"));
 }
+
+TEST_CASE("CIEDE2000 through lcms2 matches Sharma, Wu and Dalal's published test pairs", "[compare]") {
+    // Pairs 1, 7, 17 and 25 of the 34 in Sharma et al. 2005, Table 1.
+    CHECK(deltaE2000({50.0000, 2.6772, -79.7751}, {50.0000, 0.0000, -82.7485}) == Approx(2.0425).margin(1e-4));
+    CHECK(deltaE2000({50.0000, 0.0000, 0.0000}, {50.0000, -1.0000, 2.0000}) == Approx(2.3669).margin(1e-4));
+    CHECK(deltaE2000({50.0000, 2.5000, 0.0000}, {73.0000, 25.0000, -18.0000}) == Approx(27.1492).margin(1e-4));
+    CHECK(deltaE2000({60.2574, -34.0099, 36.2677}, {60.4626, -34.1751, 39.4387}) == Approx(1.2644).margin(1e-4));
+    // An image against itself: 0; a colour shift shows in ΔE but not in luminance figures.
+    const HdrImage a = scene(32, 24);
+    HdrImage tinted = a;
+    for (auto& p : tinted.pixels) p = Rgb(p.r * 1.06, p.g * 0.985, p.b * 0.9);
+    const Region whole{"image", 0, 0, 32, 24};
+    CHECK(compareImages(a, a, whole).meanDeltaE2000 == 0);
+    CHECK(compareImages(tinted, a, whole).meanDeltaE2000 > 1.0);
+}
