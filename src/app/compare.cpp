@@ -199,10 +199,13 @@ int compareImages(const CompareOptions& o) {
     }
     const std::vector<Region> regions = readRegions(o.regionsFile, b.width, b.height);
 
-    // Calibration over the whole image: a scaled onto b.
+    // Calibration, a scaled onto b: over the named regions when there are any (the parts
+    // the user trusts: aligned, not in a lamp's glare), else over the whole image.
+    const std::vector<Region> calibrationRegions =
+        regions.size() > 1 ? std::vector<Region>(regions.begin() + 1, regions.end()) : regions;
     std::array<double, 3> factors{1, 1, 1};
-    if (o.calibrate == "exposure") factors.fill(tonemap::exposureFactor(a, b, regions[0]));
-    if (o.calibrate == "channels") factors = tonemap::channelFactors(a, b, regions[0]);
+    if (o.calibrate == "exposure") factors.fill(tonemap::exposureFactor(a, b, calibrationRegions));
+    if (o.calibrate == "channels") factors = tonemap::channelFactors(a, b, calibrationRegions);
     for (auto& p : a.pixels)
         for (int c = 0; c < 3; ++c) p[c] *= factors[c];
 
@@ -210,8 +213,8 @@ int compareImages(const CompareOptions& o) {
     for (const auto& r : regions) figures.push_back(tonemap::compareImages(a, b, r));
 
     // Console, CSV, JSON.
-    fmt::print("{} against {} ({}×{}); calibration {}: factors {:.5g} {:.5g} {:.5g}\n", o.a, o.b, b.width, b.height,
-               o.calibrate, factors[0], factors[1], factors[2]);
+    fmt::print("{} against {} ({}×{}); calibration {} over {}: factors {:.5g} {:.5g} {:.5g}\n", o.a, o.b, b.width,
+               b.height, o.calibrate, regions.size() > 1 ? "the regions" : "the image", factors[0], factors[1], factors[2]);
     if (!pairs.empty())
         fmt::print("aligned by a homography through {} point pairs (largest residual {:.3g} px)\n", pairs.size(), residual);
     fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>7} {:>7}\n", "region", "pixels", "mean %", "|mean| %",
@@ -259,7 +262,7 @@ int compareImages(const CompareOptions& o) {
             if (std::isfinite(v)) top = std::max(top, v);
         tonemap::FalseColourOptions fc;
         fc.maximum = std::max(1.0, std::min(top, std::max(10.0, 2 * figures[0].p95AbsRelPct)));
-        fc.title = fmt::format("|a − b| / b after calibration; mean {:.2f} %, p95 {:.2f} %", figures[0].meanAbsRelPct,
+        fc.title = fmt::format("|a - b| / b after calibration; mean {:.2f} %, p95 {:.2f} %", figures[0].meanAbsRelPct,
                                figures[0].p95AbsRelPct);
         fc.unit = "%";
         const auto picture = tonemap::renderFalseColour(field, fc);

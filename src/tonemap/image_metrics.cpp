@@ -85,34 +85,46 @@ double deltaE2000(const std::array<double, 3>& a, const std::array<double, 3>& b
     return cmsCIE2000DeltaE(&la, &lb, 1, 1, 1);
 }
 
-double exposureFactor(const HdrImage& a, const HdrImage& b, const Region& r) {
+double exposureFactor(const HdrImage& a, const HdrImage& b, const std::vector<Region>& regions) {
     // Least squares in log luminance: min Σ (ln k + ln L_a − ln L_b)², so every pixel counts
     // alike (in absolute terms a lamp's few pixels would decide k) and noise biases it
     // little: k = exp mean ln(L_b / L_a).
-    const double threshold = 0.01 * meanLuminance(b, r);
     double sum = 0;
     size_t n = 0;
-    forEachPixel(r, [&](int x, int y) {
-        const double la = luminance(a.at(x, y)), lb = luminance(b.at(x, y));
-        if (lb > threshold && lb > 0 && la > 0 && std::isfinite(la)) sum += std::log(lb / la), ++n;
-    });
+    for (const Region& r : regions) {
+        const double threshold = 0.01 * meanLuminance(b, r);
+        forEachPixel(r, [&](int x, int y) {
+            const double la = luminance(a.at(x, y)), lb = luminance(b.at(x, y));
+            if (lb > threshold && lb > 0 && la > 0 && std::isfinite(la)) sum += std::log(lb / la), ++n;
+        });
+    }
     return n ? std::exp(sum / static_cast<double>(n)) : 1.0;
 }
 
-std::array<double, 3> channelFactors(const HdrImage& a, const HdrImage& b, const Region& r) {
+double exposureFactor(const HdrImage& a, const HdrImage& b, const Region& region) {
+    return exposureFactor(a, b, std::vector<Region>{region});
+}
+
+std::array<double, 3> channelFactors(const HdrImage& a, const HdrImage& b, const std::vector<Region>& regions) {
     std::array<double, 3> sum{};
     std::array<size_t, 3> n{};
-    const double threshold = 0.01 * meanLuminance(b, r);
-    forEachPixel(r, [&](int x, int y) {
-        if (!(luminance(b.at(x, y)) > threshold)) return;
-        for (int c = 0; c < 3; ++c) {
-            const double pa = a.at(x, y)[c], pb = b.at(x, y)[c];
-            if (pa > 0 && pb > 0 && std::isfinite(pa)) sum[c] += std::log(pb / pa), ++n[c];
-        }
-    });
+    for (const Region& r : regions) {
+        const double threshold = 0.01 * meanLuminance(b, r);
+        forEachPixel(r, [&](int x, int y) {
+            if (!(luminance(b.at(x, y)) > threshold)) return;
+            for (int c = 0; c < 3; ++c) {
+                const double pa = a.at(x, y)[c], pb = b.at(x, y)[c];
+                if (pa > 0 && pb > 0 && std::isfinite(pa)) sum[c] += std::log(pb / pa), ++n[c];
+            }
+        });
+    }
     std::array<double, 3> k{};
     for (int c = 0; c < 3; ++c) k[c] = n[c] ? std::exp(sum[c] / static_cast<double>(n[c])) : 1.0;
     return k;
+}
+
+std::array<double, 3> channelFactors(const HdrImage& a, const HdrImage& b, const Region& region) {
+    return channelFactors(a, b, std::vector<Region>{region});
 }
 
 std::vector<double> relativeDifferencePct(const HdrImage& a, const HdrImage& b, double floor) {

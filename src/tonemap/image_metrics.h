@@ -21,9 +21,12 @@ struct Region {
 /// ln(L_b / L_a). Every pixel counts alike, so a lamp's few bright pixels do not decide
 /// it, and noise biases it little. 1 when there is no such pixel.
 double exposureFactor(const HdrImage& a, const HdrImage& b, const Region& region);
+/// The same over several regions together (a pixel in two counts twice).
+double exposureFactor(const HdrImage& a, const HdrImage& b, const std::vector<Region>& regions);
 
 /// Per-channel factors, each as exposureFactor (a white balance and exposure together).
 std::array<double, 3> channelFactors(const HdrImage& a, const HdrImage& b, const Region& region);
+std::array<double, 3> channelFactors(const HdrImage& a, const HdrImage& b, const std::vector<Region>& regions);
 
 struct ErrorFigures {
     size_t pixels = 0;           ///< pixels counted (the reference b has light there)
