@@ -309,7 +309,7 @@ int main(int argc, char** argv) {
         ->default_str("exposure");
     render->add_option("--world-adaptation", display.tone.worldAdaptation,
                        "World adaptation luminance L_wa, cd/m² (default: the image's log-average)");
-    render->add_option("--display-max", display.tone.displayMax, "The display's white L_dmax, cd/m²")->default_str("100");
+    render->add_option("--display-max", display.tone.displayMax, "The display's white L_dmax, cd/m² (sRGB's reference display: 80)")->default_str("80");
     render->add_option("--display-adaptation", display.tone.displayAdaptation,
                        "Display adaptation luminance L_da, cd/m² (tumblin-rushmeier; default L_dmax/2)");
     render->add_option("--max-contrast", display.tone.maxContrast, "The display's contrast C_max (tumblin-rushmeier)")

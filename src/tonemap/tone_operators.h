@@ -21,7 +21,7 @@ enum class ToneOperator {
 struct ToneOptions {
     ToneOperator op = ToneOperator::Exposure;
     std::optional<double> worldAdaptation;    ///< L_wa, cd/m²; default: the image's log-average
-    double displayMax = 100;                  ///< L_dmax, cd/m²: the display's white
+    double displayMax = 80;                   ///< L_dmax, cd/m²: the display's white (sRGB's reference display, IEC 61966-2-1)
     std::optional<double> displayAdaptation;  ///< L_da, cd/m²; default L_dmax / 2
     double maxContrast = 100;                 ///< C_max, the display's contrast (Tumblin–Rushmeier)
     double key = 0.18;                        ///< a, the key (Reinhard)
@@ -47,7 +47,7 @@ class ToneCurve {
     /// Display luminance relative to display white (1 = white; may exceed 1) for a world
     /// luminance in cd/m².
     double operator()(double worldLuminance) const;
-    /// "ward: L_wa 54.2 cd/m², L_dmax 100 cd/m²" — for messages and image metadata.
+    /// "ward: L_wa 54.2 cd/m², L_dmax 80 cd/m²" — for messages and image metadata.
     std::string describe() const;
 
   private:

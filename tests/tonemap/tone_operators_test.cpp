@@ -54,6 +54,7 @@ TEST_CASE("Ward 1994 at worked values: sf = [(1.219 + (Ldmax/2)^0.4) / (1.219 + 
     ToneOptions o;
     o.op = ToneOperator::Ward;
     o.worldAdaptation = 10;
+    o.displayMax = 100;
     // (1.219 + 50^0.4) / (1.219 + 10^0.4) = 6.00078 / 3.73089; ^2.5 = 3.280847.
     const ToneCurve curve(greys({1}), o, 1.0);
     CHECK(curve(10) == Approx(3.280847 * 10 / 100).epsilon(1e-6));
@@ -64,6 +65,7 @@ TEST_CASE("Tumblin-Rushmeier (revised) at worked values: Stevens' exponents and 
     ToneOptions o;
     o.op = ToneOperator::TumblinRushmeier;
     o.worldAdaptation = 10;  // L_da = L_dmax / 2 = 50, C_max = 100
+    o.displayMax = 100;
     // γ(10) = 1.855 + 0.4 log10(10.000023) = 2.255000; γ(50) = 2.534588;
     // γ_wd = 2.255000 / 2.534588 = 0.889691; m = 100^((γ_wd − 1)/2) = 0.775695.
     const ToneCurve curve(greys({1}), o, 1.0);
@@ -152,4 +154,6 @@ TEST_CASE("a white room rendered: display luminance of its walls under each oper
     WARN("white room, L_wa " << world << " cd/m2: mean display luminance exposure " << exposure << ", ward " << ward
                               << ", tumblin-rushmeier " << tr << ", reinhard " << reinhard);
     CHECK(exposure == Approx(0.18).epsilon(0.2));  // the key: mid-grey, the complaint
+    CHECK(ward > 0.7);                             // the absolute level: a bright white room shows bright
+    CHECK(tr > 0.5);
 }
