@@ -10,6 +10,7 @@
 #include <app/validate_cube.h>
 #include <app/compare.h>
 #include <app/validate_luminaire.h>
+#include <app/views.h>
 #include <app/validate_sphere.h>
 #include <app/scene_warnings.h>
 #include <app/sensor_table.h>
@@ -153,7 +154,8 @@ tonemap::DisplayOptions parseExposure(const std::string& exposure, tonemap::Disp
 
 int runRender(const CommonArgs& a, const std::vector<std::string>& images, const std::string& csv,
               std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
-              const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const app::ReportArgs& reports) {
+              const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const app::ReportArgs& reports,
+              const std::vector<std::string>& cameras) {
     const tonemap::DisplayOptions display = parseExposure(exposure, displayIn);
     tonemap::checkDisplayOptions(display);
     app::PipelineOptions o;
@@ -162,31 +164,51 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     if (seed) o.overrides.push_back({"render.seed", std::to_string(*seed)});
     o.quiet = a.quiet;
     o.wantImage = true;
+    // Sensors only when something reports them.
+    o.wantSensors = !csv.empty() || !reports.report.empty() || !reports.gridPicture.empty();
     o.logConvergence = !reports.convergence.empty();
     o.snapshots = snapshots;
-    o.snapshotOutputs = images;
     o.display = display;
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
-    if (!desc.camera) throw InputError(placeMessage(a.scene, "/camera", "rendering needs a camera"));
-    tonemap::checkWhiteBalance(display.whiteBalance, desc.camera->width, desc.camera->height);
+    const std::vector<std::string> views = app::selectViews(desc, cameras);
+    o.view = views.front();
+    std::vector<std::vector<std::string>> viewImages;  // per view, its output paths
+    for (const auto& v : views) {
+        std::vector<std::string> paths;
+        for (const auto& path : images) paths.push_back(app::viewPath(path, v, views.size()));
+        viewImages.push_back(paths);
+        for (const auto& [name, c] : desc.views)
+            if (name == v) tonemap::checkWhiteBalance(display.whiteBalance, c.width, c.height);
+    }
+    o.snapshotOutputs = viewImages.front();
     OutputFiles files = app::filesOf(desc);
-    app::addImageOutputs(images, files);
+    for (const auto& paths : viewImages) app::addImageOutputs(paths, files);
     for (int k = 1; k <= snapshots; ++k)
-        for (const auto& path : images) files.add(app::snapshotPath(path, k));
+        for (const auto& path : viewImages.front()) files.add(app::snapshotPath(path, k));
     const app::SensorFiles csvs = app::sensorFiles(desc, csv);
     const std::vector<std::string> others = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
     app::checkRenderedImage(*run.image, allowBlack);
     const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
+    // The other views: a ray trace each, from the same solution.
+    std::vector<app::RenderedView> more;
+    for (size_t k = 1; k < views.size(); ++k) {
+        more.push_back(app::renderView(run, views[k], o));
+        app::checkRenderedImage(more.back().image, allowBlack);
+    }
     run.report.begin("tone map + write");
-    app::stageImages(images, *run.image, run.displayImage ? *run.displayImage : *run.image, display,
-                     "rayrad rendering of " + a.scene, files);
+    const std::string description = "rayrad rendering of " + a.scene;
+    app::stageImages(viewImages.front(), *run.image, run.displayImage ? *run.displayImage : *run.image, display,
+                     description + (views.size() > 1 ? ", view " + views.front() : ""), files);
+    for (size_t k = 1; k < views.size(); ++k)
+        app::stageImages(viewImages[k], more[k - 1].image, more[k - 1].displayImage, display, description + ", view " + views[k],
+                         files);
     app::stageReports(run, a.scene, reports, groups ? &*groups : nullptr, files);
     files.commit();
     run.report.end();
-    app::reportWritten(images);
+    for (const auto& paths : viewImages) app::reportWritten(paths);
     app::reportWritten(others);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
@@ -284,6 +306,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> outputs;
     std::string renderCsv, solveCsv, exposure = "auto", toneName = "exposure", whiteBalance = "none";
     std::optional<int> spp, seed;
+    std::vector<std::string> cameras;
     int snapshots = 0;
     app::ReportArgs renderReports, solveReports;
     tonemap::DisplayOptions display;
@@ -300,7 +323,10 @@ int main(int argc, char** argv) {
     auto* render = cli.add_subcommand("render", "Solve the lighting and render the scene's camera view");
     addCommon(render, renderArgs);
     render->add_option("-o,--output", outputs, "Output image(s): .exr (linear cd/m²), .png or .jpg (display)")->required();
-    render->add_option("--sensors", renderCsv, "Also write the sensor table as CSV");
+    render->add_option("--sensors", renderCsv, "Also write the sensor table as CSV (sensors are gathered only when asked for)");
+    render->add_option("--camera", cameras,
+                       "The view(s) to render, by name (\"camera\", or a name in \"cameras\"), repeatable, or all; "
+                       "several: one solve, a ray trace each, images NAME.VIEW.EXT (default: the first view)");
     render->add_option("--spp", spp, "Samples per pixel (default: render.spp, 4)")->check(CLI::Range(1, 65536));
     render->add_option("--seed", seed, "Random seed; the same seed gives the same image (default 1)")->check(CLI::Range(0, std::numeric_limits<int>::max()));
     render->add_option("--exposure", exposure, "\"auto\" (log-average luminance → 0.18) or stops: 2^stops per cd/m²")->default_str("auto");
@@ -422,7 +448,7 @@ int main(int argc, char** argv) {
         }
         if (render->parsed())
             return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, allowBlack,
-                             renderReports);
+                             renderReports, cameras);
         if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports);
         return runInfo(infoArgs);
     } catch (const InputError& e) {

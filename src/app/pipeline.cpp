@@ -4,6 +4,7 @@
 
 #include <app/scene_warnings.h>
 
+#include <core/input_error.h>
 #include <core/progress.h>
 #include <radiosity/direct_pass.h>
 #include <scene/light_groups.h>
@@ -143,11 +144,53 @@ void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
 
 }  // namespace
 
+namespace {
+
+scene::Camera findView(const scene::Scene& scene, const std::string& name) {
+    for (const auto& v : scene.views)
+        if (v.name == name) return v.camera;
+    throw InputError(placeMessage(scene.file, "--camera", "the scene has no view \"" + name + "\" (it has " + viewNames(scene) + ")"));
+}
+
+/// The ray tracer for one camera: the plain average (cd/m²) and the display average.
+std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& cam, const std::string& label,
+                                         const PipelineOptions& options) {
+    raytrace::PinholeCamera camera(cam);
+    Progress progress(label, options.quiet);
+    std::mutex m;
+    raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, run.solution), {}};
+    HdrImage image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera, run.scene.render,
+                                      [&](double f) {
+                                          std::lock_guard<std::mutex> lock(m);
+                                          progress.update(f);
+                                      },
+                                      &forDisplay);
+    return {std::move(image), std::move(forDisplay.image)};
+}
+
+}  // namespace
+
+std::string viewNames(const scene::Scene& scene) {
+    std::string out;
+    for (size_t i = 0; i < scene.views.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == scene.views.size() ? " or " : ", ") + ("\"" + scene.views[i].name + "\"");
+    return out.empty() ? "none" : out;
+}
+
+RenderedView renderView(PipelineRun& run, const std::string& view, const PipelineOptions& options) {
+    const scene::Camera camera = findView(run.scene, view);
+    run.report.begin("ray trace (" + view + ")");
+    auto [image, display] = traceImage(run, camera, "ray trace " + view, options);
+    run.report.end();
+    return {view, std::move(image), std::move(display)};
+}
+
 PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& options) {
     PipelineRun run;
     run.report.begin("parse + build scene");
     run.scene = loadSceneFile(sceneFile, options.overrides);
     if (options.lightGroup) scene::keepLightGroup(run.scene, *options.lightGroup);
+    if (!options.view.empty()) run.scene.camera = findView(run.scene, options.view);
 
     checkPatchCount(sceneFile, run.scene);
     run.report.begin("premesh");
@@ -231,20 +274,15 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         for (size_t i = 0; i < values.size(); ++i) run.sensors.push_back({run.scene.sensors[i], values[i]});
     } else if (options.wantSensors) {
         run.skipped.push_back("sensors (the scene has none)");
+    } else if (!run.scene.sensors.empty()) {
+        run.skipped.push_back("sensors (not asked for: --sensors, --report or --grid-picture)");
     }
 
     if (options.wantImage) {
         run.report.begin("ray trace");
-        raytrace::PinholeCamera camera(*run.scene.camera);
-        Progress progress("ray trace", options.quiet);
-        std::mutex m;
-        raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, run.solution), {}};
-        run.image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera,
-                                     run.scene.render, [&](double f) {
-                                         std::lock_guard<std::mutex> lock(m);
-                                         progress.update(f);
-                                     }, &forDisplay);
-        run.displayImage = std::move(forDisplay.image);
+        auto [image, display] = traceImage(run, *run.scene.camera, "ray trace", options);
+        run.image = std::move(image);
+        run.displayImage = std::move(display);
     } else if (!run.scene.camera) {
         run.skipped.push_back("ray trace (no camera)");
     }

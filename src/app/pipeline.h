@@ -38,6 +38,15 @@ struct PipelineOptions {
     tonemap::DisplayOptions display;
     /// Solve with the emitters of this light group only (scene/light_groups.h).
     std::optional<std::string> lightGroup;
+    /// The view the image (and the snapshots) are rendered from; empty: the default.
+    std::string view;
+};
+
+/// One view's rendering: cd/m² and the average display images are made from.
+struct RenderedView {
+    std::string name;
+    HdrImage image;
+    HdrImage displayImage;
 };
 
 /// One line of the convergence log, taken at a push-pull.
@@ -78,6 +87,13 @@ scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Ove
 
 /// Runs the stages the scene needs. Throws InputError for bad input.
 PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& options);
+
+/// Ray traces one more view of a solved run (stage "ray trace (NAME)"): a second camera
+/// costs a ray trace, not a solve. Throws InputError for a name the scene does not have.
+RenderedView renderView(PipelineRun& run, const std::string& view, const PipelineOptions& options);
+
+/// The scene's view names, for messages: `"a", "b" or "c"`.
+std::string viewNames(const scene::Scene& scene);
 
 /// One-paragraph summary of the stages run and skipped, for stderr.
 std::string stagesSummary(const PipelineRun& run);

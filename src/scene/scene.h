@@ -94,6 +94,12 @@ struct Camera {
     int width = 512, height = 512;
 };
 
+/// A named view of the scene (render --camera NAME).
+struct View {
+    std::string name;
+    Camera camera;
+};
+
 struct Sensor {
     std::string name;
     std::string grid;  ///< the sensor grid it is a point of ("" for a single sensor)
@@ -119,7 +125,8 @@ struct Scene {
     std::vector<SurfaceGroup> groups;
     std::vector<PointLight> lights;
     std::vector<Mirror> mirrors;    ///< every polygon of every mirror surface
-    std::optional<Camera> camera;
+    std::optional<Camera> camera;   ///< the view being rendered (the default, or the one chosen)
+    std::vector<View> views;        ///< every named view
     std::vector<Sensor> sensors;
     MeshingOptions meshing;
     ClusterOptions clusters;

@@ -140,10 +140,9 @@ class Builder {
         for (const auto& g : s.groups) anyEmitter |= s.materials[g.material].isEmissive();
         if (!anyEmitter)
             fail("/lights", "the scene has no light: add a light or an emissive material (the mesh files bring none)");
-        if (m_desc.camera) {
-            const auto& c = *m_desc.camera;
-            s.camera = Camera{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height};
-        }
+        auto camera = [](const CameraDesc& c) { return Camera{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height}; };
+        if (m_desc.camera) s.camera = camera(*m_desc.camera);
+        for (const auto& [name, c] : m_desc.views) s.views.push_back({name, camera(c)});
         for (const auto& d : m_desc.sensors)
             s.sensors.push_back({d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
         addSurfaceGrids(s);

@@ -112,7 +112,9 @@ struct SceneDesc {
     std::vector<MaterialDesc> materials;
     std::vector<ObjectDesc> objects;
     std::vector<LightDesc> lights;
-    std::optional<CameraDesc> camera;
+    std::optional<CameraDesc> camera;  ///< the default view: "camera", else the first of "cameras"
+    /// Every view by name, in the file's order: "camera" (named "camera"), then "cameras".
+    std::vector<std::pair<std::string, CameraDesc>> views;
     std::vector<SensorDesc> sensors;  ///< points, with grids already expanded
     std::vector<SurfaceGridDesc> surfaceGrids;  ///< expanded into sensors by the builder
     MeshingOptions meshing;

@@ -499,7 +499,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     top.string("description");
     top.string("provenance");
     // Unknown top-level keys first: a misspelt "Materials" explains the errors it causes.
-    top.finish({"materials", "objects", "lights", "camera", "sensors", "sensor_grids", "work_planes", "surface_grids",
+    top.finish({"materials", "objects", "lights", "camera", "cameras", "sensors", "sensor_grids", "work_planes", "surface_grids",
                 "radiosity", "clusters", "render"});
 
     std::map<std::string, int> materialIndex;
@@ -533,7 +533,21 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     };
     eachObject("objects", [&](JsonObject o, int) { desc.objects.push_back(parseObject(o, materialIndex, sceneDir)); });
     eachObject("lights", [&](JsonObject o, int) { desc.lights.push_back(parseLight(o, sceneDir)); });
-    if (auto c = top.object("camera")) desc.camera = parseCamera(*c);
+    if (auto c = top.object("camera")) {
+        desc.camera = parseCamera(*c);
+        desc.views.emplace_back("camera", *desc.camera);
+    }
+    eachObject("cameras", [&](JsonObject o, int) {
+        o.required("name");
+        const std::string name = o.string("name").value_or("");
+        const std::string where = o.path();
+        CameraDesc c = parseCamera(o);
+        if (name == "all") ctx.error(where + "/name", "\"all\" is reserved (render --camera all renders every view)");
+        for (const auto& [other, unused] : desc.views)
+            if (other == name) ctx.error(where + "/name", "the view name \"" + name + "\" is used twice");
+        if (!desc.camera) desc.camera = c;
+        desc.views.emplace_back(name, c);
+    });
     eachObject("sensors", [&](JsonObject o, int i) { desc.sensors.push_back(parseSensor(o, i)); });
     eachObject("sensor_grids", [&](JsonObject o, int i) { parseSensorGrid(o, i, desc.sensors); });
     eachObject("work_planes", [&](JsonObject o, int i) { parseWorkPlane(o, i, desc.sensors); });

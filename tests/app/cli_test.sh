@@ -73,6 +73,27 @@ check "compare: unknown metric is exit 2" test $? -eq 2
     --fail-above median_abs_rel_pct=0.5 --fail-above ssim_loss=0.005 > "$work/golden.txt" 2>&1
 check "compare: the golden Cornell box within bounds" test $? -eq 0
 
+# Named views (issue 16): one solve, a ray trace per view, an image each.
+cat > "$work/views.json" <<'JSON'
+{"materials": {"w": {"reflectance": 0.5}},
+ "objects": [{"type": "box", "min": [0, 0, 0], "max": [3, 2.5, 3], "facing": "inward", "material": "w"},
+             {"type": "box", "min": [1, 0, 1], "max": [2, 0.8, 2], "material": "w"}],
+ "lights": [{"type": "point", "position": [1.5, 2.2, 1.5], "intensity_cd": 100}],
+ "sensors": [{"name": "desk", "position": [1.5, 0.8, 1.5], "normal": [0, 1, 0]}],
+ "cameras": [{"name": "front", "position": [1.5, 1.5, 2.9], "look_at": [1.5, 1, 0], "resolution": [16, 16]},
+             {"name": "side", "position": [2.9, 1.5, 1.5], "look_at": [0, 1, 1.5], "resolution": [20, 15]}],
+ "radiosity": {"max_edge": 1}}
+JSON
+"$rayrad" render "$work/views.json" --camera all -o "$work/v.png" -o "$work/v.exr" > /dev/null 2> "$work/views.err"
+check "views: exit 0" test $? -eq 0
+check "views: one image per view" test -s "$work/v.front.png" -a -s "$work/v.side.exr" -a ! -e "$work/v.png"
+check "views: one solve" test "$(grep -c '^secondary pass' "$work/views.err")" -eq 1
+check "views: a ray trace per view" grep -q "^ray trace (side)" "$work/views.err"
+check "views: sensors only when asked" grep -q "sensors (not asked for" "$work/views.err"
+"$rayrad" render "$work/views.json" --camera top -o "$work/v.png" > /dev/null 2> "$work/top.err"
+check "views: an unknown view is exit 2" test $? -eq 2
+check "views: names the views" grep -q 'no view "top" (it has "front", "side", or all)' "$work/top.err"
+
 # Nothing reflects: no secondary pass, sensors still answer (indirect 0).
 "$rayrad" solve "$cube" --set materials.wall.reflectance=0 --set radiosity.max_edge=2.5 --sensors "$work/black.csv" -q \
     > /dev/null 2> "$work/black.err"

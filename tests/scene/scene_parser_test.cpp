@@ -116,3 +116,19 @@ TEST_CASE("sensor grids expand to named points at cell centres", "[parser]") {
     CHECK(desc.sensors[0].position == Vec3(0.25, 1.0 / 6, 0));
     CHECK(desc.sensors[5].normal == Vec3(0, 0, 1));
 }
+
+TEST_CASE("named views: cameras need a unique name, all is reserved, the first is the default", "[scene]") {
+    const std::string cam = R"("position": [0.5, 0.5, 0.1], "look_at": [0.5, 0.5, 1])";
+    auto withCameras = [&](const std::string& cameras) {
+        std::string json = test::boxScene();
+        return json.substr(0, json.rfind('}')) + ", \"cameras\": [" + cameras + "]}";
+    };
+    const auto desc = scene::parseScene(withCameras("{\"name\": \"a\", " + cam + "}, {\"name\": \"b\", " + cam + "}"), "v.json");
+    REQUIRE(desc.views.size() == 2);
+    CHECK(desc.views[1].first == "b");
+    CHECK(desc.camera);
+    CHECK(test::parseErrors(withCameras("{\"name\": \"a\", " + cam + "}, {\"name\": \"a\", " + cam + "}"))
+              .contains("/cameras/1/name: the view name \"a\" is used twice"));
+    CHECK(test::parseErrors(withCameras("{\"name\": \"all\", " + cam + "}")).contains("/cameras/0/name: \"all\" is reserved"));
+    CHECK(test::parseErrors(withCameras("{" + cam + "}")).contains("/cameras/0"));
+}
