@@ -11,6 +11,7 @@
 #include <app/compare.h>
 #include <app/validate_luminaire.h>
 #include <app/views.h>
+#include <radiosity/solution_file.h>
 #include <app/validate_sphere.h>
 #include <app/scene_warnings.h>
 #include <app/sensor_table.h>
@@ -112,7 +113,7 @@ void printSolveSummary(const app::PipelineRun& run) {
                st.overshooting ? "on" : "off");
 }
 
-int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs& reports) {
+int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs& reports, const std::string& save) {
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
     o.quiet = a.quiet;
@@ -121,11 +122,16 @@ int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs&
     const auto desc = scene::loadScene(a.scene, o.overrides);
     OutputFiles files = app::filesOf(desc);
     const app::SensorFiles csvs = app::sensorFiles(desc, csv);
-    const std::vector<std::string> outputs = app::addSensorAndReportOutputs(desc, csvs, reports, files);
+    std::vector<std::string> outputs = app::addSensorAndReportOutputs(desc, csvs, reports, files);
+    app::addOutputs(files, {save});
     auto run = app::runPipeline(a.scene, o);
+    if (!save.empty())
+        files.set(save, radiosity::encodeSolution(run.solution, radiosity::fingerprintOf(run.scene, run.mesh),
+                                                  run.mesh.vertices.size()));
     const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
     app::stageReports(run, a.scene, reports, groups ? &*groups : nullptr, files);
     files.commit();
+    outputs.push_back(save);
     app::reportWritten(outputs);
     printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
@@ -155,7 +161,7 @@ tonemap::DisplayOptions parseExposure(const std::string& exposure, tonemap::Disp
 int runRender(const CommonArgs& a, const std::vector<std::string>& images, const std::string& csv,
               std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
               const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const app::ReportArgs& reports,
-              const std::vector<std::string>& cameras) {
+              const std::vector<std::string>& cameras, const std::string& solution) {
     const tonemap::DisplayOptions display = parseExposure(exposure, displayIn);
     tonemap::checkDisplayOptions(display);
     app::PipelineOptions o;
@@ -169,6 +175,9 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     o.logConvergence = !reports.convergence.empty();
     o.snapshots = snapshots;
     o.display = display;
+    o.solutionFile = solution;
+    if (!solution.empty() && snapshots > 0)
+        throw InputError(placeMessage("", "--snapshots", "a saved solution (--solution) has no solve to take snapshots of"));
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
     const std::vector<std::string> views = app::selectViews(desc, cameras);
@@ -183,6 +192,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     }
     o.snapshotOutputs = viewImages.front();
     OutputFiles files = app::filesOf(desc);
+    if (!solution.empty()) files.addInput(solution);
     for (const auto& paths : viewImages) app::addImageOutputs(paths, files);
     for (int k = 1; k <= snapshots; ++k)
         for (const auto& path : viewImages.front()) files.add(app::snapshotPath(path, k));
@@ -307,6 +317,7 @@ int main(int argc, char** argv) {
     std::string renderCsv, solveCsv, exposure = "auto", toneName = "exposure", whiteBalance = "none";
     std::optional<int> spp, seed;
     std::vector<std::string> cameras;
+    std::string saveFile, solutionFile;
     int snapshots = 0;
     app::ReportArgs renderReports, solveReports;
     tonemap::DisplayOptions display;
@@ -324,6 +335,9 @@ int main(int argc, char** argv) {
     addCommon(render, renderArgs);
     render->add_option("-o,--output", outputs, "Output image(s): .exr (linear cd/m²), .png or .jpg (display)")->required();
     render->add_option("--sensors", renderCsv, "Also write the sensor table as CSV (sensors are gathered only when asked for)");
+    render->add_option("--solution", solutionFile,
+                       "Render from a solution saved by solve --save (no solve); refused if it was computed for other "
+                       "geometry, materials, lights or settings");
     render->add_option("--camera", cameras,
                        "The view(s) to render, by name (\"camera\", or a name in \"cameras\"), repeatable, or all; "
                        "several: one solve, a ray trace each, images NAME.VIEW.EXT (default: the first view)");
@@ -362,6 +376,8 @@ int main(int argc, char** argv) {
     auto* solve = cli.add_subcommand("solve", "Solve the lighting and report illuminance at the sensors (no image)");
     addCommon(solve, solveArgs);
     solve->add_option("--sensors", solveCsv, "Write the sensor table as CSV");
+    solve->add_option("--save", saveFile,
+                      "Write the solution (FILE.rrs): render --solution FILE.rrs then renders any view without solving");
     addReports(solve, solveReports);
 
     auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
@@ -448,8 +464,8 @@ int main(int argc, char** argv) {
         }
         if (render->parsed())
             return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, allowBlack,
-                             renderReports, cameras);
-        if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports);
+                             renderReports, cameras, solutionFile);
+        if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports, saveFile);
         return runInfo(infoArgs);
     } catch (const InputError& e) {
         std::cerr << "rayrad: " << e.what() << "\n";

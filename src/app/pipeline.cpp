@@ -5,12 +5,14 @@
 #include <app/scene_warnings.h>
 
 #include <core/input_error.h>
+#include <core/input_file.h>
 #include <core/progress.h>
 #include <radiosity/direct_pass.h>
 #include <scene/light_groups.h>
 #include <radiosity/edge_vertices.h>
 #include <radiosity/gather.h>
 #include <radiosity/sensors.h>
+#include <radiosity/solution_file.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
 #include <raytrace/camera.h>
@@ -168,6 +170,67 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
     return {std::move(image), std::move(forDisplay.image)};
 }
 
+/// The direct pass, the clusters, the secondary pass and the vertex values.
+void solveLighting(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options, bool wantGather) {
+    run.report.begin(run.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
+                                                        run.lights->virtualLightCount(), run.mirrorImages)
+                                          : std::string("direct light"));
+    {
+        Progress progress("direct light", options.quiet);
+        std::mutex m;
+        radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples,
+                                 run.solution, [&](double f) {
+                                     std::lock_guard<std::mutex> lock(m);
+                                     progress.update(f);
+                                 });
+    }
+    if (auto w = backLightWarning(run.scene, run.solution, run.lights->emittedFlux())) {
+        if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, *w);
+        run.warnings.push_back(*w);
+    }
+
+    if (run.scene.hasReflectance() || wantGather) {  // both the shooting and the gather use them
+        run.report.begin("clusters");
+        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
+    }
+    if (run.scene.hasReflectance()) {
+        run.report.begin("secondary pass (shooting)");
+        solveSecondary(run, options);
+        run.report.begin("reconstruct vertices");
+        radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
+        if (run.scene.solver.edgeGatherLevels > 0) {
+            Progress progress("seam vertices", options.quiet);
+            std::mutex m;
+            run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
+                                                             *run.embree, run.scene.solver.edgeGatherLevels,
+                                                             [&](double f) {
+                                                                 std::lock_guard<std::mutex> lock(m);
+                                                                 progress.update(f);
+                                                             });
+        }
+    } else {
+        // Nothing reflects: the solution is complete with no indirect light at all.
+        run.solution.indirect.assign(run.mesh.patches.size(), Rgb(0.0));
+        run.solution.unshot.assign(run.mesh.patches.size(), Rgb(0.0));
+        run.solution.converged = true;
+        radiosity::reconstructVertices(run.mesh, run.solution);
+        run.skipped.push_back("secondary pass (no surface reflects light)");
+    }
+}
+
+/// A saved solution in place of the solve (render --solution): checked against the scene.
+void loadSolution(PipelineRun& run, const PipelineOptions& options, bool wantGather) {
+    run.report.begin("load solution");
+    const std::string bytes = readInputFile(options.solutionFile, "solution file", size_t(1) << 40);
+    run.solution = radiosity::decodeSolution(bytes, options.solutionFile, radiosity::fingerprintOf(run.scene, run.mesh),
+                                             run.mesh.patches.size(), run.mesh.vertices.size());
+    run.skipped.push_back("direct light and secondary pass (solution read from " + options.solutionFile + ")");
+    if (wantGather) {
+        run.report.begin("clusters");
+        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
+    }
+}
+
 }  // namespace
 
 std::string viewNames(const scene::Scene& scene) {
@@ -214,51 +277,9 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.mirrorImages = radiosity::mirrorImagesFor(run.scene).size();
     if (run.scene.mirrors.empty()) run.skipped.push_back("virtual lights and shooters (no mirrors)");
     else if (!run.scene.solver.mirrorImages) run.skipped.push_back("virtual lights and shooters (mirrors ignored)");
-    run.report.begin(run.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
-                                                        run.lights->virtualLightCount(), run.mirrorImages)
-                                          : std::string("direct light"));
-    {
-        Progress progress("direct light", options.quiet);
-        std::mutex m;
-        radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples,
-                                 run.solution, [&](double f) {
-                                     std::lock_guard<std::mutex> lock(m);
-                                     progress.update(f);
-                                 });
-    }
-    if (auto w = backLightWarning(run.scene, run.solution, run.lights->emittedFlux())) {
-        if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, *w);
-        run.warnings.push_back(*w);
-    }
-
     const bool wantGather = options.wantSensors && !run.scene.sensors.empty();
-    if (run.scene.hasReflectance() || wantGather) {  // both the shooting and the gather use them
-        run.report.begin("clusters");
-        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
-    }
-    if (run.scene.hasReflectance()) {
-        run.report.begin("secondary pass (shooting)");
-        solveSecondary(run, options);
-        run.report.begin("reconstruct vertices");
-        radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
-        if (run.scene.solver.edgeGatherLevels > 0) {
-            Progress progress("seam vertices", options.quiet);
-            std::mutex m;
-            run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
-                                                             *run.embree, run.scene.solver.edgeGatherLevels,
-                                                             [&](double f) {
-                                                                 std::lock_guard<std::mutex> lock(m);
-                                                                 progress.update(f);
-                                                             });
-        }
-    } else {
-        // Nothing reflects: the solution is complete with no indirect light at all.
-        run.solution.indirect.assign(run.mesh.patches.size(), Rgb(0.0));
-        run.solution.unshot.assign(run.mesh.patches.size(), Rgb(0.0));
-        run.solution.converged = true;
-        radiosity::reconstructVertices(run.mesh, run.solution);
-        run.skipped.push_back("secondary pass (no surface reflects light)");
-    }
+    if (options.solutionFile.empty()) solveLighting(run, sceneFile, options, wantGather);
+    else loadSolution(run, options, wantGather);
 
     if (wantGather) {
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));

@@ -40,6 +40,8 @@ struct PipelineOptions {
     std::optional<std::string> lightGroup;
     /// The view the image (and the snapshots) are rendered from; empty: the default.
     std::string view;
+    /// A saved solution to use instead of solving (render --solution FILE.rrs).
+    std::string solutionFile;
 };
 
 /// One view's rendering: cd/m² and the average display images are made from.

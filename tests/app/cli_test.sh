@@ -94,6 +94,25 @@ check "views: sensors only when asked" grep -q "sensors (not asked for" "$work/v
 check "views: an unknown view is exit 2" test $? -eq 2
 check "views: names the views" grep -q 'no view "top" (it has "front", "side", or all)' "$work/top.err"
 
+# A saved solution (issue 16): solve once, render without solving, the same image; a
+# solution for other materials or a damaged file is refused.
+"$rayrad" solve "$work/views.json" --save "$work/views.rrs" -q > /dev/null 2>&1
+check "save: exit 0" test $? -eq 0 -a -s "$work/views.rrs"
+"$rayrad" render "$work/views.json" -o "$work/direct.exr" -q > /dev/null 2>&1
+"$rayrad" render "$work/views.json" --solution "$work/views.rrs" -o "$work/fromsol.exr" > /dev/null 2> "$work/fromsol.err"
+check "solution: exit 0" test $? -eq 0
+check "solution: no solve" grep -q "skipped:.*direct light and secondary pass (solution read from" "$work/fromsol.err"
+"$rayrad" compare "$work/fromsol.exr" "$work/direct.exr" --calibrate none --fail-above mean_abs_rel_pct=0 > /dev/null 2>&1
+check "solution: the same image as solving" test $? -eq 0
+"$rayrad" render "$work/views.json" --solution "$work/views.rrs" --set materials.w.reflectance=0.6 -o "$work/x.png" -q \
+    > /dev/null 2> "$work/mismatch.err"
+check "solution: other materials refused (exit 2)" test $? -eq 2
+check "solution: says what differs" grep -q "views.rrs: this solution was computed for another scene: the materials differ" "$work/mismatch.err"
+head -c 300 "$work/views.rrs" > "$work/short.rrs"
+"$rayrad" render "$work/views.json" --solution "$work/short.rrs" -o "$work/x.png" -q > /dev/null 2> "$work/short.err"
+check "solution: a truncated file refused" grep -q "short.rrs: its checksum does not match" "$work/short.err"
+check "solution: nothing written" test ! -e "$work/x.png"
+
 # Nothing reflects: no secondary pass, sensors still answer (indirect 0).
 "$rayrad" solve "$cube" --set materials.wall.reflectance=0 --set radiosity.max_edge=2.5 --sensors "$work/black.csv" -q \
     > /dev/null 2> "$work/black.err"

@@ -1,0 +1,221 @@
+#include <radiosity/solution_file.h>
+
+#include <core/input_error.h>
+#include <scene/photometry.h>
+
+#include <fmt/format.h>
+
+#include <cstring>
+#include <type_traits>
+
+namespace rayrad::radiosity {
+
+namespace {
+
+constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
+constexpr uint32_t kVersion = 1;
+constexpr uint32_t kByteOrder = 0x01020304;
+
+/// 64-bit FNV-1a over values' bytes.
+class Hash {
+  public:
+    void bytes(const void* data, size_t n) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < n; ++i) m_h = (m_h ^ p[i]) * 1099511628211ull;
+    }
+    template <class T>
+    Hash& operator<<(const T& v) {
+        static_assert(std::is_arithmetic_v<T>, "hash numbers only (no padding)");
+        bytes(&v, sizeof v);
+        return *this;
+    }
+    Hash& operator<<(const Vec3& v) { return *this << v.x << v.y << v.z; }
+    Hash& operator<<(const std::string& s) {
+        *this << s.size();
+        bytes(s.data(), s.size());
+        return *this;
+    }
+    uint64_t value() const { return m_h; }
+
+  private:
+    uint64_t m_h = 14695981039346656037ull;
+};
+
+/// Appends values to a byte string; reads them back with bounds checks.
+class Writer {
+  public:
+    template <class T>
+    void put(const T& v) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        m_out.append(reinterpret_cast<const char*>(&v), sizeof v);
+    }
+    template <class T>
+    void putArray(const std::vector<T>& v) {
+        put(static_cast<uint64_t>(v.size()));
+        m_out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    }
+    std::string& bytes() { return m_out; }
+
+  private:
+    std::string m_out;
+};
+
+class Reader {
+  public:
+    Reader(const std::string& bytes, size_t end, const std::string& path) : m_in(bytes), m_end(end), m_path(path) {}
+    template <class T>
+    T get(const char* what) {
+        T v;
+        need(sizeof v, what);
+        std::memcpy(&v, m_in.data() + m_at, sizeof v);
+        m_at += sizeof v;
+        return v;
+    }
+    /// An array of `expected` values (or none, when `orNone`).
+    template <class T>
+    std::vector<T> getArray(size_t expected, const char* what, bool orNone = false) {
+        const auto n = get<uint64_t>(what);
+        if (n != expected && !(orNone && n == 0))
+            throw InputError(placeMessage(m_path, "", fmt::format("{}: {} values where {} were expected (a damaged file)", what, n, expected)));
+        need(n * sizeof(T), what);
+        std::vector<T> v(n);
+        std::memcpy(v.data(), m_in.data() + m_at, n * sizeof(T));
+        m_at += n * sizeof(T);
+        return v;
+    }
+    void skip(size_t n) { m_at += n; }
+
+  private:
+    void need(size_t n, const char* what) const {
+        if (m_end - m_at < n) throw InputError(placeMessage(m_path, "", std::string("the file ends inside ") + what + " (truncated?)"));
+    }
+    const std::string& m_in;
+    size_t m_at = 0, m_end;
+    const std::string& m_path;
+};
+
+uint64_t checksum(const std::string& bytes, size_t n) {
+    Hash h;
+    h.bytes(bytes.data(), n);
+    return h.value();
+}
+
+}  // namespace
+
+SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& mesh) {
+    SolutionFingerprint f;
+    Hash g;
+    g << mesh.vertices.size() << mesh.patches.size();
+    for (const auto& v : mesh.vertices) g << v;
+    for (const auto& p : mesh.patches) g << p.v[0] << p.v[1] << p.v[2] << p.material << p.group;
+    f.geometry = g.value();
+
+    Hash m;
+    for (const auto& mat : scene.materials)
+        m << mat.name << static_cast<int>(mat.kind) << Vec3(mat.reflectance) << Vec3(mat.emission) << Vec3(mat.specular)
+          << mat.ior << mat.twoSided;
+    f.materials = m.value();
+
+    Hash l;
+    l << scene.lights.size();
+    for (const auto& light : scene.lights) {
+        l << light.position << Vec3(light.intensity) << light.isSpot << light.direction << light.cosInner << light.cosOuter
+          << light.nadir << light.c0 << light.photometricScale << light.photometricFlux << light.openingPoints.size();
+        for (const auto& p : light.openingPoints) l << p;
+        if (light.photometry) {
+            const auto& w = *light.photometry;
+            l << static_cast<int>(w.type);
+            for (double a : w.vertical) l << a;
+            for (double a : w.horizontal) l << a;
+            for (const auto& plane : w.candela)
+                for (double cd : plane) l << cd;
+        }
+    }
+    f.lights = l.value();
+
+    // Every setting the direct pass, the shooting, the reconstruction or the seam vertices
+    // read (a setting added to them must be added here).
+    Hash s;
+    const auto& o = scene.solver;
+    s << o.stopUnshot << o.maxShots << o.maxSeconds << o.analyticDistance << o.areaLightSamples << o.gatherLevels
+      << o.gatherRefineLevels << o.gatherRefineTolerance << o.gatherFarDiameters << o.shootFarDiameters << o.gatherMinWeight
+      << o.linearReconstruction << o.edgeGatherLevels << o.mirrorImages << o.mirrorDepth << o.mirrorMinWeight
+      << o.mirrorMinShare << o.conserveEnergy << o.overshoot << o.oneChannelWhenGrey;
+    const auto& c = scene.clusters;
+    s << c.enabled << c.voxelSize << c.patchesPerCluster << c.sizePercent << c.referenceArea << c.normalToleranceDeg
+      << c.maxIlluminanceStep << c.energyCorrection << c.receiverDetail << c.pushPullFraction;
+    f.settings = s.value();
+    return f;
+}
+
+std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerprint& f, size_t vertexCount) {
+    Writer w;
+    w.bytes().append(kMagic, sizeof kMagic);
+    w.put(kVersion);
+    w.put(kByteOrder);
+    w.put(f.geometry), w.put(f.materials), w.put(f.lights), w.put(f.settings);
+    w.put(static_cast<uint64_t>(sol.directMean.size()));
+    w.put(static_cast<uint64_t>(vertexCount));
+    w.putArray(sol.directMean);
+    w.putArray(sol.directCorner);
+    w.putArray(sol.indirect);
+    w.putArray(sol.unshot);
+    w.putArray(sol.vertexIndirect);
+    w.put(sol.shots), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(static_cast<uint8_t>(sol.converged));
+    w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary), w.put(sol.backAbsorbedDirect);
+    w.putArray(sol.backFlux);
+    w.put(checksum(w.bytes(), w.bytes().size()));
+    return std::move(w.bytes());
+}
+
+RadiositySolution decodeSolution(const std::string& bytes, const std::string& path, const SolutionFingerprint& expected,
+                                 size_t patchCount, size_t vertexCount) {
+    auto fail = [&](const std::string& why) { return InputError(placeMessage(path, "", why)); };
+    if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+        throw fail("not a rayrad solution file (rayrad solve --save writes one)");
+    if (bytes.size() < sizeof kMagic + 2 * sizeof(uint32_t) + sizeof(uint64_t)) throw fail("the file is truncated");
+    const size_t end = bytes.size() - sizeof(uint64_t);
+    Reader r(bytes, end, path);
+    r.skip(sizeof kMagic);
+    const auto version = r.get<uint32_t>("the version");
+    if (version != kVersion) throw fail(fmt::format("a solution of format version {}; this rayrad reads version {}", version, kVersion));
+    if (r.get<uint32_t>("the byte-order mark") != kByteOrder) throw fail("written on a machine of another byte order");
+    uint64_t stored;
+    std::memcpy(&stored, bytes.data() + end, sizeof stored);
+    if (stored != checksum(bytes, end)) throw fail("its checksum does not match: the file is damaged or truncated");
+    SolutionFingerprint f;
+    f.geometry = r.get<uint64_t>("the fingerprint"), f.materials = r.get<uint64_t>("the fingerprint");
+    f.lights = r.get<uint64_t>("the fingerprint"), f.settings = r.get<uint64_t>("the fingerprint");
+    const char* differs = f.geometry != expected.geometry   ? "geometry (or its meshing settings)"
+                          : f.materials != expected.materials ? "materials"
+                          : f.lights != expected.lights       ? "lights"
+                          : f.settings != expected.settings   ? "radiosity or cluster settings"
+                                                              : nullptr;
+    if (differs)
+        throw fail(std::string("this solution was computed for another scene: the ") + differs +
+                   " differ; solve the scene again (rayrad solve SCENE --save FILE)");
+    const auto patches = r.get<uint64_t>("the patch count"), vertices = r.get<uint64_t>("the vertex count");
+    if (patches != patchCount || vertices != vertexCount)
+        throw fail(fmt::format("{} patches and {} vertices where the scene has {} and {}", patches, vertices, patchCount, vertexCount));
+    RadiositySolution sol;
+    sol.directMean = r.getArray<Rgb>(patchCount, "the direct illuminance");
+    sol.directCorner = r.getArray<RgbF>(3 * patchCount, "the corner direct illuminance", true);
+    sol.indirect = r.getArray<Rgb>(patchCount, "the indirect illuminance");
+    sol.unshot = r.getArray<Rgb>(patchCount, "the unshot light");
+    sol.vertexIndirect = r.getArray<Rgb>(vertexCount, "the vertex values");
+    sol.shots = r.get<int64_t>("the statistics");
+    sol.initialUnshotFlux = r.get<double>("the statistics");
+    sol.remainingUnshotFlux = r.get<double>("the statistics");
+    sol.converged = r.get<uint8_t>("the statistics") != 0;
+    sol.seconds = r.get<double>("the statistics");
+    sol.mirrorAbsorbedDirect = r.get<double>("the statistics");
+    sol.mirrorAbsorbedSecondary = r.get<double>("the statistics");
+    sol.backAbsorbedDirect = r.get<double>("the statistics");
+    // One back flux per surface group, as many as were written (the checksum vouches for n).
+    const auto n = r.get<uint64_t>("the back fluxes");
+    sol.backFlux.resize(n);
+    for (auto& v : sol.backFlux) v = r.get<double>("the back fluxes");
+    return sol;
+}
+
+}  // namespace rayrad::radiosity
