@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Benchmark (issue 16): three views of the office rendered one run each (three solves) and
-# in one run with three --camera (one solve, three ray traces). Prints each run's CPU seconds
+# Benchmark (issue 16): three views of the office rendered one run each (three solves), in
+# one run with three --camera (one solve, three ray traces), and as solve --save followed by
+# three runs of render --solution (one solve, three ray traces in separate processes). Prints each run's CPU seconds
 # (user + sys, all threads, from the stage table) and wall seconds, and the stages of the
 # single run.
 # Usage: bench/views.sh [WIDTHxHEIGHT]   (default 640x480)
@@ -28,3 +29,14 @@ echo "three runs: $sum CPU-s"
     -o "$tmp/all.png" -q > /dev/null 2> "$tmp/all.err"
 echo "one run, three --camera: $(total "$tmp/all.err")"
 grep -E '^(direct light|secondary pass|reconstruct|ray trace|tone map)' "$tmp/all.err"
+# Solve once and save; then each view in a run of its own from the saved solution.
+"$rayrad" solve scenes/office/office.json --save "$tmp/office.rrs" -q > /dev/null 2> "$tmp/save.err"
+echo "solve --save: $(total "$tmp/save.err")"
+sum=$(awk '/^total/ {print $3}' "$tmp/save.err")
+for view in door window desk; do
+    "$rayrad" render scenes/office/office.json --set "cameras=$cameras" --camera "$view" --solution "$tmp/office.rrs" \
+        -o "$tmp/$view.sol.png" -q > /dev/null 2> "$tmp/$view.sol.err"
+    echo "render --solution, $view: $(total "$tmp/$view.sol.err")"
+    sum=$(awk -v s="$sum" '/^total/ {print s + $3}' "$tmp/$view.sol.err")
+done
+echo "one solve + three renders from it: $sum CPU-s"
