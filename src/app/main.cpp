@@ -10,6 +10,7 @@
 #include <app/validate_cube.h>
 #include <app/compare.h>
 #include <app/validate_luminaire.h>
+#include <app/tiles.h>
 #include <app/views.h>
 #include <radiosity/solution_file.h>
 #include <app/validate_sphere.h>
@@ -161,7 +162,7 @@ tonemap::DisplayOptions parseExposure(const std::string& exposure, tonemap::Disp
 int runRender(const CommonArgs& a, const std::vector<std::string>& images, const std::string& csv,
               std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
               const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const app::ReportArgs& reports,
-              const std::vector<std::string>& cameras, const std::string& solution) {
+              const std::vector<std::string>& cameras, const std::string& solution, const std::string& tileText) {
     const tonemap::DisplayOptions display = parseExposure(exposure, displayIn);
     tonemap::checkDisplayOptions(display);
     app::PipelineOptions o;
@@ -176,12 +177,24 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     o.snapshots = snapshots;
     o.display = display;
     o.solutionFile = solution;
+    const app::Tile tile = tileText.empty() ? app::Tile{} : app::parseTile(tileText);
+    if (tile.count > 0) {
+        for (const auto& path : images)
+            if (!tonemap::isHdrFormat(path))
+                throw InputError(placeMessage(path, "--tile", "a tile is written as EXR (rayrad merge makes the PNG or JPEG)"));
+        if (snapshots > 0) throw InputError(placeMessage("", "--tile", "snapshots are of whole images: render them without --tile"));
+        if (!reports.falseColour.empty()) throw InputError(placeMessage("", "--tile", "a false-colour picture is of the whole image"));
+    }
     if (!solution.empty() && snapshots > 0)
         throw InputError(placeMessage("", "--snapshots", "a saved solution (--solution) has no solve to take snapshots of"));
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
     const std::vector<std::string> views = app::selectViews(desc, cameras);
     o.view = views.front();
+    if (tile.count > 0 && views.size() > 1)
+        throw InputError(placeMessage("", "--tile", "tiles are of one view: give one --camera"));
+    for (const auto& [name, c] : desc.views)
+        if (name == o.view) std::tie(o.rowBegin, o.rowEnd) = app::tileRows(tile, c.height);
     std::vector<std::vector<std::string>> viewImages;  // per view, its output paths
     for (const auto& v : views) {
         std::vector<std::string> paths;
@@ -200,7 +213,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     const std::vector<std::string> others = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     o.files = &files;
     auto run = app::runPipeline(a.scene, o);
-    app::checkRenderedImage(*run.image, allowBlack);
+    app::checkRenderedImage(*run.image, allowBlack || tile.count > 0);  // a tile may be all sky
     const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
     // The other views: a ray trace each, from the same solution.
     std::vector<app::RenderedView> more;
@@ -210,8 +223,13 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     }
     run.report.begin("tone map + write");
     const std::string description = "rayrad rendering of " + a.scene;
-    app::stageImages(viewImages.front(), *run.image, run.displayImage ? *run.displayImage : *run.image, display,
-                     description + (views.size() > 1 ? ", view " + views.front() : ""), files);
+    if (tile.count > 0) {
+        for (const auto& path : viewImages.front())
+            files.set(path, app::encodeTile(path, *run.image, tile, description + (views.size() > 1 ? ", view " + views.front() : "")));
+    } else {
+        app::stageImages(viewImages.front(), *run.image, run.displayImage ? *run.displayImage : *run.image, display,
+                         description + (views.size() > 1 ? ", view " + views.front() : ""), files);
+    }
     for (size_t k = 1; k < views.size(); ++k)
         app::stageImages(viewImages[k], more[k - 1].image, more[k - 1].displayImage, display, description + ", view " + views[k],
                          files);
@@ -317,7 +335,8 @@ int main(int argc, char** argv) {
     std::string renderCsv, solveCsv, exposure = "auto", toneName = "exposure", whiteBalance = "none";
     std::optional<int> spp, seed;
     std::vector<std::string> cameras;
-    std::string saveFile, solutionFile;
+    std::string saveFile, solutionFile, tileText;
+    std::vector<std::string> mergeOutputs, mergeTiles;
     int snapshots = 0;
     app::ReportArgs renderReports, solveReports;
     tonemap::DisplayOptions display;
@@ -338,6 +357,9 @@ int main(int argc, char** argv) {
     render->add_option("--solution", solutionFile,
                        "Render from a solution saved by solve --save (no solve); refused if it was computed for other "
                        "geometry, materials, lights or settings");
+    render->add_option("--tile", tileText,
+                       "I/N: render only the I-th of N horizontal bands into an EXR tile; rayrad merge joins the tiles "
+                       "(bit-identical to rendering the whole)");
     render->add_option("--camera", cameras,
                        "The view(s) to render, by name (\"camera\", or a name in \"cameras\"), repeatable, or all; "
                        "several: one solve, a ray trace each, images NAME.VIEW.EXT (default: the first view)");
@@ -382,6 +404,12 @@ int main(int argc, char** argv) {
 
     auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
     addCommon(info, infoArgs);
+
+    auto* merge = cli.add_subcommand("merge", "Join the tiles of one rendering (render --tile I/N) into the whole image");
+    merge->add_option("-o,--output", mergeOutputs, "Output image(s): .exr (bit-identical to rendering the whole), .png, .jpg")
+        ->required()
+        ->allow_extra_args(false);  // -o takes one file; the rest are tiles
+    merge->add_option("tiles", mergeTiles, "The tile EXR files, all N of them, in any order")->required();
 
     app::CompareOptions compareOptions;
     auto* compare = cli.add_subcommand("compare", "Compare an image (a rendering) against a reference (a photograph or "
@@ -447,6 +475,7 @@ int main(int argc, char** argv) {
 
     try {
         if (compare->parsed()) return app::compareImages(compareOptions);
+        if (merge->parsed()) return app::mergeTiles(mergeOutputs, mergeTiles);
         if (validateSphere->parsed()) return app::validateSphere(sphereOptions);
         if (validateLuminaire->parsed()) return app::validateLuminaire(luminaireOptions);
         if (validate->parsed()) return app::validateCube(validateOptions);
@@ -464,7 +493,7 @@ int main(int argc, char** argv) {
         }
         if (render->parsed())
             return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, allowBlack,
-                             renderReports, cameras, solutionFile);
+                             renderReports, cameras, solutionFile, tileText);
         if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports, saveFile);
         return runInfo(infoArgs);
     } catch (const InputError& e) {

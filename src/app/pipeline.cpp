@@ -166,7 +166,7 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
                                           std::lock_guard<std::mutex> lock(m);
                                           progress.update(f);
                                       },
-                                      &forDisplay);
+                                      &forDisplay, options.rowBegin, options.rowEnd);
     return {std::move(image), std::move(forDisplay.image)};
 }
 

@@ -42,6 +42,8 @@ struct PipelineOptions {
     std::string view;
     /// A saved solution to use instead of solving (render --solution FILE.rrs).
     std::string solutionFile;
+    /// Trace only these rows of the image (render --tile); rowEnd −1: to the last.
+    int rowBegin = 0, rowEnd = -1;
 };
 
 /// One view's rendering: cd/m² and the average display images are made from.

@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -97,7 +98,8 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
 
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
                 const radiosity::DirectLight& lights, const EmbreeScene& embree, const PinholeCamera& camera,
-                const scene::RenderOptions& options, const std::function<void(double)>& onProgress, DisplayAverage* display) {
+                const scene::RenderOptions& options, const std::function<void(double)>& onProgress, DisplayAverage* display,
+                int rowBegin, int rowEnd) {
     HdrImage image(camera.width(), camera.height());
     const double Lc = display ? display->compressionLuminance : 0.0;
     if (display) display->image = HdrImage(camera.width(), camera.height());
@@ -107,7 +109,8 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
     // share it (⌈n / spp⌉ each), so a pixel averages about n rays per light at any spp.
     const int raysPerHit = std::max(1, (options.areaLightSamples + spp - 1) / spp);
     std::atomic<int> rowsDone{0};
-    tbb::parallel_for(tbb::blocked_range<int>(0, image.height, 1), [&](const tbb::blocked_range<int>& rows) {
+    const int first = std::clamp(rowBegin, 0, image.height), last = rowEnd < 0 ? image.height : std::clamp(rowEnd, first, image.height);
+    tbb::parallel_for(tbb::blocked_range<int>(first, last, 1), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
             for (int x = 0; x < image.width; ++x) {
                 Random rng(options.seed, static_cast<uint64_t>(y) * image.width + x);
@@ -136,7 +139,7 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                 if (display) display->image.at(x, y) = Lc > 0 && weights > 0 ? weighted / weights : image.at(x, y);
             }
             int done = ++rowsDone;
-            if (onProgress) onProgress(static_cast<double>(done) / image.height);
+            if (onProgress) onProgress(static_cast<double>(done) / std::max(1, last - first));
         }
     });
     return image;

@@ -34,10 +34,12 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
 /// mirrors, and E_indirect interpolated from the radiosity mesh's vertex values; rays
 /// that hit mirrors or glass recurse (Whitted). Back faces are black. Each pixel has its
 /// own random stream seeded by (seed, pixel), so the image does not depend on threads.
+/// Only rows [rowBegin, rowEnd) are traced (the rest stay black; rowEnd −1: to the last):
+/// a tile of a render has the same pixels as the whole.
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
                 const radiosity::DirectLight& lights, const EmbreeScene& embree, const PinholeCamera& camera,
                 const scene::RenderOptions& options, const std::function<void(double)>& onProgress = {},
-                DisplayAverage* display = nullptr);
+                DisplayAverage* display = nullptr, int rowBegin = 0, int rowEnd = -1);
 
 /// Luminance (cd/m², RGB) seen along one ray; used by render() and by tests. Mirrors
 /// (Ks × the reflected ray) and glass (Fresnel reflection + refraction) recurse up to

@@ -40,7 +40,8 @@ void checkImageFormat(const std::string& path) {
         throw OutputError(placeMessage(path, "", "unknown image format '" + e + "' (use .exr, .png or .jpg)"));
 }
 
-std::string encodeExr(const std::string& path, const HdrImage& image, const std::string& description) {
+std::string encodeExr(const std::string& path, const HdrImage& image, const std::string& description,
+                      const std::vector<std::pair<std::string, std::string>>& attributes) {
     std::vector<float> buf(image.pixels.size() * 3);
     for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(image.pixels[i][c]);
@@ -55,6 +56,7 @@ std::string encodeExr(const std::string& path, const HdrImage& image, const std:
     // No DateTime (OIIO would stamp the wall clock): the same scene, seed and options
     // give a bit-identical file. The file's own time says when it was written.
     spec.attribute("DateTime", "");
+    for (const auto& [name, value] : attributes) spec.attribute(name, value);
     return encode(path, spec, OIIO::TypeDesc::FLOAT, buf.data());
 }
 
@@ -76,10 +78,14 @@ void writeDisplayImage(const std::string& path, int width, int height, const std
     writeFileAtomically(path, encodeDisplayImage(path, width, height, rgb8));
 }
 
-HdrImage readImage(const std::string& path) {
+HdrImage readImage(const std::string& path, std::vector<std::pair<std::string, std::string>>* attributes) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw InputError(placeMessage(path, "", "cannot read image: " + OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
+    if (attributes)
+        for (const auto& a : spec.extra_attribs)
+            if (a.name().string().rfind("rayrad:", 0) == 0 && a.type() == OIIO::TypeDesc::STRING)
+                attributes->emplace_back(a.name().string(), a.get_string());
     std::vector<float> buf(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buf.data()))
         throw InputError(placeMessage(path, "", "cannot read image: " + in->geterror()));

@@ -18,7 +18,8 @@ void checkImageFormat(const std::string& path);
 /// The bytes of an EXR file: linear Rec.709 in absolute luminance (cd/m²), 32-bit
 /// floats (half floats overflow at 65504 cd/m²), with metadata saying so, and no time
 /// stamp (the same input gives the same bytes). `path` names it in messages.
-std::string encodeExr(const std::string& path, const HdrImage& image, const std::string& description);
+std::string encodeExr(const std::string& path, const HdrImage& image, const std::string& description,
+                      const std::vector<std::pair<std::string, std::string>>& attributes = {});
 
 /// The bytes of a PNG or JPEG file (by `path`'s extension) of display-encoded 8-bit RGB
 /// (already tone mapped and encoded); `description` (how it was tone mapped and white
@@ -31,8 +32,9 @@ void writeExr(const std::string& path, const HdrImage& image, const std::string&
 /// encodeDisplayImage, then written safely.
 void writeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8);
 
-/// Reads any image OIIO can read as linear floats as stored (tests, image diffs).
-HdrImage readImage(const std::string& path);
+/// Reads any image OIIO can read as linear floats as stored (tests, image diffs); with
+/// `attributes`, also its string attributes whose names start with "rayrad:".
+HdrImage readImage(const std::string& path, std::vector<std::pair<std::string, std::string>>* attributes = nullptr);
 
 /// "OpenImageIO 2.4.7, OpenColorIO 2.1.2": the versions this build runs with.
 std::string libraryVersions();
