@@ -3,27 +3,22 @@
 #include <app/result_checks.h>
 #include <app/validate_runs.h>
 #include <app/version.h>
-#include <app/photometry_report.h>
 #include <app/pipeline.h>
 #include <app/run_outputs.h>
-#include <app/problem_size.h>
 #include <app/validate_cube.h>
 #include <app/compare.h>
 #include <app/validate_luminaire.h>
+#include <app/scene_info.h>
 #include <app/tiles.h>
 #include <app/views.h>
 #include <radiosity/solution_file.h>
 #include <app/validate_sphere.h>
-#include <app/scene_warnings.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <core/result_error.h>
-#include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
-#include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
-#include <raytrace/embree_scene.h>
 #include <tonemap/display_transform.h>
 #include <tonemap/image_io.h>
 
@@ -243,78 +238,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     return 0;
 }
 
-int runInfo(const CommonArgs& a) {
-    if (scene::isPhotometricFile(a.scene)) {
-        fmt::print("{}", app::photometryReport(scene::readPhotometry(a.scene)));
-        return 0;
-    }
-    auto scene = app::loadSceneFile(a.scene, overridesOf(a));
-    const double estimate = app::checkPatchCount(a.scene, scene);
-    auto mesh = radiosity::premesh(scene, scene.meshing);
-    size_t emissive = 0;
-    for (const auto& g : scene.groups)
-        if (scene.materials[g.material].isEmissive()) emissive += g.polygons.size();
-    fmt::print("scene: {}\n", a.scene);
-    fmt::print("materials: {}\n", scene.materials.size());
-    for (const auto& m : scene.materials) {
-        static const char* kKinds[] = {"diffuse", "mirror", "glass"};
-        fmt::print("  {}: {}, reflectance {}{}\n", m.name, kKinds[static_cast<int>(m.kind)], toString(m.reflectance),
-                   m.isEmissive() ? fmt::format(", emits {} cd/m²", toString(m.emission)) : "");
-    }
-    fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
-    fmt::print("patches (premeshed triangles): {} (estimated {:.0f}; target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
-               mesh.patches.size(), estimate, radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(),
-               mesh.totalArea());
-    auto embree = raytrace::buildEmbreeScene(scene, mesh);
-    const radiosity::Clustering clustering = radiosity::buildClusters(scene, mesh, scene.clusters, embree.get());
-    fmt::print("{}\n", clustering.statistics());
-    for (const auto& w : app::costWarnings(a.scene, scene, mesh, true)) fmt::print("warning: {}\n", w);
-    std::fflush(stdout);  // before the per-sensor checks, which take a while for very many sensors
-    for (const auto& w : app::sceneWarnings(scene, mesh, *embree)) fmt::print("warning: {}\n", w);
-    fmt::print("point/spot lights and luminaires: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
-    for (const auto& l : scene.lights) {
-        if (l.photometry) {
-            const auto peak = l.photometry->peak();
-            fmt::print("  luminaire {} at {}: {:.1f} lm ({:.4g} × the file's table), peak {:.1f} cd, nadir {}, C0 {}\n",
-                       l.photometry->file, toString(l.position), l.photometricFlux, l.photometricScale,
-                       peak.candela * l.photometricScale, toString(l.nadir), toString(l.c0));
-            continue;
-        }
-        fmt::print("  {} at {}: {} cd{}\n", l.isSpot ? "spot" : "point", toString(l.position), toString(l.intensity),
-                   l.isSpot ? fmt::format(", axis {}, cones {:.4g}°/{:.4g}°", toString(l.direction),
-                                          glm::degrees(std::acos(l.cosInner)), glm::degrees(std::acos(l.cosOuter)))
-                            : "");
-    }
-    fmt::print("sensors: {}\n", scene.sensors.size());
-    const radiosity::DirectLight lights(scene);  // its virtual lights are the mirror images' copies of the lights
-    const size_t images = lights.imageCount();
-    if (!scene.mirrors.empty())
-        fmt::print("mirror images: {} ({}){}\n", images, scene.solver.mirrorImages ? "chains of reflections" : "mirrors ignored",
-                   images > 0 ? fmt::format(", {} virtual lights", lights.virtualLightCount()) : "");
-    fmt::print("expected peak memory: about {:.0f} MiB ({} patches, {} clusters{})\n",
-               app::estimatePeakBytes(mesh.patches.size(), clustering.clusters.size(), images) / (1 << 20),
-               mesh.patches.size(), clustering.clusters.size(),
-               images > 0 ? fmt::format(", {} mirror images", images) : "");
-    if (scene.camera) fmt::print("camera: {}x{}, vfov {} deg\n", scene.camera->width, scene.camera->height, scene.camera->verticalFovDeg);
-    fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax), scene.diagonal());
-    if (scene.warnings.degeneratePolygons > 0)
-        fmt::print("warning: {} zero-area or duplicate triangles dropped\n", scene.warnings.degeneratePolygons);
-    if (scene.warnings.droppedMeshFaces > 0)
-        fmt::print("warning: {} mesh-file faces dropped (points, lines, or indices out of range)\n",
-                   scene.warnings.droppedMeshFaces);
-    if (scene.warnings.clampedFileReflectances > 0)
-        fmt::print("warning: {} mesh-file materials had a reflectance above {} and were clamped to it\n",
-                   scene.warnings.clampedFileReflectances, scene::kMaxFileReflectance);
-    fmt::print("stages needed: premesh, direct light{}{}{}\n",
-               scene.hasReflectance() ? ", secondary pass" : "",
-               scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");
-    std::vector<std::string> skipped;
-    if (!scene.hasReflectance()) skipped.push_back("secondary pass (no surface reflects light)");
-    if (scene.sensors.empty()) skipped.push_back("sensor gather (no sensors)");
-    if (!scene.camera) skipped.push_back("ray trace (no camera)");
-    for (const auto& s : skipped) fmt::print("not needed: {}\n", s);
-    return 0;
-}
+int runInfo(const CommonArgs& a) { return app::printSceneInfo(a.scene, overridesOf(a)); }
 
 }  // namespace
 

@@ -1,0 +1,96 @@
+#include <app/scene_info.h>
+
+#include <app/photometry_report.h>
+#include <app/pipeline.h>
+#include <app/problem_size.h>
+#include <app/scene_warnings.h>
+#include <radiosity/clusters.h>
+#include <radiosity/direct_light.h>
+#include <radiosity/mesher.h>
+#include <raytrace/embree_scene.h>
+#include <scene/photometry.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace rayrad::app {
+
+int printSceneInfo(const std::string& file, const std::vector<scene::Override>& overrides) {
+    if (scene::isPhotometricFile(file)) {
+        fmt::print("{}", app::photometryReport(scene::readPhotometry(file)));
+        return 0;
+    }
+    auto scene = app::loadSceneFile(file, overrides);
+    const double estimate = app::checkPatchCount(file, scene);
+    auto mesh = radiosity::premesh(scene, scene.meshing);
+    size_t emissive = 0;
+    for (const auto& g : scene.groups)
+        if (scene.materials[g.material].isEmissive()) emissive += g.polygons.size();
+    fmt::print("scene: {}\n", file);
+    fmt::print("materials: {}\n", scene.materials.size());
+    for (const auto& m : scene.materials) {
+        static const char* kKinds[] = {"diffuse", "mirror", "glass"};
+        fmt::print("  {}: {}, reflectance {}{}\n", m.name, kKinds[static_cast<int>(m.kind)], toString(m.reflectance),
+                   m.isEmissive() ? fmt::format(", emits {} cd/m²", toString(m.emission)) : "");
+    }
+    fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
+    fmt::print("patches (premeshed triangles): {} (estimated {:.0f}; target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
+               mesh.patches.size(), estimate, radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(),
+               mesh.totalArea());
+    auto embree = raytrace::buildEmbreeScene(scene, mesh);
+    const radiosity::Clustering clustering = radiosity::buildClusters(scene, mesh, scene.clusters, embree.get());
+    fmt::print("{}\n", clustering.statistics());
+    for (const auto& w : app::costWarnings(file, scene, mesh, true)) fmt::print("warning: {}\n", w);
+    std::fflush(stdout);  // before the per-sensor checks, which take a while for very many sensors
+    for (const auto& w : app::sceneWarnings(scene, mesh, *embree)) fmt::print("warning: {}\n", w);
+    fmt::print("point/spot lights and luminaires: {}, area-light polygons: {}\n", scene.lights.size(), emissive);
+    for (const auto& l : scene.lights) {
+        if (l.photometry) {
+            const auto peak = l.photometry->peak();
+            fmt::print("  luminaire {} at {}: {:.1f} lm ({:.4g} × the file's table), peak {:.1f} cd, nadir {}, C0 {}\n",
+                       l.photometry->file, toString(l.position), l.photometricFlux, l.photometricScale,
+                       peak.candela * l.photometricScale, toString(l.nadir), toString(l.c0));
+            continue;
+        }
+        fmt::print("  {} at {}: {} cd{}\n", l.isSpot ? "spot" : "point", toString(l.position), toString(l.intensity),
+                   l.isSpot ? fmt::format(", axis {}, cones {:.4g}°/{:.4g}°", toString(l.direction),
+                                          glm::degrees(std::acos(l.cosInner)), glm::degrees(std::acos(l.cosOuter)))
+                            : "");
+    }
+    fmt::print("sensors: {}\n", scene.sensors.size());
+    const radiosity::DirectLight lights(scene);  // its virtual lights are the mirror images' copies of the lights
+    const size_t images = lights.imageCount();
+    if (!scene.mirrors.empty())
+        fmt::print("mirror images: {} ({}){}\n", images, scene.solver.mirrorImages ? "chains of reflections" : "mirrors ignored",
+                   images > 0 ? fmt::format(", {} virtual lights", lights.virtualLightCount()) : "");
+    fmt::print("expected peak memory: about {:.0f} MiB ({} patches, {} clusters{})\n",
+               app::estimatePeakBytes(mesh.patches.size(), clustering.clusters.size(), images) / (1 << 20),
+               mesh.patches.size(), clustering.clusters.size(),
+               images > 0 ? fmt::format(", {} mirror images", images) : "");
+    for (const auto& v : scene.views)
+        fmt::print("view \"{}\": {}x{}, vfov {} deg{}\n", v.name, v.camera.width, v.camera.height, v.camera.verticalFovDeg,
+                   &v == &scene.views.front() ? " (the default)" : "");
+    fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax), scene.diagonal());
+    if (scene.warnings.degeneratePolygons > 0)
+        fmt::print("warning: {} zero-area or duplicate triangles dropped\n", scene.warnings.degeneratePolygons);
+    if (scene.warnings.droppedMeshFaces > 0)
+        fmt::print("warning: {} mesh-file faces dropped (points, lines, or indices out of range)\n",
+                   scene.warnings.droppedMeshFaces);
+    if (scene.warnings.clampedFileReflectances > 0)
+        fmt::print("warning: {} mesh-file materials had a reflectance above {} and were clamped to it\n",
+                   scene.warnings.clampedFileReflectances, scene::kMaxFileReflectance);
+    fmt::print("stages needed: premesh, direct light{}{}{}\n",
+               scene.hasReflectance() ? ", secondary pass" : "",
+               scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");
+    std::vector<std::string> skipped;
+    if (!scene.hasReflectance()) skipped.push_back("secondary pass (no surface reflects light)");
+    if (scene.sensors.empty()) skipped.push_back("sensor gather (no sensors)");
+    if (!scene.camera) skipped.push_back("ray trace (no camera)");
+    for (const auto& s : skipped) fmt::print("not needed: {}\n", s);
+    return 0;
+}
+
+
+}  // namespace rayrad::app
