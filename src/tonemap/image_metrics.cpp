@@ -1,5 +1,6 @@
 #include <tonemap/image_metrics.h>
 
+#include <core/colour_space.h>
 #include <tonemap/tone_operators.h>
 
 #include <lcms2.h>
@@ -69,10 +70,9 @@ double ssim(const std::vector<double>& a, const std::vector<double>& b, int w, i
 
 /// CIELAB (D65 white, Y = 1) of a display-relative linear Rec.709 colour, through lcms2.
 cmsCIELab labOf(const Rgb& c) {
-    static const cmsCIEXYZ white{0.95047, 1.0, 1.08883};
-    const cmsCIEXYZ xyz{0.4124564 * c.r + 0.3575761 * c.g + 0.1804375 * c.b,
-                        0.2126729 * c.r + 0.7151522 * c.g + 0.0721750 * c.b,
-                        0.0193339 * c.r + 0.1191920 * c.g + 0.9503041 * c.b};
+    static const cmsCIEXYZ white{kD65WhiteX, 1.0, kD65WhiteZ};
+    const Vec3 v = rec709ToXyz(c);
+    const cmsCIEXYZ xyz{v.x, v.y, v.z};
     cmsCIELab lab;
     cmsXYZ2Lab(&white, &lab, &xyz);
     return lab;

@@ -1,5 +1,6 @@
 #include <tonemap/tone_operators.h>
 
+#include <core/colour_space.h>
 #include <core/input_error.h>
 
 #include <fmt/format.h>
@@ -133,23 +134,18 @@ namespace {
 struct Lab {
     double L, a, b;
 };
-constexpr double kWhiteX = 0.95047, kWhiteZ = 1.08883;
 double labF(double t) { return t > 216.0 / 24389 ? std::cbrt(t) : (24389.0 / 27 * t + 16) / 116; }
 double labFInverse(double f) { return f * f * f > 216.0 / 24389 ? f * f * f : (116 * f - 16) * 27 / 24389; }
 
 Lab toLab(const Rgb& c) {
-    const double X = 0.4124564 * c.r + 0.3575761 * c.g + 0.1804375 * c.b;
-    const double Y = 0.2126729 * c.r + 0.7151522 * c.g + 0.0721750 * c.b;
-    const double Z = 0.0193339 * c.r + 0.1191920 * c.g + 0.9503041 * c.b;
-    const double fx = labF(X / kWhiteX), fy = labF(Y), fz = labF(Z / kWhiteZ);
+    const Vec3 xyz = rec709ToXyz(c);
+    const double fx = labF(xyz.x / kD65WhiteX), fy = labF(xyz.y), fz = labF(xyz.z / kD65WhiteZ);
     return {116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)};
 }
 
 Rgb fromLab(const Lab& lab) {
     const double fy = (lab.L + 16) / 116, fx = fy + lab.a / 500, fz = fy - lab.b / 200;
-    const double X = kWhiteX * labFInverse(fx), Y = labFInverse(fy), Z = kWhiteZ * labFInverse(fz);
-    return Rgb(3.2404542 * X - 1.5371385 * Y - 0.4985314 * Z, -0.9692660 * X + 1.8760108 * Y + 0.0415560 * Z,
-               0.0556434 * X - 0.2040259 * Y + 1.0572252 * Z);
+    return xyzToRec709(Vec3(kD65WhiteX * labFInverse(fx), labFInverse(fy), kD65WhiteZ * labFInverse(fz)));
 }
 
 bool inGamut(const Rgb& c, double slack = 1e-9) {

@@ -1,5 +1,6 @@
 #include <tonemap/white_balance.h>
 
+#include <core/colour_space.h>
 #include <core/input_error.h>
 #include <core/colour_temperature.h>
 
@@ -11,8 +12,6 @@ namespace rayrad::tonemap {
 
 namespace {
 
-/// Linear Rec.709 (sRGB primaries, D65) → CIE XYZ (IEC 61966-2-1).
-constexpr Matrix3 kRgbToXyz{{{0.4124564, 0.3575761, 0.1804375}, {0.2126729, 0.7151522, 0.0721750}, {0.0193339, 0.1191920, 0.9503041}}};
 /// XYZ → Bradford cone responses ρσβ (Lam 1985).
 constexpr Matrix3 kBradford{{{0.8951, 0.2664, -0.1614}, {-0.7502, 1.7135, 0.0367}, {0.0389, -0.0685, 1.0296}}};
 
@@ -122,7 +121,10 @@ Matrix3 whiteBalanceMatrix(const HdrImage& image, const WhiteBalance& wb) {
     Matrix3 identity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
     if (wb.kind == WhiteBalance::Kind::None) return identity;
     const Rgb white = sourceWhite(image, wb);
-    const Matrix3 toCones = multiply(kBradford, kRgbToXyz);  // RGB → ρσβ
+    Matrix3 rgbToXyz{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) rgbToXyz[i][j] = kRec709ToXyz[i][j];
+    const Matrix3 toCones = multiply(kBradford, rgbToXyz);  // RGB → ρσβ
     const Rgb src = applyMatrix(toCones, white), dst = applyMatrix(toCones, Rgb(1.0));  // D65 = (1, 1, 1), Y = 1
     Matrix3 scale{};
     for (int i = 0; i < 3; ++i) scale[i][i] = dst[i] / src[i];
