@@ -268,7 +268,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
-    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree)) {
+    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors)) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
         run.warnings.push_back(std::move(w));
     }

@@ -81,7 +81,7 @@ class Prober {
 }  // namespace
 
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
-                                       const raytrace::EmbreeScene& embree) {
+                                       const raytrace::EmbreeScene& embree, bool checkSensors) {
     std::vector<std::string> out;
     const double diagonal = scene.diagonal();
     const double near = std::max(5e-3, 1e-4 * diagonal);  // "buried": covered within a few mm
@@ -143,7 +143,7 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
         if (misses == rays)
             out.push_back(fmt::format("/camera: the camera at {} sees no surface at all", toString(cam.position)));
     }
-    for (const auto& s : scene.sensors) {
+    for (const auto& s : checkSensors ? scene.sensors : std::vector<scene::Sensor>{}) {
         // As the gather sees it: on a surface's rim, from just inside the sensor's patch.
         Vec3 x = s.position;
         if (auto at = radiosity::locateOnMesh(mesh, x, s.normal, 1e-6 * diagonal, &embree))

@@ -20,8 +20,9 @@ namespace rayrad::app {
 ///  - a sensor that is buried (its hemisphere covered within a few millimetres: it
 ///    will read about 0) or behind a mirror;
 ///  - a mirror whose front faces nothing (wound backwards, or against a wall).
+/// `checkSensors` false: the sensors are not looked at (a render that does not gather them).
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
-                                       const raytrace::EmbreeScene& embree);
+                                       const raytrace::EmbreeScene& embree, bool checkSensors = true);
 
 /// Above this share of the emitted flux, light on the backs of one-sided surfaces is
 /// worth a warning.
