@@ -105,7 +105,7 @@ class PushPullObserver {
     }
 
     void writeSnapshot(const radiosity::RadiositySolution& copy) {
-        raytrace::PinholeCamera camera(*m_run.scene.camera);
+        raytrace::ImageCamera camera(*m_run.scene.camera);
         raytrace::DisplayAverage forDisplay{displayCompression(m_run.scene, m_run.mesh, copy), {}};
         HdrImage image = raytrace::render(m_run.scene, m_run.mesh, copy, *m_run.lights, *m_run.embree, camera,
                                           m_run.scene.render, {}, &forDisplay);
@@ -157,7 +157,7 @@ scene::Camera findView(const scene::Scene& scene, const std::string& name) {
 /// The ray tracer for one camera: the plain average (cd/m²) and the display average.
 std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& cam, const std::string& label,
                                          const PipelineOptions& options) {
-    raytrace::PinholeCamera camera(cam);
+    raytrace::ImageCamera camera(cam);
     Progress progress(label, options.quiet);
     std::mutex m;
     raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, run.solution), {}};

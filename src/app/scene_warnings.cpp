@@ -122,12 +122,14 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
                                       "inside of surfaces): the image will show only those",
                                       toString(cam.position), p.backFaces, p.rays));
         // What the view itself shows: rays through a grid of image points.
-        raytrace::PinholeCamera camera(cam);
+        raytrace::ImageCamera camera(cam);
         int rays = 0, mirrorBacks = 0, misses = 0;
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 8; ++x) {
-                Vec3 d = camera.direction((x + 0.5) * cam.width / 8.0, (y + 0.5) * cam.height / 8.0);
-                raytrace::Hit h = embree.intersect(camera.position(), d, 0.0, std::numeric_limits<double>::infinity());
+                const raytrace::CameraRay r = camera.ray((x + 0.5) * cam.width / 8.0, (y + 0.5) * cam.height / 8.0);
+                if (!r.valid) continue;
+                const Vec3& d = r.direction;
+                raytrace::Hit h = embree.intersect(r.origin, d, 0.0, std::numeric_limits<double>::infinity());
                 ++rays;
                 if (!h.found) {
                     ++misses;

@@ -1,4 +1,5 @@
-// A pinhole camera: pixel coordinates → world-space rays.
+// A camera: pixel coordinates → world-space rays, for the three projections
+// (perspective, equidistant fisheye, orthographic).
 #pragma once
 
 #include <core/math.h>
@@ -6,19 +7,25 @@
 
 namespace rayrad::raytrace {
 
-class PinholeCamera {
+struct CameraRay {
+    Vec3 origin{0.0};
+    Vec3 direction{0, 0, -1};  ///< unit
+    bool valid = true;         ///< false outside a fisheye's circle: the pixel stays black
+};
+
+class ImageCamera {
   public:
-    explicit PinholeCamera(const scene::Camera& camera);
-    /// Unit direction through image position (px, py) in pixels, (0, 0) the top-left
-    /// corner of the image, y down.
-    Vec3 direction(double px, double py) const;
-    const Vec3& position() const { return m_position; }
+    explicit ImageCamera(const scene::Camera& camera);
+    /// The ray through image position (px, py) in pixels, (0, 0) the top-left corner of
+    /// the image, y down.
+    CameraRay ray(double px, double py) const;
     int width() const { return m_width; }
     int height() const { return m_height; }
 
   private:
+    scene::Projection m_projection;
     Vec3 m_position, m_forward, m_right, m_up;
-    double m_tanHalfFov;
+    double m_tanHalfFov, m_orthoHeight;
     int m_width, m_height;
 };
 

@@ -97,7 +97,7 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
 }
 
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
-                const radiosity::DirectLight& lights, const EmbreeScene& embree, const PinholeCamera& camera,
+                const radiosity::DirectLight& lights, const EmbreeScene& embree, const ImageCamera& camera,
                 const scene::RenderOptions& options, const std::function<void(double)>& onProgress, DisplayAverage* display,
                 int rowBegin, int rowEnd) {
     HdrImage image(camera.width(), camera.height());
@@ -126,8 +126,9 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                         jx = rng.nextDouble();
                         jy = rng.nextDouble();
                     }
-                    Vec3 dir = camera.direction(x + jx, y + jy);
-                    const Rgb sample = shadeRay(scene, mesh, solution, lights, embree, camera.position(), dir, raysPerHit, rng, 0);
+                    const CameraRay r = camera.ray(x + jx, y + jy);
+                    const Rgb sample =
+                        r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction, raysPerHit, rng, 0) : Rgb(0.0);
                     sum += sample;
                     if (Lc > 0) {
                         const double w = 1 / (1 + std::max(0.0, luminance(sample)) / Lc);

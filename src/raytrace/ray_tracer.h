@@ -37,7 +37,7 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
 /// Only rows [rowBegin, rowEnd) are traced (the rest stay black; rowEnd −1: to the last):
 /// a tile of a render has the same pixels as the whole.
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
-                const radiosity::DirectLight& lights, const EmbreeScene& embree, const PinholeCamera& camera,
+                const radiosity::DirectLight& lights, const EmbreeScene& embree, const ImageCamera& camera,
                 const scene::RenderOptions& options, const std::function<void(double)>& onProgress = {},
                 DisplayAverage* display = nullptr, int rowBegin = 0, int rowEnd = -1);
 

@@ -92,6 +92,8 @@ struct Camera {
     Vec3 position{0.0}, lookAt{0, 0, -1}, up{0, 1, 0};
     double verticalFovDeg = 45;
     int width = 512, height = 512;
+    Projection projection = Projection::Perspective;
+    double orthoHeight = 0;  ///< m, orthographic only
 };
 
 /// A named view of the scene (render --camera NAME).

@@ -140,12 +140,11 @@ class Builder {
         for (const auto& g : s.groups) anyEmitter |= s.materials[g.material].isEmissive();
         if (!anyEmitter)
             fail("/lights", "the scene has no light: add a light or an emissive material (the mesh files bring none)");
-        auto camera = [](const CameraDesc& c) { return Camera{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height}; };
-        if (m_desc.camera) s.camera = camera(*m_desc.camera);
-        for (const auto& [name, c] : m_desc.views) s.views.push_back({name, camera(c)});
         for (const auto& d : m_desc.sensors)
             s.sensors.push_back({d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
         addSurfaceGrids(s);
+        if (m_desc.camera) s.camera = camera(s, *m_desc.camera);
+        for (const auto& [name, c] : m_desc.views) s.views.push_back({name, camera(s, c)});
         computeBounds(s);
         return s;
     }
@@ -426,6 +425,19 @@ class Builder {
                 if (web.round && u * u + v * v > 0.25 * width * width) continue;
                 p.openingPoints.push_back(p.position + u * p.c0 + v * c90);
             }
+    }
+
+    /// A camera in world space; one "from_sensor" stands at the sensor (1 mm off its surface)
+    /// and looks along its normal.
+    Camera camera(const Scene& s, const CameraDesc& c) const {
+        Camera cam{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height, c.projection, c.orthoHeight};
+        if (c.fromSensor.empty()) return cam;
+        const auto it = std::find_if(s.sensors.begin(), s.sensors.end(), [&](const Sensor& x) { return x.name == c.fromSensor; });
+        if (it == s.sensors.end()) fail(c.where + "/from_sensor", "no sensor \"" + c.fromSensor + "\" in the scene");
+        cam.position = it->position + 1e-3 * it->normal;
+        cam.lookAt = cam.position + it->normal;
+        cam.up = std::abs(it->normal.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(0, 0, -1);
+        return cam;
     }
 
     /// The surface grids' points, after the sensors; a name used twice is an error.

@@ -76,12 +76,16 @@ struct LightDesc {
 };
 
 struct CameraDesc {
+    std::string where;               ///< JSON pointer, for messages
     Vec3 position{0.0};
     Vec3 lookAt{0, 0, -1};
     Vec3 up{0, 1, 0};
     double verticalFovDeg = 45.0;
     int width = 512;
     int height = 512;
+    Projection projection = Projection::Perspective;
+    double orthoHeight = 0;          ///< m (orthographic)
+    std::string fromSensor;          ///< placed at this sensor, looking along its normal (the builder resolves it)
 };
 
 /// A point where illuminance is reported, with optional references in lx.

@@ -327,8 +327,25 @@ LightDesc parseLight(JsonObject l, const std::string& sceneDir) {
 
 CameraDesc parseCamera(JsonObject c) {
     CameraDesc d;
-    c.required("position");
-    c.required("look_at");
+    d.where = c.path();
+    if (auto p = c.string("projection")) {
+        if (*p == "perspective") d.projection = Projection::Perspective;
+        else if (*p == "fisheye") d.projection = Projection::Fisheye;
+        else if (*p == "orthographic") d.projection = Projection::Orthographic;
+        else c.error("projection", "expected \"perspective\", \"fisheye\" or \"orthographic\", got \"" + *p + "\"");
+    }
+    if (d.projection == Projection::Orthographic) {
+        c.required("height_m");
+        d.orthoHeight = c.positive("height_m", 1.0);
+    }
+    d.fromSensor = c.string("from_sensor").value_or("");
+    if (d.fromSensor.empty()) {
+        c.required("position");
+        c.required("look_at");
+    } else {
+        for (const char* key : {"position", "look_at", "up"})
+            if (c.has(key)) c.error(key, std::string("give either \"from_sensor\" or \"") + key + "\", not both");
+    }
     d.position = c.vec3("position").value_or(d.position);
     d.lookAt = c.vec3("look_at").value_or(d.position + Vec3(0, 0, -1));
     d.up = c.vec3("up").value_or(Vec3(0, 1, 0));

@@ -6,6 +6,14 @@
 
 namespace rayrad::scene {
 
+/// How a camera maps pixels to rays.
+enum class Projection {
+    Perspective,   ///< a pinhole: vfov_deg across the image height
+    Fisheye,       ///< equidistant 180°: the angle from the axis grows linearly to 90° at the rim of the
+                   ///< largest circle in the image (black outside it); glare and daylight studies
+    Orthographic,  ///< parallel rays: a plan or elevation `orthoHeight` metres high
+};
+
 /// Premeshing: how input polygons become radiosity patches (`radiosity.max_edge`, ...).
 struct MeshingOptions {
     /// false: no premeshing — each input polygon is only triangulated (a quad gives two

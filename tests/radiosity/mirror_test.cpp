@@ -177,13 +177,13 @@ TEST_CASE("mirror room: the block face toward the mirror is brighter with mirror
     REQUIRE(with.image);
     REQUIRE(without.image);
     // The pixel whose ray points closest to the face's centre (2, 0.4, 2).
-    raytrace::PinholeCamera camera(*with.scene.camera);
-    Vec3 target = glm::normalize(Vec3(2, 0.4, 2) - camera.position());
+    raytrace::ImageCamera camera(*with.scene.camera);
+    Vec3 target = glm::normalize(Vec3(2, 0.4, 2) - with.scene.camera->position);
     int bx = 0, by = 0;
     double best = -1;
     for (int y = 0; y < camera.height(); ++y)
         for (int x = 0; x < camera.width(); ++x) {
-            double d = glm::dot(camera.direction(x + 0.5, y + 0.5), target);
+            double d = glm::dot(camera.ray(x + 0.5, y + 0.5).direction, target);
             if (d > best) best = d, bx = x, by = y;
         }
     double lit = luminance(with.image->at(bx, by)), unlit = luminance(without.image->at(bx, by));

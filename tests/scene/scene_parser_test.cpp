@@ -132,3 +132,24 @@ TEST_CASE("named views: cameras need a unique name, all is reserved, the first i
     CHECK(test::parseErrors(withCameras("{\"name\": \"all\", " + cam + "}")).contains("/cameras/0/name: \"all\" is reserved"));
     CHECK(test::parseErrors(withCameras("{" + cam + "}")).contains("/cameras/0"));
 }
+
+TEST_CASE("camera projections: names, an orthographic height, a view from a sensor", "[scene]") {
+    auto withCamera = [&](const std::string& camera) {
+        std::string json = boxScene();
+        return json.substr(0, json.rfind('}')) +
+               ", \"sensors\": [{\"name\": \"S\", \"position\": [0.5, 0, 0.5], \"normal\": [0, 1, 0]}], \"camera\": {" + camera + "}}";
+    };
+    CHECK(parseErrors(withCamera(R"("position": [0.5, 0.5, 0.1], "look_at": [0.5, 0.5, 1], "projection": "cylindrical")"))
+              .contains("/camera/projection: expected \"perspective\", \"fisheye\" or \"orthographic\""));
+    CHECK(parseErrors(withCamera(R"("position": [0.5, 0.5, 0.1], "look_at": [0.5, 0.5, 1], "projection": "orthographic")"))
+              .contains("/camera: missing required key \"height_m\""));
+    CHECK(parseErrors(withCamera(R"("from_sensor": "S", "position": [0.5, 0.5, 0.1])"))
+              .contains("/camera/position: give either \"from_sensor\" or \"position\""));
+    const auto s = scene::buildScene(scene::parseScene(withCamera(R"("from_sensor": "S", "projection": "fisheye")"), "c.json"));
+    REQUIRE(s.camera);
+    CHECK(s.camera->position.y == Approx(1e-3));
+    CHECK(s.camera->lookAt.y > s.camera->position.y);
+    CHECK(s.camera->projection == scene::Projection::Fisheye);
+    CHECK_THROWS_WITH(scene::buildScene(scene::parseScene(withCamera(R"("from_sensor": "T")"), "c.json")),
+                      Catch::Contains("/camera/from_sensor: no sensor \"T\""));
+}
