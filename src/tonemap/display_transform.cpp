@@ -3,6 +3,7 @@
 #include <core/input_error.h>
 
 #include <OpenColorIO/OpenColorIO.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -113,6 +114,26 @@ OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
 }  // namespace
 
 void checkDisplayOptions(const DisplayOptions& options) { makeProcessor(options); }
+
+DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display) {
+    constexpr double kMaxExposureStops = 64;
+    if (exposure == "auto") return display;
+    double stops = 0;
+    try {
+        size_t used = 0;
+        stops = std::stod(exposure, &used);
+        if (used != exposure.size()) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+        throw InputError(placeMessage("", "--exposure", "expected \"auto\" or a number of stops, got \"" + exposure + "\""));
+    }
+    if (!(std::abs(stops) <= kMaxExposureStops))
+        throw InputError(placeMessage("", "--exposure", fmt::format("expected stops between -{0} and {0}, got {1}: "
+                                                                    "that would make every pixel black or white",
+                                                                    kMaxExposureStops, exposure)));
+    display.exposureStops = stops;
+    display.autoExposure = false;
+    return display;
+}
 
 double exposureScale(const HdrImage& image, const DisplayOptions& o) {
     double stops = std::pow(2.0, o.exposureStops);

@@ -24,6 +24,10 @@ struct DisplayOptions {
     std::string view;           ///< empty = the display's default view
 };
 
+/// --exposure: "auto" (the options unchanged) or a finite number of stops within ±64
+/// (2^64 ≈ 1.8e19 per cd/m²), which makes the exposure absolute. Throws InputError.
+DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display);
+
 /// Throws InputError for a config that does not load, or a display or view it does not
 /// have (the message lists the ones it has). Call it before long work.
 void checkDisplayOptions(const DisplayOptions& options);

@@ -1,0 +1,52 @@
+#include <app/solve_summary.h>
+
+#include <radiosity/shooting_solver.h>
+
+#include <fmt/format.h>
+
+namespace rayrad::app {
+
+void printSolveSummary(const PipelineRun& run) {
+    const auto& s = run.solution;
+    auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
+    fmt::print(stderr, "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n",
+               run.mesh.patches.size(), run.singleChannel ? "1 (grey scene)" : "3", s.shots,
+               s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
+               s.converged ? "converged" : "NOT converged: " + run.shooting.stopReason);
+    if (run.shooting.overshootStalled)
+        fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");
+    fmt::print(stderr, "{}\n", run.clustering.statistics());
+    if (run.edgeVertices > 0) fmt::print(stderr, "seam vertices (concave edges and corners) from a point gather: {}\n", run.edgeVertices);
+    if (run.sensorGathers > 0)
+        fmt::print(stderr, "sensor gathers: {} for {} sensors (corner and midpoint re-gathers near edges)\n",
+                   run.sensorGathers, run.sensors.size());
+    if (run.clustering.enabled) {
+        const auto& t = run.shooting;
+        const std::string throughImages =
+            t.imageTransfers > 0 ? fmt::format(" ({} from mirror images, {:.1f} % of those carrying light)", t.imageTransfers,
+                                               100.0 * static_cast<double>(t.imageTransfersLit) / t.imageTransfers)
+                                 : "";
+        fmt::print(stderr, "transfers: {} cluster→cluster{}, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
+                   t.clusterTransfers, throughImages, t.patchPairs, t.corrections, t.pushPulls, run.maxIlluminanceStep);
+    }
+    std::string alsoAbsorbed;
+    if (!run.scene.mirrors.empty() && run.scene.solver.mirrorImages)
+        alsoAbsorbed += fmt::format(" + {:.6g} lm by mirrors", balance.mirrorAbsorbed);
+    if (balance.backAbsorbed > 0)
+        alsoAbsorbed += fmt::format(" + {:.6g} lm on backs of one-sided surfaces", balance.backAbsorbed);
+    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm{}, unshot {:.6g} lm, not accounted {:+.4f}% "
+                       "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
+               balance.emitted, balance.absorbed, alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
+               balance.unshot, 100 * balance.relativeError(),
+               100 * balance.directError(), 100 * balance.secondaryError());
+    const auto& st = run.shooting;
+    fmt::print(stderr, "closure: {:.3g}% of reflected light escapes; per-shot energy conservation {}{}; overshooting {}\n",
+               100 * st.escapeFraction,
+               st.conserving ? "on" : "off (" + st.conservationOff + ")",
+               st.conserving ? fmt::format(" (largest adjustment {:.3g}%, {} shots beyond the {:.0f}% bound left alone)",
+                                           100 * st.largestRescale, st.unbalancedShots, 100 * radiosity::kConservationBound)
+                             : "",
+               st.overshooting ? "on" : "off");
+}
+
+}  // namespace rayrad::app
