@@ -129,6 +129,7 @@ struct Scene {
     std::vector<Mirror> mirrors;    ///< every polygon of every mirror surface
     std::optional<Camera> camera;   ///< the view being rendered (the default, or the one chosen)
     std::vector<View> views;        ///< every named view
+    std::vector<Camera> pathFrames; ///< the walkthrough's frames ("camera_path"), in order
     std::vector<Sensor> sensors;
     MeshingOptions meshing;
     ClusterOptions clusters;

@@ -2,6 +2,7 @@
 #include <scene/scene.h>
 
 #include <core/input_error.h>
+#include <scene/camera_path.h>
 #include <scene/mesh_import.h>
 #include <scene/polygon.h>
 #include <scene/surface_grids.h>
@@ -145,6 +146,7 @@ class Builder {
         addSurfaceGrids(s);
         if (m_desc.camera) s.camera = camera(s, *m_desc.camera);
         for (const auto& [name, c] : m_desc.views) s.views.push_back({name, camera(s, c)});
+        if (m_desc.cameraPath) s.pathFrames = pathFrames(s, *m_desc.cameraPath);
         computeBounds(s);
         return s;
     }
@@ -438,6 +440,18 @@ class Builder {
         cam.lookAt = cam.position + it->normal;
         cam.up = std::abs(it->normal.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(0, 0, -1);
         return cam;
+    }
+
+    /// The walkthrough's frames; a path that does not move or turns a frame to look
+    /// along its up vector is an error at the path.
+    std::vector<Camera> pathFrames(const Scene& s, const CameraPathDesc& path) const {
+        std::vector<Camera> keys;
+        for (const auto& k : path.keyframes) keys.push_back(camera(s, k));
+        try {
+            return framesAlongPath(keys, path.frames);
+        } catch (const std::invalid_argument& e) {
+            fail(path.where, e.what());
+        }
     }
 
     /// The surface grids' points, after the sensors; a name used twice is an error.

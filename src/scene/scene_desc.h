@@ -88,6 +88,15 @@ struct CameraDesc {
     std::string fromSensor;          ///< placed at this sensor, looking along its normal (the builder resolves it)
 };
 
+/// A walkthrough: keyframes (position, look_at, up, vfov_deg; the resolution is the
+/// path's) and how many frames to make along them (scene/camera_path.h interpolates).
+struct CameraPathDesc {
+    std::string where;               ///< JSON pointer, for messages
+    int frames = 2;
+    std::vector<CameraDesc> keyframes;
+};
+constexpr int kMaxPathFrames = 1'000'000;
+
 /// A point where illuminance is reported, with optional references in lx.
 struct SensorDesc {
     std::string name;
@@ -119,6 +128,7 @@ struct SceneDesc {
     std::optional<CameraDesc> camera;  ///< the default view: "camera", else the first of "cameras"
     /// Every view by name, in the file's order: "camera" (named "camera"), then "cameras".
     std::vector<std::pair<std::string, CameraDesc>> views;
+    std::optional<CameraPathDesc> cameraPath;  ///< "camera_path": a walkthrough's frames
     std::vector<SensorDesc> sensors;  ///< points, with grids already expanded
     std::vector<SurfaceGridDesc> surfaceGrids;  ///< expanded into sensors by the builder
     MeshingOptions meshing;

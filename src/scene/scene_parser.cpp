@@ -325,6 +325,27 @@ LightDesc parseLight(JsonObject l, const std::string& sceneDir) {
     return d;
 }
 
+/// "resolution": [width, height], each from 1 to 16384, at most 10⁸ pixels.
+void readResolution(JsonObject& c, CameraDesc& d) {
+    if (const json* r = c.array("resolution")) {
+        bool ok = r->size() == 2 && (*r)[0].is_number_integer() && (*r)[1].is_number_integer();
+        if (ok) {
+            long long w = (*r)[0].get<long long>(), h = (*r)[1].get<long long>();
+            if (w < 1 || h < 1 || w > 16384 || h > 16384 || w * h > 100'000'000LL) ok = false;
+            else d.width = static_cast<int>(w), d.height = static_cast<int>(h);
+        }
+        if (!ok) c.error("resolution", fmt::format("expected [width, height], each from 1 to 16384, got {}", describe(*r)));
+    }
+}
+
+/// look_at away from position, up not along the viewing direction.
+void checkViewingDirection(JsonObject& c, const CameraDesc& d) {
+    Vec3 forward = d.lookAt - d.position;
+    if (glm::length(forward) == 0) c.error("look_at", "look_at must differ from position");
+    else if (glm::length(glm::cross(forward, d.up)) < 1e-9 * glm::length(forward) * glm::length(d.up))
+        c.error("up", "up must not be parallel to the viewing direction");
+}
+
 CameraDesc parseCamera(JsonObject c) {
     CameraDesc d;
     d.where = c.path();
@@ -352,21 +373,51 @@ CameraDesc parseCamera(JsonObject c) {
     d.verticalFovDeg = c.number("vfov_deg", 45.0);
     if (!(d.verticalFovDeg > 0 && d.verticalFovDeg < 180))
         c.error("vfov_deg", fmt::format("expected an angle in (0, 180), got {}", d.verticalFovDeg));
-    if (const json* r = c.array("resolution")) {
-        bool ok = r->size() == 2 && (*r)[0].is_number_integer() && (*r)[1].is_number_integer();
-        if (ok) {
-            long long w = (*r)[0].get<long long>(), h = (*r)[1].get<long long>();
-            if (w < 1 || h < 1 || w > 16384 || h > 16384 || w * h > 100'000'000LL) ok = false;
-            else d.width = static_cast<int>(w), d.height = static_cast<int>(h);
-        }
-        if (!ok) c.error("resolution", fmt::format("expected [width, height], each from 1 to 16384, got {}", describe(*r)));
-    }
-    Vec3 forward = d.lookAt - d.position;
-    if (glm::length(forward) == 0) c.error("look_at", "look_at must differ from position");
-    else if (glm::length(glm::cross(forward, d.up)) < 1e-9 * glm::length(forward) * glm::length(d.up))
-        c.error("up", "up must not be parallel to the viewing direction");
+    readResolution(c, d);
+    checkViewingDirection(c, d);
     c.finish();
     return d;
+}
+
+/// "camera_path": keyframes (position, look_at, up, vfov_deg) and the frame count; the
+/// path's resolution and field of view are every keyframe's unless one sets its own fov.
+CameraPathDesc parseCameraPath(JsonObject o) {
+    CameraPathDesc path;
+    path.where = o.path();
+    o.required("frames");
+    o.required("keyframes");
+    path.frames = o.integer("frames", 2, 2, kMaxPathFrames);
+    CameraDesc common;
+    common.verticalFovDeg = o.number("vfov_deg", 45.0);
+    if (!(common.verticalFovDeg > 0 && common.verticalFovDeg < 180))
+        o.error("vfov_deg", fmt::format("expected an angle in (0, 180), got {}", common.verticalFovDeg));
+    readResolution(o, common);
+    if (const json* keys = o.array("keyframes")) {
+        for (size_t i = 0; i < keys->size(); ++i) {
+            const std::string where = o.childPath("keyframes") + "/" + std::to_string(i);
+            if (!(*keys)[i].is_object()) {
+                o.context().error(where, "expected an object, got " + describe((*keys)[i]));
+                continue;
+            }
+            JsonObject k((*keys)[i], where, o.context());
+            CameraDesc d = common;
+            d.where = where;
+            k.required("position");
+            k.required("look_at");
+            d.position = k.vec3("position").value_or(d.position);
+            d.lookAt = k.vec3("look_at").value_or(d.position + Vec3(0, 0, -1));
+            d.up = k.vec3("up").value_or(Vec3(0, 1, 0));
+            d.verticalFovDeg = k.number("vfov_deg", common.verticalFovDeg);
+            if (!(d.verticalFovDeg > 0 && d.verticalFovDeg < 180))
+                k.error("vfov_deg", fmt::format("expected an angle in (0, 180), got {}", d.verticalFovDeg));
+            checkViewingDirection(k, d);
+            k.finish();
+            path.keyframes.push_back(d);
+        }
+        if (keys->size() < 2) o.error("keyframes", fmt::format("a path needs at least 2 keyframes, got {}", keys->size()));
+    }
+    o.finish();
+    return path;
 }
 
 void parseRadiosity(JsonObject r, SceneDesc& d) {
@@ -517,7 +568,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     top.string("provenance");
     // Unknown top-level keys first: a misspelt "Materials" explains the errors it causes.
     top.finish({"materials", "objects", "lights", "camera", "cameras", "sensors", "sensor_grids", "work_planes", "surface_grids",
-                "radiosity", "clusters", "render"});
+                "camera_path", "radiosity", "clusters", "render"});
 
     std::map<std::string, int> materialIndex;
     if (auto mats = top.object("materials")) {
@@ -565,6 +616,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         if (!desc.camera) desc.camera = c;
         desc.views.emplace_back(name, c);
     });
+    if (auto p = top.object("camera_path")) desc.cameraPath = parseCameraPath(*p);
     eachObject("sensors", [&](JsonObject o, int i) { desc.sensors.push_back(parseSensor(o, i)); });
     eachObject("sensor_grids", [&](JsonObject o, int i) { parseSensorGrid(o, i, desc.sensors); });
     eachObject("work_planes", [&](JsonObject o, int i) { parseWorkPlane(o, i, desc.sensors); });
