@@ -11,12 +11,17 @@
 #include <app/scene_info.h>
 #include <app/tiles.h>
 #include <app/views.h>
+#include <app/walkthrough.h>
+#include <app/sweep.h>
+#include <app/lit_mesh_export.h>
 #include <radiosity/solution_file.h>
 #include <app/validate_sphere.h>
 #include <app/sensor_table.h>
+#include <app/solve_summary.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <core/result_error.h>
+#include <core/text.h>
 #include <radiosity/direct_light.h>
 #include <radiosity/shooting_solver.h>
 #include <tonemap/display_transform.h>
@@ -43,7 +48,6 @@ constexpr int kExitInternalError = 1;
 constexpr int kExitInputError = 2;
 constexpr int kExitOutputError = 3;
 constexpr int kExitResultError = 4;
-constexpr double kMaxExposureStops = 64;
 constexpr int kMaxThreads = 4096;
 
 struct CommonArgs {
@@ -66,49 +70,6 @@ std::vector<scene::Override> overridesOf(const CommonArgs& a) {
     return out;
 }
 
-void printSolveSummary(const app::PipelineRun& run) {
-    const auto& s = run.solution;
-    auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
-    fmt::print(stderr, "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n",
-               run.mesh.patches.size(), run.singleChannel ? "1 (grey scene)" : "3", s.shots,
-               s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
-               s.converged ? "converged" : "NOT converged: " + run.shooting.stopReason);
-    if (run.shooting.overshootStalled)
-        fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");
-    fmt::print(stderr, "{}\n", run.clustering.statistics());
-    if (run.edgeVertices > 0) fmt::print(stderr, "seam vertices (concave edges and corners) from a point gather: {}\n", run.edgeVertices);
-    if (run.sensorGathers > 0)
-        fmt::print(stderr, "sensor gathers: {} for {} sensors (corner and midpoint re-gathers near edges)\n",
-                   run.sensorGathers, run.sensors.size());
-    if (run.clustering.enabled) {
-        const auto& t = run.shooting;
-        const std::string throughImages =
-            t.imageTransfers > 0 ? fmt::format(" ({} from mirror images, {:.1f} % of those carrying light)", t.imageTransfers,
-                                               100.0 * static_cast<double>(t.imageTransfersLit) / t.imageTransfers)
-                                 : "";
-        fmt::print(stderr, "transfers: {} cluster→cluster{}, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
-                   t.clusterTransfers, throughImages, t.patchPairs, t.corrections, t.pushPulls, run.maxIlluminanceStep);
-    }
-    std::string alsoAbsorbed;
-    if (!run.scene.mirrors.empty() && run.scene.solver.mirrorImages)
-        alsoAbsorbed += fmt::format(" + {:.6g} lm by mirrors", balance.mirrorAbsorbed);
-    if (balance.backAbsorbed > 0)
-        alsoAbsorbed += fmt::format(" + {:.6g} lm on backs of one-sided surfaces", balance.backAbsorbed);
-    fmt::print(stderr, "energy: emitted {:.6g} lm, absorbed {:.6g} lm{}, unshot {:.6g} lm, not accounted {:+.4f}% "
-                       "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
-               balance.emitted, balance.absorbed, alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
-               balance.unshot, 100 * balance.relativeError(),
-               100 * balance.directError(), 100 * balance.secondaryError());
-    const auto& st = run.shooting;
-    fmt::print(stderr, "closure: {:.3g}% of reflected light escapes; per-shot energy conservation {}{}; overshooting {}\n",
-               100 * st.escapeFraction,
-               st.conserving ? "on" : "off (" + st.conservationOff + ")",
-               st.conserving ? fmt::format(" (largest adjustment {:.3g}%, {} shots beyond the {:.0f}% bound left alone)",
-                                           100 * st.largestRescale, st.unbalancedShots, 100 * radiosity::kConservationBound)
-                             : "",
-               st.overshooting ? "on" : "off");
-}
-
 int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs& reports, const std::string& save) {
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
@@ -129,36 +90,52 @@ int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs&
     files.commit();
     outputs.push_back(save);
     app::reportWritten(outputs);
-    printSolveSummary(run);
+    app::printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
 }
 
-/// --exposure: "auto" or a finite number of stops within ±64 (2^64 ≈ 1.8e19 per cd/m²).
-tonemap::DisplayOptions parseExposure(const std::string& exposure, tonemap::DisplayOptions display) {
-    if (exposure == "auto") return display;
-    double stops = 0;
-    try {
-        size_t used = 0;
-        stops = std::stod(exposure, &used);
-        if (used != exposure.size()) throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
-        throw InputError(placeMessage("", "--exposure", "expected \"auto\" or a number of stops, got \"" + exposure + "\""));
+/// render --frames: one solve (or a saved solution), then a ray trace for each frame of the
+/// scene's camera path. Each frame's images are written as soon as it is done (a long
+/// walkthrough keeps what it has finished), all exposed alike (steadyDisplay).
+int runFrames(const CommonArgs& a, app::PipelineOptions o, const std::vector<std::string>& images,
+              const std::string& framesText, const tonemap::DisplayOptions& display, bool allowBlack) {
+    const auto desc = scene::loadScene(a.scene, o.overrides);
+    const auto [first, last] = app::parseFrames(framesText, desc.cameraPath ? desc.cameraPath->frames : 0, a.scene);
+    OutputFiles files = app::filesOf(desc);
+    if (!o.solutionFile.empty()) files.addInput(o.solutionFile);
+    std::vector<std::vector<std::string>> frameImages;
+    for (int k = first; k <= last; ++k) {
+        std::vector<std::string> paths;
+        for (const auto& path : images) paths.push_back(app::framePath(path, k));
+        app::addImageOutputs(paths, files);
+        frameImages.push_back(paths);
     }
-    if (!(std::abs(stops) <= kMaxExposureStops))
-        throw InputError(placeMessage("", "--exposure", fmt::format("expected stops between -{0} and {0}, got {1}: "
-                                                                    "that would make every pixel black or white",
-                                                                    kMaxExposureStops, exposure)));
-    display.exposureStops = stops;
-    display.autoExposure = false;
-    return display;
+    o.wantImage = false;
+    o.wantSensors = false;
+    auto run = app::runPipeline(a.scene, o);
+    const tonemap::DisplayOptions steady = app::steadyDisplay(run, display);
+    for (int k = first; k <= last; ++k) {
+        const auto& paths = frameImages[static_cast<size_t>(k - first)];
+        const auto view = app::renderCamera(run, fmt::format("frame {}, {} of {}", k, k - first + 1, last - first + 1),
+                                            run.scene.pathFrames[static_cast<size_t>(k)], o);
+        app::checkRenderedImage(view.image, allowBlack);
+        app::stageImages(paths, view.image, view.displayImage, steady, fmt::format("rayrad rendering of {}, frame {}", a.scene, k),
+                         files);
+        files.commit();
+        if (!a.quiet) app::reportWritten(paths);
+    }
+    app::printSolveSummary(run);
+    std::cerr << app::stagesSummary(run) << run.report.toString();
+    return 0;
 }
 
 int runRender(const CommonArgs& a, const std::vector<std::string>& images, const std::string& csv,
               std::optional<int> spp, std::optional<int> seed, const std::string& exposure,
               const tonemap::DisplayOptions& displayIn, int snapshots, bool allowBlack, const app::ReportArgs& reports,
-              const std::vector<std::string>& cameras, const std::string& solution, const std::string& tileText) {
-    const tonemap::DisplayOptions display = parseExposure(exposure, displayIn);
+              const std::vector<std::string>& cameras, const std::string& solution, const std::string& tileText,
+              const std::string& framesText) {
+    const tonemap::DisplayOptions display = tonemap::parseExposure(exposure, displayIn);
     tonemap::checkDisplayOptions(display);
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
@@ -182,6 +159,16 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     }
     if (!solution.empty() && snapshots > 0)
         throw InputError(placeMessage("", "--snapshots", "a saved solution (--solution) has no solve to take snapshots of"));
+    if (!framesText.empty()) {
+        const std::vector<std::pair<bool, const char*>> alone = {
+            {!cameras.empty(), "--camera"}, {tile.count > 0, "--tile"}, {snapshots > 0, "--snapshots"},
+            {!reports.falseColour.empty(), "--false-colour"}, {o.wantSensors || o.logConvergence, "--sensors, --report, "
+                                                                                                  "--grid-picture or --convergence"}};
+        for (const auto& [given, option] : alone)
+            if (given)
+                throw InputError(placeMessage("", "--frames", std::string("renders the camera path's frames alone: not with ") + option));
+        return runFrames(a, o, images, framesText, display, allowBlack);
+    }
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
     const std::vector<std::string> views = app::selectViews(desc, cameras);
@@ -233,7 +220,33 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     run.report.end();
     for (const auto& paths : viewImages) app::reportWritten(paths);
     app::reportWritten(others);
-    printSolveSummary(run);
+    app::printSolveSummary(run);
+    std::cerr << app::stagesSummary(run) << run.report.toString();
+    return 0;
+}
+
+/// rayrad export: solve (or read a saved solution) and write the lit mesh as .glb.
+int runExport(const CommonArgs& a, const std::string& output, const std::string& solution, const std::string& exposure,
+              tonemap::DisplayOptions display) {
+    display = tonemap::parseExposure(exposure, display);
+    if (lowerExtension(output) != ".glb")
+        throw InputError(placeMessage(output, "-o", "the lit mesh is written as binary glTF: give a .glb file"));
+    app::PipelineOptions o;
+    o.overrides = overridesOf(a);
+    o.quiet = a.quiet;
+    o.wantSensors = false;
+    o.solutionFile = solution;
+    const auto desc = scene::loadScene(a.scene, o.overrides);
+    OutputFiles files = app::filesOf(desc);
+    if (!solution.empty()) files.addInput(solution);
+    files.add(output);
+    auto run = app::runPipeline(a.scene, o);
+    run.report.begin("export lit mesh");
+    files.set(output, app::exportLitMesh(run, display, a.scene));
+    files.commit();
+    run.report.end();
+    app::reportWritten({output});
+    app::printSolveSummary(run);
     std::cerr << app::stagesSummary(run) << run.report.toString();
     return 0;
 }
@@ -284,6 +297,10 @@ int main(int argc, char** argv) {
     render->add_option("--tile", tileText,
                        "I/N: render only the I-th of N horizontal bands into an EXR tile; rayrad merge joins the tiles "
                        "(bit-identical to rendering the whole)");
+    std::string framesText;
+    render->add_option("--frames", framesText,
+                       "all, K or A:B: render these frames (from 0) of the scene's \"camera_path\", images NAME.KKKK.EXT, "
+                       "each written when done, all exposed alike (from the solution, not per frame)");
     render->add_option("--camera", cameras,
                        "The view(s) to render, by name (\"camera\", or a name in \"cameras\"), repeatable, or all; "
                        "several: one solve, a ray trace each, images NAME.VIEW.EXT (default: the first view)");
@@ -325,6 +342,32 @@ int main(int argc, char** argv) {
     solve->add_option("--save", saveFile,
                       "Write the solution (FILE.rrs): render --solution FILE.rrs then renders any view without solving");
     addReports(solve, solveReports);
+
+    CommonArgs exportArgs;
+    std::string exportOutput, exportSolution, exportExposure = "auto", exportTone = "exposure", exportWhite = "none";
+    auto* exporter = cli.add_subcommand("export", "Write the lit mesh as binary glTF (.glb) for walkthroughs: light baked into "
+                                                  "vertex colours, an unlit material, absolute luminance kept in _LUMINANCE");
+    addCommon(exporter, exportArgs);
+    exporter->add_option("-o,--output", exportOutput, "The .glb file")->required();
+    exporter->add_option("--solution", exportSolution, "Use a solution saved by solve --save (no solve)");
+    exporter->add_option("--exposure", exportExposure,
+                         "\"auto\" (the solution's log-average luminance → 0.18) or stops: 2^stops per cd/m²")
+        ->default_str("auto");
+    exporter->add_option("--tonemap", exportTone, "Tone operator: exposure, tumblin-rushmeier, ward or reinhard")
+        ->default_str("exposure");
+    exporter->add_option("--white-balance", exportWhite, "none, a colour temperature (3000K) or grey-world")->default_str("none");
+
+    app::SweepOptions sweepOptions;
+    auto* sweep = cli.add_subcommand("sweep", "Expand a grid of scene values into independent jobs (one rayrad command line "
+                                              "each) for GNU parallel or a Slurm job array");
+    sweep->add_option("scene", sweepOptions.scene, "Scene file")->required();
+    sweep->add_option("--vary", sweepOptions.vary, "KEY=V1,V2,...: a --set key and the values it takes (repeatable; "
+                                                   "every combination is a job)")->required();
+    sweep->add_option("--run", sweepOptions.command,
+                      "The rayrad subcommand and options of every job; {job} becomes the job's number, e.g. "
+                      "\"solve --sensors out/{job}.csv\"")->default_str("solve");
+    sweep->add_option("--jobs", sweepOptions.jobsFile, "The jobs file to write (a .csv of each job's values beside it)")->required();
+    sweep->add_option("--rayrad", sweepOptions.rayrad, "The rayrad the jobs run (default: this one's absolute path)");
 
     auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
     addCommon(info, infoArgs);
@@ -400,10 +443,11 @@ int main(int argc, char** argv) {
     try {
         if (compare->parsed()) return app::compareImages(compareOptions);
         if (merge->parsed()) return app::mergeTiles(mergeOutputs, mergeTiles);
+        if (sweep->parsed()) return app::writeSweep(sweepOptions);
         if (validateSphere->parsed()) return app::validateSphere(sphereOptions);
         if (validateLuminaire->parsed()) return app::validateLuminaire(luminaireOptions);
         if (validate->parsed()) return app::validateCube(validateOptions);
-        CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : infoArgs;
+        CommonArgs& common = render->parsed() ? renderArgs : solve->parsed() ? solveArgs : exporter->parsed() ? exportArgs : infoArgs;
         std::unique_ptr<tbb::global_control> threads;
         if (common.threads > 0)
             threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common.threads);
@@ -417,8 +461,18 @@ int main(int argc, char** argv) {
         }
         if (render->parsed())
             return runRender(renderArgs, outputs, renderCsv, spp, seed, exposure, display, snapshots, allowBlack,
-                             renderReports, cameras, solutionFile, tileText);
+                             renderReports, cameras, solutionFile, tileText, framesText);
         if (solve->parsed()) return runSolve(solveArgs, solveCsv, solveReports, saveFile);
+        if (exporter->parsed()) {
+            tonemap::DisplayOptions exportDisplay;
+            exportDisplay.tone.op = tonemap::parseToneOperator(exportTone);
+            if (exportExposure != "auto" && exportDisplay.tone.op != tonemap::ToneOperator::Exposure)
+                throw InputError(placeMessage("", "--exposure", "sets the exposure operator's scale: give --tonemap exposure"));
+            exportDisplay.whiteBalance = tonemap::parseWhiteBalance(exportWhite);
+            if (exportDisplay.whiteBalance.kind == tonemap::WhiteBalance::Kind::Region)
+                throw InputError(placeMessage("", "--white-balance", "a region is of an image: export takes none, a temperature or grey-world"));
+            return runExport(exportArgs, exportOutput, exportSolution, exportExposure, exportDisplay);
+        }
         return runInfo(infoArgs);
     } catch (const InputError& e) {
         std::cerr << "rayrad: " << e.what() << "\n";

@@ -240,12 +240,16 @@ std::string viewNames(const scene::Scene& scene) {
     return out.empty() ? "none" : out;
 }
 
-RenderedView renderView(PipelineRun& run, const std::string& view, const PipelineOptions& options) {
-    const scene::Camera camera = findView(run.scene, view);
-    run.report.begin("ray trace (" + view + ")");
-    auto [image, display] = traceImage(run, camera, "ray trace " + view, options);
+RenderedView renderCamera(PipelineRun& run, const std::string& label, const scene::Camera& camera,
+                          const PipelineOptions& options) {
+    run.report.begin("ray trace (" + label + ")");
+    auto [image, display] = traceImage(run, camera, "ray trace " + label, options);
     run.report.end();
-    return {view, std::move(image), std::move(display)};
+    return {label, std::move(image), std::move(display)};
+}
+
+RenderedView renderView(PipelineRun& run, const std::string& view, const PipelineOptions& options) {
+    return renderCamera(run, view, findView(run.scene, view), options);
 }
 
 PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& options) {
@@ -254,6 +258,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.scene = loadSceneFile(sceneFile, options.overrides);
     if (options.lightGroup) scene::keepLightGroup(run.scene, *options.lightGroup);
     if (!options.view.empty()) run.scene.camera = findView(run.scene, options.view);
+    if (options.frame >= 0) run.scene.camera = run.scene.pathFrames.at(static_cast<size_t>(options.frame));
 
     checkPatchCount(sceneFile, run.scene);
     run.report.begin("premesh");

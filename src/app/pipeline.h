@@ -40,6 +40,8 @@ struct PipelineOptions {
     std::optional<std::string> lightGroup;
     /// The view the image (and the snapshots) are rendered from; empty: the default.
     std::string view;
+    /// Render from this frame of the scene's camera path instead of a view (−1: none).
+    int frame = -1;
     /// A saved solution to use instead of solving (render --solution FILE.rrs).
     std::string solutionFile;
     /// Trace only these rows of the image (render --tile); rowEnd −1: to the last.
@@ -95,6 +97,10 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 /// Ray traces one more view of a solved run (stage "ray trace (NAME)"): a second camera
 /// costs a ray trace, not a solve. Throws InputError for a name the scene does not have.
 RenderedView renderView(PipelineRun& run, const std::string& view, const PipelineOptions& options);
+
+/// Ray traces one more camera of a solved run (stage "ray trace (LABEL)").
+RenderedView renderCamera(PipelineRun& run, const std::string& label, const scene::Camera& camera,
+                          const PipelineOptions& options);
 
 /// The scene's view names, for messages: `"a", "b" or "c"`.
 std::string viewNames(const scene::Scene& scene);
