@@ -222,7 +222,9 @@ Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, do
     rh.ray.dir_x = static_cast<float>(dir.x);
     rh.ray.dir_y = static_cast<float>(dir.y);
     rh.ray.dir_z = static_cast<float>(dir.z);
-    rh.ray.tnear = static_cast<float>(tnear);
+    // Embree requires 0 <= tnear (its debug builds assert it): a window around a hit
+    // at the ray's origin, such as the back-face test's, starts at the origin.
+    rh.ray.tnear = static_cast<float>(std::max(0.0, tnear));
     rh.ray.tfar = std::isfinite(tfar) ? static_cast<float>(tfar) : std::numeric_limits<float>::infinity();
     rh.ray.mask = 0xFFFFFFFFu;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
