@@ -1,6 +1,7 @@
 #include <app/lit_mesh_export.h>
 
 #include <app/walkthrough.h>
+#include <radiosity/patch_reflectance.h>
 #include <scene/gltf_writer.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -31,18 +32,21 @@ std::optional<scene::GlbCamera> glbCamera(const scene::Scene& s) {
 
 }  // namespace
 
-std::string exportLitMesh(const PipelineRun& run, const tonemap::DisplayOptions& display, const std::string& sceneFile) {
+std::string exportLitMesh(const PipelineRun& run, const tonemap::DisplayOptions& display, double adaptation,
+                          const std::string& sceneFile) {
     const auto& mesh = run.mesh;
     const auto& solution = run.solution;
     // E_direct at each vertex: the mean of its patches' corner values (vertices are shared
     // only within a surface group, which has one material).
-    std::vector<Rgb> direct(mesh.vertices.size(), Rgb(0.0));
+    // ρ likewise: the mean of the patches' (a texture's mean where textured).
+    std::vector<Rgb> direct(mesh.vertices.size(), Rgb(0.0)), rho(mesh.vertices.size(), Rgb(0.0));
     std::vector<int> patchesAround(mesh.vertices.size(), 0);
     std::vector<int> material(mesh.vertices.size(), -1);
     for (size_t i = 0; i < mesh.patches.size(); ++i)
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = mesh.patches[i].v[k];
             direct[v] += Rgb(solution.directCorner[3 * i + k]);
+            rho[v] += radiosity::patchReflectance(run.scene, mesh, i);
             ++patchesAround[v];
             material[v] = mesh.patches[i].material;
         }
@@ -57,7 +61,8 @@ std::string exportLitMesh(const PipelineRun& run, const tonemap::DisplayOptions&
         if (patchesAround[v] == 0) continue;
         const scene::Material& m = run.scene.materials[static_cast<size_t>(material[v])];
         const Rgb indirect = solution.vertexIndirect.empty() ? Rgb(0.0) : solution.vertexIndirect[v];
-        const Rgb L = m.emission + m.reflectance * (direct[v] / double(patchesAround[v]) + indirect) / kPi;
+        const double n = patchesAround[v];
+        const Rgb L = m.emission + rho[v] / n * (direct[v] / n + indirect) / kPi;
         outIndex[v] = static_cast<uint32_t>(luminances.pixels.size());
         luminances.pixels.push_back(L);
         for (int k = 0; k < 3; ++k) out.positions.push_back(static_cast<float>(mesh.vertices[v][k]));
@@ -67,7 +72,7 @@ std::string exportLitMesh(const PipelineRun& run, const tonemap::DisplayOptions&
     for (const auto& p : mesh.patches)
         for (int k = 0; k < 3; ++k) out.indices.push_back(outIndex[p.v[k]]);
 
-    const tonemap::DisplayOptions steady = steadyDisplay(run, display);
+    const tonemap::DisplayOptions steady = steadyDisplay(adaptation, display);
     for (const Rgb& c : tonemap::toDisplayLinear(luminances, steady))
         for (int k = 0; k < 3; ++k) out.colours.push_back(static_cast<float>(std::clamp(c[k], 0.0, 1.0)));
 
@@ -75,7 +80,7 @@ std::string exportLitMesh(const PipelineRun& run, const tonemap::DisplayOptions&
     extras.text = {{"scene", sceneFile},
                    {"colours", "COLOR_0: linear display RGB of the luminance through " + tonemap::describeDisplay(luminances, steady)},
                    {"_LUMINANCE", "luminance Y of each vertex, cd/m² (absolute)"}};
-    extras.numbers = {{"adaptation_luminance_cd_m2", solutionAdaptationLuminance(run)}};
+    if (adaptation > 0) extras.numbers.push_back({"adaptation_luminance_cd_m2", adaptation});
     if (!steady.autoExposure) extras.numbers.push_back({"exposure_stops", steady.exposureStops});
     return scene::encodeColouredGlb(out, extras, "rayrad " RAYRAD_VERSION, glbCamera(run.scene));
 }

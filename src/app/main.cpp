@@ -114,7 +114,8 @@ int runFrames(const CommonArgs& a, app::PipelineOptions o, const std::vector<std
     o.wantImage = false;
     o.wantSensors = false;
     auto run = app::runPipeline(a.scene, o);
-    const tonemap::DisplayOptions steady = app::steadyDisplay(run, display);
+    const tonemap::DisplayOptions steady =
+        app::steadyDisplay(app::viewsAdaptationLuminance(run, run.scene.pathFrames, o), display);
     for (int k = first; k <= last; ++k) {
         const auto& paths = frameImages[static_cast<size_t>(k - first)];
         const auto view = app::renderCamera(run, fmt::format("frame {}, {} of {}", k, k - first + 1, last - first + 1),
@@ -242,7 +243,11 @@ int runExport(const CommonArgs& a, const std::string& output, const std::string&
     files.add(output);
     auto run = app::runPipeline(a.scene, o);
     run.report.begin("export lit mesh");
-    files.set(output, app::exportLitMesh(run, display, a.scene));
+    // Exposed for what the scene's camera sees (as a rendering of it would be), else for
+    // the whole solution.
+    const double adaptation = run.scene.camera ? app::viewsAdaptationLuminance(run, {*run.scene.camera}, o)
+                                               : app::solutionAdaptationLuminance(run);
+    files.set(output, app::exportLitMesh(run, display, adaptation, a.scene));
     files.commit();
     run.report.end();
     app::reportWritten({output});

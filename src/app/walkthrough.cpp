@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -48,9 +49,34 @@ double solutionAdaptationLuminance(const PipelineRun& run) {
     return 0.18 * raytrace::compressionLuminance(run.scene, run.mesh, run.solution);  // L_c = L̄ / 0.18
 }
 
-tonemap::DisplayOptions steadyDisplay(const PipelineRun& run, tonemap::DisplayOptions display) {
-    const double average = solutionAdaptationLuminance(run);
-    if (!(average > 0)) return display;  // a black solution: nothing to adapt to
+double viewsAdaptationLuminance(PipelineRun& run, const std::vector<scene::Camera>& cameras, const PipelineOptions& options) {
+    constexpr size_t kSamples = 8;
+    constexpr int kWidth = 64;
+    if (cameras.empty()) return 0;
+    PipelineOptions sampling = options;
+    sampling.quiet = true;
+    sampling.rowBegin = 0, sampling.rowEnd = -1;
+    const size_t count = std::min(kSamples, cameras.size());
+    const scene::RenderOptions saved = run.scene.render;
+    run.scene.render.samplesPerPixel = 1;
+    double sumLog = 0;
+    size_t lit = 0;
+    for (size_t i = 0; i < count; ++i) {
+        scene::Camera c = cameras[count == 1 ? 0 : i * (cameras.size() - 1) / (count - 1)];
+        c.height = std::max(1, static_cast<int>(std::lround(static_cast<double>(kWidth) * c.height / c.width)));
+        c.width = kWidth;
+        const auto view = renderCamera(run, fmt::format("adaptation sample {}", i + 1), c, sampling);
+        for (const auto& p : view.image.pixels) {
+            const double y = luminance(p);
+            if (y > 0 && std::isfinite(y)) sumLog += std::log(y), ++lit;
+        }
+    }
+    run.scene.render = saved;
+    return lit > 0 ? std::exp(sumLog / static_cast<double>(lit)) : 0.0;
+}
+
+tonemap::DisplayOptions steadyDisplay(double average, tonemap::DisplayOptions display) {
+    if (!(average > 0)) return display;  // nothing lit to adapt to: each image as usual
     if (display.autoExposure) {
         display.exposureStops += std::log2(0.18 / average);
         display.autoExposure = false;

@@ -18,14 +18,20 @@ std::pair<int, int> parseFrames(const std::string& text, int count, const std::s
 /// Where frame k goes: "out/walk.png", 7 → "out/walk.0007.png" (at least 4 digits).
 std::string framePath(const std::string& path, int frame);
 
-/// The solution's area-weighted log-average luminance of the diffuse surfaces, cd/m²
-/// (reflected light: emitters do not pull it up), 0 for a black solution.
+/// The log-average luminance (cd/m²) of what `cameras` see: up to 8 of them, evenly
+/// spaced, rendered 64 pixels wide at 1 sample (stage "ray trace (adaptation sample K)"),
+/// their lit pixels averaged in log. The same for every process that renders part of a
+/// walkthrough, so a farm's frames are exposed alike. 0 when they see nothing lit.
+double viewsAdaptationLuminance(PipelineRun& run, const std::vector<scene::Camera>& cameras, const PipelineOptions& options);
+
+/// The solution's area-weighted log-average reflected luminance of its patches, cd/m²
+/// (for a scene without a camera to sample; dark hidden surfaces pull it down).
 double solutionAdaptationLuminance(const PipelineRun& run);
 
-/// `display` with what it would take from each image taken instead from the solution:
-/// auto exposure maps the solution's log-average luminance L_avg to 0.18 (plus the
-/// user's stops), and the tone operators' world adaptation L_wa is L_avg unless given.
-/// Every frame of a walkthrough (and a baked export) is then exposed alike.
-tonemap::DisplayOptions steadyDisplay(const PipelineRun& run, tonemap::DisplayOptions display);
+/// `display` with what it would take from each image taken from `average` (cd/m²)
+/// instead: auto exposure maps it to 0.18 (plus the user's stops), and the tone
+/// operators' world adaptation L_wa is `average` unless given. Every frame of a
+/// walkthrough (and a baked export) is then exposed alike.
+tonemap::DisplayOptions steadyDisplay(double average, tonemap::DisplayOptions display);
 
 }  // namespace rayrad::app

@@ -2,6 +2,7 @@
 // in glTF's [0, 1], its absolute luminances agree with the solution's, and its camera
 // looks where the scene's does.
 #include <app/lit_mesh_export.h>
+#include <app/walkthrough.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
@@ -53,7 +54,7 @@ TEST_CASE("the lit mesh export: every patch once, colours in range, absolute lum
         "radiosity": {"max_edge": 0.1}})";
     const auto run = app::runPipeline(test::writeTempScene("export_room", json), test::quiet());
     tonemap::DisplayOptions display;
-    const auto [gltf, bin] = splitGlb(app::exportLitMesh(run, display, "export_room.json"));
+    const auto [gltf, bin] = splitGlb(app::exportLitMesh(run, display, app::solutionAdaptationLuminance(run), "export_room.json"));
 
     const auto& attributes = gltf["meshes"][0]["primitives"][0]["attributes"];
     const int indexAccessor = gltf["meshes"][0]["primitives"][0]["indices"];
