@@ -1,5 +1,8 @@
 #include <app/pipeline.h>
 
+#include <radiosity/patch_reflectance.h>
+#include <tonemap/texture_images.h>
+
 #include <app/problem_size.h>
 
 #include <app/scene_warnings.h>
@@ -30,7 +33,9 @@
 namespace rayrad::app {
 
 scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Override>& overrides) {
-    return scene::buildScene(scene::loadScene(file, overrides));
+    scene::Scene scene = scene::buildScene(scene::loadScene(file, overrides));
+    if (!scene.textures.empty()) scene.textureImages = std::make_shared<tonemap::TextureImages>(scene.textures);
+    return scene;
 }
 
 namespace {
@@ -265,6 +270,10 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     {
         Progress progress("premesh", options.quiet);
         run.mesh = radiosity::premesh(run.scene, run.scene.meshing, [&](double f) { progress.update(f); });
+    }
+    if (!run.scene.textures.empty()) {
+        run.report.begin(fmt::format("texture means ({} images)", run.scene.textures.size()));
+        radiosity::computeTexturedReflectance(run.scene, run.mesh);
     }
     // Cost warnings at once: the work they warn of may start next.
     run.warnings = costWarnings(sceneFile, run.scene, run.mesh, options.wantSensors);

@@ -82,7 +82,7 @@ class Prober {
 
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
                                        const raytrace::EmbreeScene& embree, bool checkSensors) {
-    std::vector<std::string> out;
+    std::vector<std::string> out = scene.warnings.missingTextures;
     const double diagonal = scene.diagonal();
     const double near = std::max(5e-3, 1e-4 * diagonal);  // "buried": covered within a few mm
     Prober prober(mesh, embree, diagonal);

@@ -30,7 +30,12 @@ int longestEdge(const std::vector<Vec3>& positions, const Triangle& t) {
 
 }  // namespace
 
-std::vector<Triangle> bisectToSize(std::vector<Vec3>& positions, std::vector<Triangle> triangles, double maxEdge) {
+std::vector<Triangle> bisectToSize(std::vector<Vec3>& positions, std::vector<Triangle> triangles, double maxEdge,
+                                   std::vector<uint32_t>* parents) {
+    if (parents) {
+        parents->resize(triangles.size());
+        for (size_t i = 0; i < triangles.size(); ++i) (*parents)[i] = static_cast<uint32_t>(i);
+    }
     for (;;) {
         // 1. Mark the longest edge of every triangle that is too large.
         std::map<Edge, uint32_t> marked;  // edge → its midpoint (assigned in step 3)
@@ -61,6 +66,7 @@ std::vector<Triangle> bisectToSize(std::vector<Vec3>& positions, std::vector<Tri
         // half again at its marked edge (b, c) or (c, a). Winding is kept.
         std::vector<Triangle> next;
         next.reserve(2 * triangles.size());
+        std::vector<uint32_t> nextParents;  // the input triangle each of `next` lies in
         auto midpoint = [&](uint32_t a, uint32_t b) {
             auto it = marked.find(edgeKey(a, b));
             return it == marked.end() ? UINT32_MAX : it->second;
@@ -76,19 +82,22 @@ std::vector<Triangle> bisectToSize(std::vector<Vec3>& positions, std::vector<Tri
                 next.push_back({s, q, r});
             }
         };
-        for (const Triangle& t : triangles) {
+        for (size_t i = 0; i < triangles.size(); ++i) {
+            const Triangle& t = triangles[i];
             int k = longestEdge(positions, t);
             uint32_t a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
             uint32_t m = midpoint(a, b);
             if (m == UINT32_MAX) {
                 next.push_back(t);
-                continue;
+            } else {
+                // (a, b, c) → (a, m, c) + (m, b, c); their outer edges are (c, a) and (b, c).
+                splitHalf(c, a, m);
+                splitHalf(b, c, m);
             }
-            // (a, b, c) → (a, m, c) + (m, b, c); their outer edges are (c, a) and (b, c).
-            splitHalf(c, a, m);
-            splitHalf(b, c, m);
+            if (parents) nextParents.resize(next.size(), (*parents)[i]);
         }
         triangles = std::move(next);
+        if (parents) *parents = std::move(nextParents);
     }
 }
 

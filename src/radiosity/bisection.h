@@ -14,8 +14,10 @@ namespace rayrad::radiosity {
 /// and the result is conforming (no T-junctions): a triangle is only ever split at the
 /// midpoint of its longest edge, and a marked edge is split in both triangles that share
 /// it, the neighbour's longest edge first (closure). Midpoints are appended to
-/// `positions`. Triangles sharing an edge must share its two vertex indices.
+/// `positions`. Triangles sharing an edge must share its two vertex indices. `parents`,
+/// if given, receives for each returned triangle the index of the input triangle it lies in.
 std::vector<std::array<uint32_t, 3>> bisectToSize(std::vector<Vec3>& positions,
-                                                  std::vector<std::array<uint32_t, 3>> triangles, double maxEdge);
+                                                  std::vector<std::array<uint32_t, 3>> triangles, double maxEdge,
+                                                  std::vector<uint32_t>* parents = nullptr);
 
 }  // namespace rayrad::radiosity

@@ -1,4 +1,5 @@
 #include <radiosity/clusters.h>
+#include <radiosity/patch_reflectance.h>
 
 #include <core/check.h>
 #include <scene/polygon.h>
@@ -81,7 +82,7 @@ void finishCluster(const PatchMesh& mesh, const scene::Scene& scene, Cluster& c)
         c.area += p.area;
         c.centroid += p.area * p.centroid;
         n += p.area * p.normal;
-        c.meanReflectance += p.area * scene.materials[p.material].reflectance;
+        c.meanReflectance += p.area * patchReflectance(scene, mesh, i);
     }
     c.centroid /= c.area;
     c.meanReflectance /= c.area;

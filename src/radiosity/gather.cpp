@@ -1,4 +1,5 @@
 #include <radiosity/gather.h>
+#include <radiosity/patch_reflectance.h>
 
 #include <radiosity/form_factor.h>
 #include <radiosity/patch_transfer.h>
@@ -188,7 +189,7 @@ void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePo
         return;
     }
     // Midpoint m[k] of edge (k, k+1): L = ρ (E_dir + E_ind) / π, E_dir interpolated, E_ind gathered.
-    const Rgb& rho = m_scene.materials[m_mesh.patches[patch].material].reflectance;
+    const Rgb rho = patchReflectance(m_scene, m_mesh, patch);
     std::array<RefinePoint, 3> m;
     double worst = 0;  // largest relative difference from the linear interpolation
     for (int k = 0; k < 3; ++k) {
@@ -282,7 +283,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 double r = kNearDiameters * p.diameter;
                 Vec3 d = p.centroid - x;
                 if (glm::dot(d, d) > r * r) continue;
-                const Rgb& rho = m_scene.materials[p.material].reflectance;
+                const Rgb rho = patchReflectance(m_scene, m_mesh, j);
                 if (rho == Rgb(0.0)) continue;
                 const Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
                 const double F = formFactorToPolygon(x, n, v, 3, p.normal);
@@ -309,7 +310,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         for (const Candidate& e : candidates) {
             const uint32_t j = e.patch;
             const Patch& p = m_mesh.patches[j];
-            const Rgb& rho = m_scene.materials[p.material].reflectance;
+            const Rgb rho = patchReflectance(m_scene, m_mesh, j);
             const bool detailed = e.share >= detailFrom;
             std::array<RefinePoint, 3> corners;
             for (int k = 0; k < 3; ++k) {

@@ -68,13 +68,30 @@ double bisectedCount(const Vec3& a, const Vec3& b, const Vec3& c, double edge) {
     return std::max({1.0, area / (0.3 * edge * edge), std::ceil(longest / edge)});
 }
 
-void addPatch(PatchMesh& mesh, uint32_t a, uint32_t b, uint32_t c, int material, int group) {
+using Uv3 = std::array<glm::dvec2, 3>;
+
+/// Adds the triangle unless it has no area; `uv`: its corners' texture coordinates, kept
+/// in mesh.cornerUv when the scene has textures (else null).
+void addPatch(PatchMesh& mesh, uint32_t a, uint32_t b, uint32_t c, int material, int group, const Uv3* uv = nullptr) {
     Patch p;
     p.v = {a, b, c};
     p.material = material;
     p.group = group;
     computeGeometry(mesh, p);
-    if (p.area > 0) mesh.patches.push_back(p);
+    if (!(p.area > 0)) return;
+    mesh.patches.push_back(p);
+    if (uv)
+        for (const auto& t : *uv) mesh.cornerUv.emplace_back(t);
+}
+
+/// The texture coordinates at p of the triangle `corners` whose corners have `uv`
+/// (barycentric interpolation; p on the triangle's plane).
+glm::dvec2 uvAt(const std::array<Vec3, 3>& corners, const Uv3& uv, const Vec3& p) {
+    const Vec3 e1 = corners[1] - corners[0], e2 = corners[2] - corners[0], d = p - corners[0];
+    const double a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2);
+    const double du = glm::dot(d, e1), dv = glm::dot(d, e2), det = a * c - b * b;
+    const double s = det > 0 ? (c * du - b * dv) / det : 0, t = det > 0 ? (a * dv - b * du) / det : 0;
+    return (1 - s - t) * uv[0] + s * uv[1] + t * uv[2];
 }
 
 /// Grid-line parameters in [0, 1] for one direction of length `length` (m): cells of at
@@ -96,7 +113,8 @@ std::vector<double> gridLines(double length, double cell, const std::vector<Cont
 /// touching part of a contact line are made once for each side: a patch never reaches
 /// under a wall, and vertex values never average the two sides of it.
 void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int group,
-              const scene::MeshingOptions& options, double edge, const QuadContacts& contacts, double tolerance) {
+              const scene::MeshingOptions& options, double edge, const QuadContacts& contacts, double tolerance,
+              bool withUv, const std::vector<glm::dvec2>& quadUv) {
     const auto [lu, lv] = quadSides(q);
     const auto [cu, cv] = quadCells(q, options, edge);
     int nu = static_cast<int>(cu), nv = static_cast<int>(cv);  // the app's checkPatchCount() keeps these small
@@ -118,6 +136,7 @@ void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int gro
     // Vertex (i, j) as seen from the cell on side (si, sj) of its grid lines (1: the cell
     // lies at higher parameters); one vertex unless a contact line touches there.
     std::map<std::array<int, 4>, uint32_t> ids;
+    std::map<uint32_t, glm::dvec2> st;  // each vertex's (s, t) on the quad
     auto at = [&](int i, int j, int si, int sj) {
         if (!onS[i] || !onS[i]->covers(T[j], sv)) si = 0;
         if (!onT[j] || !onT[j]->covers(S[i], su)) sj = 0;
@@ -125,18 +144,32 @@ void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int gro
         if (added) {
             double s = S[i], t = T[j];
             mesh.vertices.push_back((1 - s) * (1 - t) * q[0] + s * (1 - t) * q[1] + s * t * q[2] + (1 - s) * t * q[3]);
+            st.emplace(it->second, glm::dvec2(s, t));
         }
         return it->second;
+    };
+    // Texture coordinates: bilinear in (s, t) between the quad's corner coordinates.
+    auto patch = [&](uint32_t a, uint32_t b, uint32_t c) {
+        if (!withUv) return addPatch(mesh, a, b, c, material, group);
+        Uv3 uv{};
+        if (quadUv.size() == 4) {
+            const uint32_t v[3] = {a, b, c};
+            for (int k = 0; k < 3; ++k) {
+                const double s = st.at(v[k]).x, t = st.at(v[k]).y;
+                uv[k] = (1 - s) * (1 - t) * quadUv[0] + s * (1 - t) * quadUv[1] + s * t * quadUv[2] + (1 - s) * t * quadUv[3];
+            }
+        }
+        addPatch(mesh, a, b, c, material, group, &uv);
     };
     for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i) {
             uint32_t a = at(i, j, 1, 1), b = at(i + 1, j, 0, 1), c = at(i + 1, j + 1, 0, 0), d = at(i, j + 1, 1, 0);
             if (((i + j) & 1) == 0) {
-                addPatch(mesh, a, b, c, material, group);
-                addPatch(mesh, a, c, d, material, group);
+                patch(a, b, c);
+                patch(a, c, d);
             } else {
-                addPatch(mesh, a, b, d, material, group);
-                addPatch(mesh, b, c, d, material, group);
+                patch(a, b, d);
+                patch(b, c, d);
             }
         }
 }
@@ -193,29 +226,53 @@ std::vector<std::array<uint32_t, 3>> latticeTriangles(std::vector<Vec3>& positio
 /// Corners stay as the input indexes them: a mesh that splits its vertices along a
 /// crease keeps the two sides apart, so vertex values never average across it.
 void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris,
-                   int group, const scene::MeshingOptions& options, double edge) {
+                   int group, const scene::MeshingOptions& options, double edge, bool withUv = false,
+                   const std::vector<Uv3>& trisUv = {}) {
     std::vector<Vec3> positions = g.positions;
     const int k = options.trianglesPerSurface > 0 ? latticeFactor(options, tris.size()) : 0;
-    const auto triangles = k > 0 ? latticeTriangles(positions, tris, k) : bisectToSize(positions, tris, edge);
+    std::vector<uint32_t> parents;  // the input triangle each output triangle lies in
+    const auto triangles = k > 0 ? latticeTriangles(positions, tris, k) : bisectToSize(positions, tris, edge, &parents);
+    if (k > 0)
+        for (size_t t = 0; t < triangles.size(); ++t) parents.push_back(static_cast<uint32_t>(t / (size_t(k) * k)));
     std::vector<uint32_t> id(positions.size(), UINT32_MAX);  // local → mesh vertex, made when used
     auto meshVertex = [&](uint32_t v) {
         if (id[v] == UINT32_MAX) id[v] = static_cast<uint32_t>(mesh.vertices.size()), mesh.vertices.push_back(positions[v]);
         return id[v];
     };
-    for (const auto& t : triangles) addPatch(mesh, meshVertex(t[0]), meshVertex(t[1]), meshVertex(t[2]), g.material, group);
-}
-
-/// A group's polygons as triangles (polygons of more than three corners triangulated).
-std::vector<std::array<uint32_t, 3>> groupTriangles(const SurfaceGroup& g) {
-    std::vector<std::array<uint32_t, 3>> tris;
-    for (const auto& poly : g.polygons) {
-        if (poly.size() == 3) {
-            tris.push_back({poly[0], poly[1], poly[2]});
+    for (size_t n = 0; n < triangles.size(); ++n) {
+        const auto& t = triangles[n];
+        if (!withUv) {
+            addPatch(mesh, meshVertex(t[0]), meshVertex(t[1]), meshVertex(t[2]), g.material, group);
             continue;
         }
-        std::vector<Vec3> v;
-        for (uint32_t i : poly) v.push_back(g.positions[i]);
-        for (const auto& t : scene::triangulate(v)) tris.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});
+        Uv3 uv{};
+        if (!trisUv.empty()) {  // each corner located in the input triangle it came from
+            const auto& parent = tris[parents[n]];
+            const std::array<Vec3, 3> corners = {g.positions[parent[0]], g.positions[parent[1]], g.positions[parent[2]]};
+            for (int c = 0; c < 3; ++c) uv[c] = uvAt(corners, trisUv[parents[n]], positions[t[c]]);
+        }
+        addPatch(mesh, meshVertex(t[0]), meshVertex(t[1]), meshVertex(t[2]), g.material, group, &uv);
+    }
+}
+
+/// A group's polygons as triangles (polygons of more than three corners triangulated);
+/// `uvs`, if given, receives each triangle's corner texture coordinates (when the group has them).
+std::vector<std::array<uint32_t, 3>> groupTriangles(const SurfaceGroup& g, std::vector<Uv3>* uvs = nullptr) {
+    std::vector<std::array<uint32_t, 3>> tris;
+    const bool withUv = uvs && g.polygonUvs.size() == g.polygons.size();
+    for (size_t n = 0; n < g.polygons.size(); ++n) {
+        const auto& poly = g.polygons[n];
+        std::vector<std::array<int, 3>> corners = {{0, 1, 2}};
+        if (poly.size() != 3) {
+            std::vector<Vec3> v;
+            for (uint32_t i : poly) v.push_back(g.positions[i]);
+            corners.clear();
+            for (const auto& t : scene::triangulate(v)) corners.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+        }
+        for (const auto& c : corners) {
+            tris.push_back({poly[c[0]], poly[c[1]], poly[c[2]]});
+            if (withUv) uvs->push_back({g.polygonUvs[n][c[0]], g.polygonUvs[n][c[1]], g.polygonUvs[n][c[2]]});
+        }
     }
     return tris;
 }
@@ -259,6 +316,7 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
     mesh.vertices.reserve(static_cast<size_t>(0.6 * estimate) + 16);
     const auto bounds = groupBounds(scene);
     const double tolerance = kContactTolerance * scene.diagonal();
+    const bool withUv = !scene.textures.empty();  // then every patch has corner coordinates (0 where untextured)
     for (size_t gi = 0; gi < scene.groups.size(); ++gi) {
         if (onProgress) onProgress(static_cast<double>(gi) / scene.groups.size());
         const SurfaceGroup& g = scene.groups[gi];
@@ -268,12 +326,13 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
             std::vector<Vec3> q;
             for (uint32_t i : g.polygons[0]) q.push_back(g.positions[i]);
             meshQuad(mesh, q, g.material, group, options, edge, findContacts(scene, gi, q, bounds, tolerance),
-                     tolerance);
+                     tolerance, withUv, g.polygonUvs.empty() ? std::vector<glm::dvec2>{} : g.polygonUvs[0]);
             continue;
         }
-        const auto tris = groupTriangles(g);
+        std::vector<Uv3> trisUv;
+        const auto tris = groupTriangles(g, withUv ? &trisUv : nullptr);
         if (options.premesh) {
-            meshTriangles(mesh, g, tris, group, options, edge);
+            meshTriangles(mesh, g, tris, group, options, edge, withUv, trisUv);
             continue;
         }
         // Premeshing off: the input triangles are the patches, shape as given.
@@ -283,7 +342,11 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
             if (added) mesh.vertices.push_back(g.positions[a]);
             return it->second;
         };
-        for (const auto& t : tris) addPatch(mesh, id(t[0]), id(t[1]), id(t[2]), g.material, group);
+        for (size_t n = 0; n < tris.size(); ++n) {
+            const auto& t = tris[n];
+            const Uv3 uv = trisUv.empty() ? Uv3{} : trisUv[n];
+            addPatch(mesh, id(t[0]), id(t[1]), id(t[2]), g.material, group, withUv ? &uv : nullptr);
+        }
     }
     return mesh;
 }

@@ -25,6 +25,13 @@ struct Patch {
 struct PatchMesh {
     std::vector<Vec3> vertices;
     std::vector<Patch> patches;
+    /// Texture coordinates (v up) of each patch's corners, 3·i + k; empty when the scene
+    /// has no textures ((0, 0) for the patches of untextured surfaces).
+    std::vector<glm::vec2> cornerUv;
+    /// Each patch's reflectance averaged over its texture, ρ · mean T (textureReflectance()
+    /// fills it); empty when the scene has no textures. The radiosity uses it; the ray
+    /// tracer uses ρ · T at the hit, whose mean over the patch is this.
+    std::vector<RgbF> texturedReflectance;
 
     const Vec3& corner(const Patch& p, int k) const { return vertices[p.v[k]]; }
     /// The point with barycentric coordinates (1-u-v, u, v) on patch p.

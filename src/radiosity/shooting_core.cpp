@@ -1,4 +1,5 @@
 #include <radiosity/shooting_core.h>
+#include <radiosity/patch_reflectance.h>
 
 #include <radiosity/cluster_transfer.h>
 #include <radiosity/form_factor.h>
@@ -36,8 +37,9 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(solver),
       m_clusterOptions(clusters) {
     m_reflectance.reserve(mesh.patches.size());
-    for (const auto& p : mesh.patches) {
-        m_reflectance.push_back(fromRgb<V>(scene.materials[p.material].reflectance));
+    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+        const Patch& p = mesh.patches[i];
+        m_reflectance.push_back(fromRgb<V>(patchReflectance(scene, mesh, i)));
         m_meanReflectance += m_reflectance.back() * p.area;
         m_area += p.area;
     }

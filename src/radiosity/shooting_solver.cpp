@@ -1,4 +1,5 @@
 #include <radiosity/shooting_solver.h>
+#include <radiosity/patch_reflectance.h>
 
 #include <radiosity/shooting_core.h>
 
@@ -7,10 +8,12 @@
 
 namespace rayrad::radiosity {
 
-bool isGreyScene(const scene::Scene& scene) {
+bool isGreyScene(const scene::Scene& scene, const PatchMesh& mesh) {
     auto grey = [](const Rgb& c) { return c.r == c.g && c.g == c.b; };
     for (const auto& m : scene.materials)
         if (!grey(m.reflectance) || !grey(m.emission) || !grey(m.specular)) return false;
+    for (const auto& rho : mesh.texturedReflectance)  // a grey multiplier of a coloured texture
+        if (!grey(Rgb(rho))) return false;
     for (const auto& l : scene.lights)
         if (!grey(l.intensity)) return false;
     return true;
@@ -19,7 +22,7 @@ bool isGreyScene(const scene::Scene& scene) {
 ShootingSolver::ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                const Visibility& vis, const scene::SolverOptions& solver,
                                const scene::ClusterOptions& clusters)
-    : m_singleChannel(solver.oneChannelWhenGrey && isGreyScene(scene)) {
+    : m_singleChannel(solver.oneChannelWhenGrey && isGreyScene(scene, mesh)) {
     if (m_singleChannel)
         m_core = std::make_unique<ShootingCore<double>>(scene, mesh, clustering, vis, solver, clusters);
     else
@@ -77,7 +80,7 @@ EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, co
     b.emitted = emittedFlux;
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];
-        const Rgb& rho = scene.materials[p.material].reflectance;
+        const Rgb rho = patchReflectance(scene, mesh, i);
         Rgb e = s.directMean[i] + (s.indirect.empty() ? Rgb(0.0) : s.indirect[i]);
         b.absorbed += luminance((Rgb(1.0) - rho) * e) * p.area;
         b.directReceived += luminance(s.directMean[i]) * p.area;

@@ -100,7 +100,7 @@ class ShootingSolver {
 
 /// True when every material's reflectance and every light's colour is grey, so the
 /// light in the scene is grey everywhere and one channel describes it.
-bool isGreyScene(const scene::Scene& scene);
+bool isGreyScene(const scene::Scene& scene, const PatchMesh& mesh);
 
 /// Energy accounting in lm: what the lights emit, what surfaces absorbed
 /// Σ (1 − ρ) (Ē_dir + E_ind) A, what is still unshot, and what the direct pass delivered

@@ -35,7 +35,8 @@ struct RadiositySolution {
 
     /// Reflected (non-emitted) luminance of patch i: ρ (E_direct + E_indirect) / π.
     Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const {
-        const Rgb& rho = scene.materials[mesh.patches[i].material].reflectance;
+        const Rgb rho = mesh.texturedReflectance.empty() ? scene.materials[mesh.patches[i].material].reflectance
+                                                         : Rgb(mesh.texturedReflectance[i]);
         return rho * (directMean[i] + indirect[i]) / kPi;
     }
 };

@@ -113,7 +113,9 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     Hash m;
     for (const auto& mat : scene.materials)
         m << mat.name << static_cast<int>(mat.kind) << Vec3(mat.reflectance) << Vec3(mat.emission) << Vec3(mat.specular)
-          << mat.ior << mat.twoSided;
+          << mat.ior << mat.twoSided << mat.texture;
+    // A texture changes the solution through the patches' mean reflectances.
+    for (const auto& rho : mesh.texturedReflectance) m << Vec3(rho);
     f.materials = m.value();
 
     Hash l;

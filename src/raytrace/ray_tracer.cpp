@@ -1,5 +1,7 @@
 #include <raytrace/ray_tracer.h>
 
+#include <radiosity/patch_reflectance.h>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -76,12 +78,14 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     Vec3 x = mesh.pointAt(p, h.u, h.v);
     Rgb L = m.emission;
     if (m.reflectance == Rgb(0.0)) return L;
+    // ρ at the hit: the texture's value here, whose mean over the patch the radiosity used.
+    const Rgb rho = radiosity::reflectanceAt(scene, mesh, h.patch, h.u, h.v);
     // With virtual lights; the weakest real lights shadow-tested only while they matter.
     Rgb direct = lights.illuminanceForDisplay(x, p.normal, embree, areaLightSamples, &rng, scene.render.directThreshold);
     Rgb indirect = solution.vertexIndirect.empty()
                        ? Rgb(0.0)
                        : radiosity::interpolateIndirect(mesh, solution, h.patch, h.u, h.v);
-    return L + m.reflectance * (direct + indirect) / kPi;  // L = ρ E / π
+    return L + rho * (direct + indirect) / kPi;  // L = ρ E / π
 }
 
 double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMesh& mesh,

@@ -149,7 +149,7 @@ class GltfReader {
         const std::string name = fmt::format("{} (accessor {})", what, accessorIndex);
         if (a.sparse.isSparse) fail(name + ": sparse accessors are not supported");
         if (a.type != wantType) fail(name + ": wrong element type");
-        const size_t components = wantType == TINYGLTF_TYPE_VEC3 ? 3 : 1;
+        const size_t components = wantType == TINYGLTF_TYPE_VEC3 ? 3 : wantType == TINYGLTF_TYPE_VEC2 ? 2 : 1;
         const size_t elementSize = componentSize(a.componentType) * components;
         if (elementSize == 0) fail(fmt::format("{}: unknown component type {}", name, a.componentType));
         if (a.bufferView < 0 || a.bufferView >= static_cast<int>(m_model.bufferViews.size()))
@@ -208,6 +208,22 @@ class GltfReader {
             if (!isFinite(p)) fail(fmt::format("{}: vertex {} is not finite", what, v));
             vertex[v] = m_builder.vertexAt(p);
         }
+        // Texture coordinates (float; glTF's t runs down the image, rayrad's v up it).
+        std::vector<glm::dvec2> uv;
+        auto texcoord = primitive.attributes.find("TEXCOORD_0");
+        if (texcoord != primitive.attributes.end()) {
+            const ElementView t = elements(texcoord->second, TINYGLTF_TYPE_VEC2, what + " TEXCOORD_0");
+            if (t.count != points.count) fail(what + ": TEXCOORD_0 and POSITION differ in count");
+            if (t.count > 0 && t.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+                fail(what + ": only float TEXCOORD_0 is read");
+            uv.resize(t.count);
+            for (size_t v = 0; v < t.count; ++v) {
+                float st[2];
+                std::memcpy(st, t.data + v * t.stride, sizeof st);
+                if (!std::isfinite(st[0]) || !std::isfinite(st[1])) fail(fmt::format("{}: texture coordinate {} is not finite", what, v));
+                uv[v] = glm::dvec2(st[0], 1.0 - st[1]);
+            }
+        }
         // The corner list: the indices, or 0 … n−1 without them.
         std::vector<uint32_t> corners;
         if (primitive.indices >= 0) {
@@ -246,7 +262,11 @@ class GltfReader {
                 continue;
             }
             for (int k = 0; k < 3; ++k) face[k] = vertex[c[k]];
-            m_builder.addFace(face, material);
+            if (uv.empty()) {
+                m_builder.addFace(face, material);
+            } else {
+                m_builder.addFace(face, material, {uv[c[0]], uv[c[1]], uv[c[2]]});
+            }
         }
     }
 

@@ -31,6 +31,12 @@ class JsonObject {
 
     const std::string& path() const { return m_path; }
     bool has(const std::string& key) const;
+    /// The value at `key` without reading it (nullptr when absent): for keys of more than
+    /// one form.
+    const nlohmann::json* peek(const std::string& key) const {
+        auto it = m_json.find(key);
+        return it == m_json.end() ? nullptr : &*it;
+    }
     std::string childPath(const std::string& key) const { return m_path + "/" + key; }
 
     /// A finite number; reports and returns `fallback` on a wrong type.

@@ -14,19 +14,25 @@ uint32_t MeshBuilder::vertexAt(const Vec3& p) {
     return id;
 }
 
-void MeshBuilder::addFace(const std::vector<uint32_t>& face, int material) {
+void MeshBuilder::addFace(const std::vector<uint32_t>& face, int material, const std::vector<glm::dvec2>& uvs) {
     if (face.size() == 3) {
-        add(face[0], face[1], face[2], material);
+        add(face, uvs, 0, 1, 2, material);
         return;
     }
     m_corners.clear();
     for (uint32_t i : face) m_corners.push_back(m_out.positions[i]);
-    for (const auto& t : triangulate(m_corners)) add(face[t[0]], face[t[1]], face[t[2]], material);
+    for (const auto& t : triangulate(m_corners)) add(face, uvs, t[0], t[1], t[2], material);
 }
 
-void MeshBuilder::add(uint32_t a, uint32_t b, uint32_t c, int material) {
-    m_out.triangles.push_back({a, b, c});
+/// Corners a, b, c of the face.
+void MeshBuilder::add(const std::vector<uint32_t>& face, const std::vector<glm::dvec2>& uvs, int a, int b, int c,
+                      int material) {
+    m_out.triangles.push_back({face[a], face[b], face[c]});
     m_out.triangleMaterial.push_back(material);
+    if (uvs.size() == face.size()) {
+        m_out.triangleUvs.resize(m_out.triangles.size() - 1);  // triangles before without coordinates: (0, 0)
+        m_out.triangleUvs.push_back({uvs[a], uvs[b], uvs[c]});
+    }
 }
 
 }  // namespace rayrad::scene

@@ -19,11 +19,12 @@ class MeshBuilder {
     uint32_t vertexAt(const Vec3& p);
 
     /// A face of 3 or more vertex indices (into the positions, checked by the caller);
-    /// `material` indexes ImportedMesh::materials, or −1.
-    void addFace(const std::vector<uint32_t>& face, int material);
+    /// `material` indexes ImportedMesh::materials, or −1; `uvs`: the texture coordinates
+    /// of the face's corners (empty: the file gives none).
+    void addFace(const std::vector<uint32_t>& face, int material, const std::vector<glm::dvec2>& uvs = {});
 
   private:
-    void add(uint32_t a, uint32_t b, uint32_t c, int material);
+    void add(const std::vector<uint32_t>& face, const std::vector<glm::dvec2>& uvs, int a, int b, int c, int material);
 
     ImportedMesh& m_out;
     std::map<std::tuple<double, double, double>, uint32_t> m_vertexIndex;

@@ -102,6 +102,7 @@ class MeshCollector {
         int material = -1;
         if (mesh.mMaterialIndex < m_materialOf.size()) material = m_materialOf[mesh.mMaterialIndex];
         std::vector<uint32_t> face;
+        std::vector<glm::dvec2> uvs;
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& in = mesh.mFaces[f];
             bool valid = in.mNumIndices >= 3 && in.mIndices;
@@ -111,8 +112,17 @@ class MeshCollector {
                 continue;
             }
             face.clear();
-            for (unsigned k = 0; k < in.mNumIndices; ++k) face.push_back(index[in.mIndices[k]]);
-            m_builder.addFace(face, material);
+            uvs.clear();
+            for (unsigned k = 0; k < in.mNumIndices; ++k) {
+                face.push_back(index[in.mIndices[k]]);
+                if (mesh.mTextureCoords[0]) {
+                    const aiVector3D& t = mesh.mTextureCoords[0][in.mIndices[k]];
+                    if (!std::isfinite(t.x) || !std::isfinite(t.y))
+                        throw InputError(m_prefix + fmt::format("texture coordinate {} is not finite", in.mIndices[k]));
+                    uvs.emplace_back(t.x, t.y);
+                }
+            }
+            m_builder.addFace(face, material, uvs);
         }
     }
 

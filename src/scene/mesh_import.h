@@ -3,6 +3,7 @@
 
 #include <core/math.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,7 @@ struct ImportedMaterial {
     bool hasReflectance = false;
     Rgb reflectance{0.0};        ///< OBJ Kd, glTF baseColorFactor (linear RGB)
     Rgb emission{0.0};           ///< OBJ Ke, glTF emissiveFactor × emissive strength, read as cd/m²
-    std::string diffuseTexture;  ///< OBJ map_Kd, glTF baseColorTexture: noted, not used yet
+    std::string diffuseTexture;  ///< OBJ map_Kd, glTF baseColorTexture: the image file, relative to the mesh file
 };
 
 /// A punctual light of the file (glTF KHR_lights_punctual): point or spot, in candela.
@@ -34,6 +35,9 @@ struct ImportedMesh {
     std::vector<Vec3> positions;
     std::vector<std::vector<uint32_t>> triangles;
     std::vector<int> triangleMaterial;     ///< index into materials, or −1 (the file gives none)
+    /// Texture coordinates of each triangle's corners; shorter than `triangles` (down to
+    /// empty) when the last triangles have none.
+    std::vector<std::array<glm::dvec2, 3>> triangleUvs;
     std::vector<ImportedMaterial> materials;
     std::vector<ImportedLight> lights;
     size_t droppedFaces = 0;               ///< points, lines, faces with bad indices

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <core/math.h>
+#include <core/texture_source.h>
 #include <scene/photometry.h>
 #include <scene/scene_desc.h>
 #include <scene/settings.h>
@@ -28,6 +29,9 @@ struct Material {
     /// reversed surface (the ray tracer shows whichever side's front faces the ray).
     bool twoSided = false;
     std::string lightGroup;  ///< emissive: the light group it belongs to ("" none)
+    /// Diffuse: index into Scene::textures (−1 none). Then ρ(x) = reflectance · T(u, v),
+    /// clamped to kMaxFileReflectance: `reflectance` is the texture's multiplier.
+    int texture = -1;
     bool isEmissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     bool isDiffuse() const { return kind == SurfaceKind::Diffuse; }
 };
@@ -50,6 +54,9 @@ struct Mirror {
 struct SurfaceGroup {
     std::vector<Vec3> positions;                      ///< world space, metres
     std::vector<std::vector<uint32_t>> polygons;      ///< indices, CCW seen from the front
+    /// Texture coordinates of each polygon's corners, in its order (empty: none); a mesh's
+    /// seams keep their own coordinates on each side.
+    std::vector<std::vector<glm::dvec2>> polygonUvs;
     int material = 0;
     std::string where;                                ///< JSON pointer of the object
 };
@@ -119,11 +126,16 @@ struct BuildWarnings {
     int degeneratePolygons = 0;
     int droppedMeshFaces = 0;          ///< points, lines and faces with bad indices in mesh files
     int clampedFileReflectances = 0;   ///< mesh-file materials whose reflectance was clamped
+    std::vector<std::string> missingTextures;  ///< mesh-file materials whose image is missing, one line each
 };
 
 struct Scene {
     std::string file;
     std::vector<Material> materials;
+    std::vector<std::string> textures;  ///< image files of the materials' textures (Material::texture)
+    /// The texture images, opened (the app opens them after building: scene holds no image
+    /// library); null when the scene has none.
+    std::shared_ptr<const TextureSource> textureImages;
     std::vector<SurfaceGroup> groups;
     std::vector<PointLight> lights;
     std::vector<Mirror> mirrors;    ///< every polygon of every mirror surface

@@ -2,6 +2,7 @@
 #include <scene/scene.h>
 
 #include <core/input_error.h>
+#include <core/input_file.h>
 #include <scene/camera_path.h>
 #include <scene/mesh_import.h>
 #include <scene/polygon.h>
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <tuple>
@@ -128,6 +130,7 @@ class Builder {
             mat.twoSided = m.twoSided;
             mat.lightGroup = m.lightGroup;
             if (m.emissive && m.luminance > 0) mat.emission = m.color / luminance(m.color) * m.luminance;
+            if (!m.texture.empty()) mat.texture = textureIndex(s, m.resolvedTexture, m.where + "/texture");
             s.materials.push_back(mat);
         }
         for (const auto& o : m_desc.objects)
@@ -156,7 +159,29 @@ class Builder {
         throw InputError(placeMessage(m_desc.file, where, what));
     }
 
-    void addPolygonGroup(Scene& s, std::vector<Vec3> v, int material, const std::string& where, bool isQuad) {
+    /// The image file's index in s.textures, added once; the file must be readable.
+    int textureIndex(Scene& s, const std::string& file, const std::string& where) {
+        const auto it = std::find(s.textures.begin(), s.textures.end(), file);
+        if (it != s.textures.end()) return static_cast<int>(it - s.textures.begin());
+        if (const std::string problem = inputFileProblem(file, "image file"); !problem.empty())
+            fail(where, file + ": " + problem);
+        s.textures.push_back(file);
+        return static_cast<int>(s.textures.size()) - 1;
+    }
+
+    /// A textured quad's corner coordinates: corner 0 at the image's bottom left, 1 bottom
+    /// right, 3 top left, the image repeating `repeat` times; reversed with the corners.
+    std::vector<glm::dvec2> quadUvs(int material, bool reversed) const {
+        const glm::dvec2 r = m_desc.materials[static_cast<size_t>(material)].textureRepeat;
+        std::vector<glm::dvec2> uvs = {{0, 0}, {r.x, 0}, {r.x, r.y}, {0, r.y}};
+        if (reversed) std::reverse(uvs.begin(), uvs.end());
+        return uvs;
+    }
+
+    bool textured(const Scene& s, int material) const { return material >= 0 && s.materials[material].texture >= 0; }
+
+    void addPolygonGroup(Scene& s, std::vector<Vec3> v, int material, const std::string& where, bool isQuad,
+                         std::vector<glm::dvec2> uvs = {}) {
         double area = polygonArea(v);
         double size = 0;
         for (const auto& p : v) size = std::max(size, glm::length(p - v[0]));
@@ -172,6 +197,7 @@ class Builder {
         g.positions = std::move(v);
         g.polygons.push_back({});
         for (uint32_t i = 0; i < g.positions.size(); ++i) g.polygons[0].push_back(i);
+        if (!uvs.empty()) g.polygonUvs.push_back(std::move(uvs));
         g.material = material;
         g.where = where;
         s.groups.push_back(std::move(g));
@@ -189,14 +215,19 @@ class Builder {
             (o.kind == ObjectKind::Sphere || o.kind == ObjectKind::Mesh))
             fail(o.where + "/material", "a mirror must be a quad, polygon or box (the image method needs a few planes, "
                                         "not a curved surface)");
+        if (textured(s, material) && (o.kind == ObjectKind::Polygon || o.kind == ObjectKind::Sphere))
+            fail(o.where + "/material", "a texture is mapped onto quads, boxes and meshes with texture coordinates, "
+                                        "not onto a polygon or a sphere");
         switch (o.kind) {
             case ObjectKind::Quad:
             case ObjectKind::Polygon:
-                addPolygonGroup(s, place(o.vertices, false), material, o.where, o.kind == ObjectKind::Quad);
+                addPolygonGroup(s, place(o.vertices, false), material, o.where, o.kind == ObjectKind::Quad,
+                                textured(s, material) ? quadUvs(material, mirrored) : std::vector<glm::dvec2>{});
                 break;
             case ObjectKind::Box:
                 for (auto& face : boxFaces(o.boxMin, o.boxMax))
-                    addPolygonGroup(s, place(face, o.inward), material, o.where, true);
+                    addPolygonGroup(s, place(face, o.inward), material, o.where, true,
+                                    textured(s, material) ? quadUvs(material, o.inward != mirrored) : std::vector<glm::dvec2>{});
                 break;
             case ObjectKind::Sphere: {
                 SurfaceGroup g = cubeSphere(o.center, o.radius, o.subdivisions);
@@ -216,7 +247,7 @@ class Builder {
     void addMesh(Scene& s, const ObjectDesc& o, int material, bool mirrored) {
         ImportedMesh mesh = importMesh(o.resolvedFile, m_desc.file, o.where);
         if (mesh.droppedFaces > 0) s.warnings.droppedMeshFaces += static_cast<int>(mesh.droppedFaces);
-        std::map<int, std::vector<std::vector<uint32_t>>> byMaterial;  // scene material → triangles
+        std::map<int, SurfaceGroup> byMaterial;  // scene material → its triangles
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             int m = material;
             if (m < 0) {
@@ -226,12 +257,17 @@ class Builder {
                                                 "\"material\"");
                 m = fileMaterial(s, o, mesh.materials[fileIndex]);
             }
-            byMaterial[m].push_back(mesh.triangles[t]);
+            SurfaceGroup& g = byMaterial[m];
+            g.polygons.push_back(mesh.triangles[t]);
+            if (textured(s, m)) {
+                if (t >= mesh.triangleUvs.size())
+                    fail(o.where + "/file", "material \"" + s.materials[m].name + "\" has a texture, but the mesh gives its "
+                                            "triangles no texture coordinates");
+                g.polygonUvs.emplace_back(mesh.triangleUvs[t].begin(), mesh.triangleUvs[t].end());
+            }
         }
-        for (auto& [m, triangles] : byMaterial) {
-            SurfaceGroup g;
+        for (auto& [m, g] : byMaterial) {
             g.positions = mesh.positions;
-            g.polygons = std::move(triangles);
             finishMeshGroup(s, std::move(g), o.transform, mirrored, m, o.where, o.keepAbove);
         }
         for (const auto& l : mesh.lights) {
@@ -258,12 +294,31 @@ class Builder {
         Material mat;
         mat.name = name;
         mat.kind = SurfaceKind::Diffuse;
-        // Reflectance must stay below 1 for the radiosity to converge; files often say 1.
-        for (int c = 0; c < 3; ++c) mat.reflectance[c] = std::clamp(m.reflectance[c], 0.0, kMaxFileReflectance);
-        if (m.reflectance.r > kMaxFileReflectance || m.reflectance.g > kMaxFileReflectance ||
-            m.reflectance.b > kMaxFileReflectance)
-            ++s.warnings.clampedFileReflectances;
         mat.emission = m.emission;
+        std::string textureFile;
+        if (!m.diffuseTexture.empty()) {
+            const std::filesystem::path t(m.diffuseTexture);
+            textureFile = t.is_absolute() ? t.string() : (std::filesystem::path(o.resolvedFile).parent_path() / t).string();
+            // Models often arrive without their images: a missing one is a warning, and the
+            // material keeps its plain colour.
+            if (const std::string problem = inputFileProblem(textureFile, "image file"); !problem.empty()) {
+                s.warnings.missingTextures.push_back(fmt::format("{}/file: material \"{}\": texture {}: {} (its colour is used)",
+                                                                 o.where, m.name, textureFile, problem));
+                textureFile.clear();
+            }
+        }
+        if (!textureFile.empty()) {
+            // The file's colour multiplies the texture (OBJ Kd × map_Kd, glTF baseColorFactor
+            // × baseColorTexture); the product is clamped where it is looked up.
+            mat.texture = textureIndex(s, textureFile, o.where + "/file (material \"" + m.name + "\")");
+            for (int c = 0; c < 3; ++c) mat.reflectance[c] = m.hasReflectance ? std::clamp(m.reflectance[c], 0.0, 1.0) : 1.0;
+        } else {
+            // Reflectance must stay below 1 for the radiosity to converge; files often say 1.
+            for (int c = 0; c < 3; ++c) mat.reflectance[c] = std::clamp(m.reflectance[c], 0.0, kMaxFileReflectance);
+            if (m.reflectance.r > kMaxFileReflectance || m.reflectance.g > kMaxFileReflectance ||
+                m.reflectance.b > kMaxFileReflectance)
+                ++s.warnings.clampedFileReflectances;
+        }
         int index = static_cast<int>(s.materials.size());
         s.materials.push_back(mat);
         m_fileMaterials.emplace(name, index);
@@ -284,10 +339,13 @@ class Builder {
             return true;
         };
         std::vector<std::vector<uint32_t>> kept;
+        std::vector<std::vector<glm::dvec2>> keptUvs;
         std::map<std::array<uint32_t, 3>, int> seen;
-        for (auto t : g.polygons) {
+        for (size_t k = 0; k < g.polygons.size(); ++k) {
+            auto t = g.polygons[k];
             if (!above(t)) continue;
-            if (reverse) std::reverse(t.begin(), t.end());
+            std::vector<glm::dvec2> uvs = g.polygonUvs.empty() ? std::vector<glm::dvec2>{} : g.polygonUvs[k];
+            if (reverse) std::reverse(t.begin(), t.end()), std::reverse(uvs.begin(), uvs.end());
             const Vec3 &a = g.positions[t[0]], &b = g.positions[t[1]], &c = g.positions[t[2]];
             double scale = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
             double area2 = glm::length(glm::cross(b - a, c - a));
@@ -298,6 +356,7 @@ class Builder {
                 continue;
             }
             kept.push_back(t);
+            if (!uvs.empty()) keptUvs.push_back(std::move(uvs));
         }
         if (kept.empty())
             fail(where, keepAbove.empty() ? "every triangle of the mesh has zero area"
@@ -312,6 +371,7 @@ class Builder {
             }
         g.positions = std::move(used);
         g.polygons = std::move(kept);
+        g.polygonUvs = std::move(keptUvs);
         g.material = material;
         g.where = where;
         s.groups.push_back(std::move(g));
@@ -336,6 +396,7 @@ class Builder {
             }
             SurfaceGroup back = s.groups[gi];
             for (auto& poly : back.polygons) std::reverse(poly.begin(), poly.end());
+            for (auto& uvs : back.polygonUvs) std::reverse(uvs.begin(), uvs.end());
             back.material = backOf[m];
             back.where += " (back side)";
             s.groups.push_back(std::move(back));

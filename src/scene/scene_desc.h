@@ -30,6 +30,11 @@ struct MaterialDesc {
     bool twoSided = false;           ///< diffuse: both sides reflect (else the back is black)
     std::optional<Rgb> backReflectance;  ///< two-sided: the back's reflectance (default: the front's)
     std::string lightGroup;          ///< emissive: the light group it belongs to ("" none)
+    /// Diffuse: an image whose colour multiplies the reflectance, ρ(x) = reflectance · T(u, v)
+    /// (the product clamped to kMaxFileReflectance); "" none.
+    std::string texture;
+    std::string resolvedTexture;     ///< relative to the working directory
+    glm::dvec2 textureRepeat{1, 1};  ///< quads and box faces: the image repeats this often across a face
 };
 
 enum class ObjectKind { Quad, Polygon, Box, Sphere, Mesh };

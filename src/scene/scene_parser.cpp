@@ -30,7 +30,33 @@ std::string lightGroupOf(JsonObject& o) {
     return g;
 }
 
-MaterialDesc parseMaterial(JsonObject m, const std::string& name) {
+/// "texture": "FILE" or {"file": "FILE", "repeat": [u, v]} (an image read by OpenImageIO;
+/// relative to the scene's directory).
+void parseTexture(JsonObject& m, MaterialDesc& d, const std::string& sceneDir) {
+    const json* given = m.peek("texture");
+    if (given && given->is_string()) {
+        d.texture = m.string("texture").value_or("");
+    } else if (auto t = m.object("texture")) {
+        t->required("file");
+        d.texture = t->string("file").value_or("");
+        if (const json* r = t->array("repeat")) {
+            if (r->size() == 2 && (*r)[0].is_number() && (*r)[1].is_number() && (*r)[0].get<double>() > 0 &&
+                (*r)[1].get<double>() > 0)
+                d.textureRepeat = {(*r)[0].get<double>(), (*r)[1].get<double>()};
+            else
+                t->error("repeat", fmt::format("expected [u, v], each a positive number, got {}", describe(*r)));
+        }
+        t->finish();
+    }
+    if (d.texture.empty()) {
+        m.error("texture", "expected an image file name, or {\"file\": ..., \"repeat\": [u, v]}");
+        return;
+    }
+    const std::filesystem::path f(d.texture);
+    d.resolvedTexture = f.is_absolute() ? f.string() : (std::filesystem::path(sceneDir) / f).string();
+}
+
+MaterialDesc parseMaterial(JsonObject m, const std::string& name, const std::string& sceneDir) {
     MaterialDesc d;
     d.name = name;
     d.where = m.path();
@@ -56,7 +82,13 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name) {
         m.finish();
         return d;
     }
-    d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/false).value_or(Rgb(0.0));
+    if (type == "diffuse" && m.has("texture")) {
+        // With a texture, the reflectance is the texture's multiplier (default 1).
+        parseTexture(m, d, sceneDir);
+        d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/true).value_or(Rgb(1.0));
+    } else {
+        d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/false).value_or(Rgb(0.0));
+    }
     if (type == "diffuse") {
         d.twoSided = m.boolean("two_sided").value_or(false);
         d.backReflectance = m.rgb("back_reflectance", 0.0, 1.0, /*hiInclusive=*/false);
@@ -579,7 +611,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
                 continue;
             }
             materialIndex[it.key()] = static_cast<int>(desc.materials.size());
-            desc.materials.push_back(parseMaterial(JsonObject(it.value(), mats->childPath(it.key()), ctx), it.key()));
+            desc.materials.push_back(parseMaterial(JsonObject(it.value(), mats->childPath(it.key()), ctx), it.key(), sceneDir));
         }
         mats->finish([&] {
             std::set<std::string> all;

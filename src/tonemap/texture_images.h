@@ -1,0 +1,32 @@
+// Texture images read through OpenImageIO's TextureSystem (cached, filtered), as a
+// TextureSource for the radiosity and the ray tracer.
+#pragma once
+
+#include <core/texture_source.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rayrad::tonemap {
+
+class TextureImages : public TextureSource {
+  public:
+    /// Opens every file (its header: size, channels, encoding); throws InputError naming a
+    /// file that is not an image OpenImageIO can read. 8- and 16-bit images are taken as
+    /// sRGB-encoded (PNG, JPEG, TIFF as people save them) and decoded to linear; float
+    /// images (EXR, HDR) are linear. One channel is grey; a fourth (alpha) is ignored.
+    explicit TextureImages(const std::vector<std::string>& files);
+    ~TextureImages() override;
+
+    Rgb lookup(int index, double u, double v) const override;
+    Rgb texel(int index, double u, double v) const override;
+    int resolution(int index) const override;
+
+  private:
+    Rgb sample(int index, double u, double v, bool bilinear) const;
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace rayrad::tonemap
