@@ -22,7 +22,7 @@ bool hasLightGroups(const scene::SceneDesc& desc) {
 }
 
 LightGroupParts solveLightGroups(const std::string& sceneFile, const PipelineOptions& base, const PipelineRun& full,
-                                 const std::vector<std::string>& groups) {
+                                 const std::vector<std::string>& groups, bool keepSolutions) {
     LightGroupParts out;
     out.groups = groups;
     for (size_t g = 0; g < groups.size(); ++g) {
@@ -34,10 +34,12 @@ LightGroupParts solveLightGroups(const std::string& sceneFile, const PipelineOpt
         o.quiet = true;
         o.lightGroup = groups[g];
         if (!base.quiet) fmt::print(stderr, "light group {} ({} of {}): solving\n", groupName(groups[g]), g + 1, groups.size());
-        const PipelineRun run = runPipeline(sceneFile, o);
+        o.wantSensors = base.wantSensors;
+        PipelineRun run = runPipeline(sceneFile, o);
         std::vector<radiosity::SensorValue> values;
         for (const auto& s : run.sensors) values.push_back(s.value);
         out.parts.push_back(std::move(values));
+        if (keepSolutions) out.solutions.push_back({groups[g], std::move(run.solution)});
     }
     return out;
 }

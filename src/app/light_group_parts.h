@@ -4,6 +4,7 @@
 
 #include <app/pipeline.h>
 #include <app/sensor_table.h>
+#include <radiosity/solution_file.h>
 
 #include <string>
 #include <vector>
@@ -13,15 +14,16 @@ namespace rayrad::app {
 struct LightGroupParts {
     std::vector<std::string> groups;                     ///< "" is the emitters in no group
     std::vector<std::vector<radiosity::SensorValue>> parts;  ///< parts[g][i]: sensor i lit by group g alone
+    std::vector<radiosity::GroupSolution> solutions;         ///< each group's solution, when kept (solve --save)
 };
 
 /// True when an emitter of the scene names a light group.
 bool hasLightGroups(const scene::SceneDesc& desc);
 
 /// Solves the scene once per group (sensors only, no image, `base`'s overrides), with the
-/// full solve's ΔI_max.
+/// full solve's ΔI_max; `keepSolutions`: also each group's radiosity solution.
 LightGroupParts solveLightGroups(const std::string& sceneFile, const PipelineOptions& base, const PipelineRun& full,
-                                 const std::vector<std::string>& groups);
+                                 const std::vector<std::string>& groups, bool keepSolutions = false);
 
 /// The terminal table: per sensor, each group's total illuminance, their sum and its
 /// difference from the full solve (the solver's tolerance: dimming a group by scaling its

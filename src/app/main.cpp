@@ -82,10 +82,14 @@ int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs&
     std::vector<std::string> outputs = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     app::addOutputs(files, {save});
     auto run = app::runPipeline(a.scene, o);
+    // With light groups, the saved solution also holds each group's part, so a scene whose
+    // groups are dimmed can be rendered from it.
+    auto groups = app::reportSensors(run, a.scene, o, csvs, files, !save.empty());
     if (!save.empty())
         files.set(save, radiosity::encodeSolution(run.solution, radiosity::fingerprintOf(run.scene, run.mesh),
-                                                  run.mesh.vertices.size()));
-    const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
+                                                  run.mesh.vertices.size(),
+                                                  groups ? groups->solutions : std::vector<radiosity::GroupSolution>{}));
+    if (groups && run.sensors.empty()) groups.reset();  // parts for the file only
     app::stageReports(run, a.scene, reports, groups ? &*groups : nullptr, files);
     files.commit();
     outputs.push_back(save);

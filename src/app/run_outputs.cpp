@@ -78,17 +78,18 @@ SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath
 /// The sensor table, grid statistics and light groups' parts (one more solve per group),
 /// on stdout and into the files.
 std::optional<LightGroupParts> reportSensors(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options,
-                                             const SensorFiles& f, OutputFiles& files) {
+                                             const SensorFiles& f, OutputFiles& files, bool forSavedSolution) {
     for (const auto& w : checkSensorResults(run.sensors)) fmt::print(stderr, "warning: {}\n", w);
     const auto grids = gridStatistics(run.sensors);
     if (!run.sensors.empty()) std::cout << sensorTable(run.sensors) << gridTable(grids);
     if (!f.points.empty()) files.set(f.points, sensorCsv(run.sensors));
     if (!f.grids.empty()) files.set(f.grids, gridCsv(grids));
     const auto groups = scene::lightGroups(run.scene);
-    if (groups.empty() || run.sensors.empty()) return std::nullopt;
+    if (groups.empty() || (run.sensors.empty() && !forSavedSolution)) return std::nullopt;
     run.report.begin(fmt::format("light groups ({} solves)", groups.size()));
-    const LightGroupParts parts = solveLightGroups(sceneFile, options, run, groups);
+    LightGroupParts parts = solveLightGroups(sceneFile, options, run, groups, forSavedSolution);
     run.report.end();
+    if (run.sensors.empty()) return parts;
     std::cout << "\nlight groups (total lx; each group solved alone, the light being linear in the emission):\n"
               << lightGroupTable(run.sensors, parts);
     fmt::print(stderr, "light groups: {} solved alone; their sum differs from the full solve by at most {:.3f} %\n",

@@ -43,9 +43,11 @@ std::vector<std::string> addSensorAndReportOutputs(const scene::SceneDesc& desc,
                                                    const ReportArgs& reports, OutputFiles& files);
 
 /// The sensor table, grid statistics and light groups' parts (one more solve per group),
-/// on stdout and into the files; returns the groups' parts when the scene has groups.
+/// on stdout and into the files; returns the groups' parts when the scene has groups and
+/// sensors. `forSavedSolution`: the groups are solved even without sensors, and their
+/// solutions kept (solve --save).
 std::optional<LightGroupParts> reportSensors(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options,
-                                             const SensorFiles& f, OutputFiles& files);
+                                             const SensorFiles& f, OutputFiles& files, bool forSavedSolution = false);
 
 /// The reports' and pictures' contents into the files (`groups`: the light groups' parts
 /// for the JSON report, or null).

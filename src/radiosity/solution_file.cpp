@@ -1,11 +1,13 @@
 #include <radiosity/solution_file.h>
 
 #include <core/input_error.h>
+#include <scene/light_groups.h>
 #include <scene/photometry.h>
 
 #include <fmt/format.h>
 
 #include <cstring>
+#include <map>
 #include <type_traits>
 
 namespace rayrad::radiosity {
@@ -13,7 +15,7 @@ namespace rayrad::radiosity {
 namespace {
 
 constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;  // 2: light groups' parts
 constexpr uint32_t kByteOrder = 0x01020304;
 
 /// 64-bit FNV-1a over values' bytes.
@@ -54,6 +56,10 @@ class Writer {
         put(static_cast<uint64_t>(v.size()));
         m_out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
     }
+    void putString(const std::string& s) {
+        put(static_cast<uint64_t>(s.size()));
+        m_out.append(s);
+    }
     std::string& bytes() { return m_out; }
 
   private:
@@ -82,6 +88,13 @@ class Reader {
         std::memcpy(v.data(), m_in.data() + m_at, n * sizeof(T));
         m_at += n * sizeof(T);
         return v;
+    }
+    std::string getString(const char* what) {
+        const auto n = get<uint64_t>(what);
+        need(n, what);
+        std::string out = m_in.substr(m_at, n);
+        m_at += n;
+        return out;
     }
     void skip(size_t n) { m_at += n; }
 
@@ -112,13 +125,14 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
 
     Hash m;
     for (const auto& mat : scene.materials)
-        m << mat.name << static_cast<int>(mat.kind) << Vec3(mat.reflectance) << Vec3(mat.emission) << Vec3(mat.specular)
+        m << mat.name << static_cast<int>(mat.kind) << Vec3(mat.reflectance) << Vec3(mat.specular)
           << mat.ior << mat.twoSided << mat.texture;
     // A texture changes the solution through the patches' mean reflectances.
     for (const auto& rho : mesh.texturedReflectance) m << Vec3(rho);
     f.materials = m.value();
 
     Hash l;
+    for (const auto& mat : scene.materials) l << Vec3(mat.emission);  // emitters are lights
     l << scene.lights.size();
     for (const auto& light : scene.lights) {
         l << light.position << Vec3(light.intensity) << light.isSpot << light.direction << light.cosInner << light.cosOuter
@@ -135,6 +149,35 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     }
     f.lights = l.value();
 
+    // The same with each emitter's strength over its group's (dimming a group changes no
+    // ratio), and the groups' strengths.
+    const auto groups = scene::lightGroups(scene);
+    std::map<std::string, double> strength;
+    for (const auto& name : groups) strength[name] = 0;
+    auto lightStrength = [](const scene::PointLight& light) { return luminance(light.intensity) * light.photometricScale; };
+    for (const auto& light : scene.lights) strength[light.lightGroup] += lightStrength(light);
+    for (const auto& mat : scene.materials) strength[mat.lightGroup] += luminance(mat.emission);
+    auto relative = [&](const std::string& group, double value) {
+        const double total = strength[group];
+        return total > 0 ? value / total : 0.0;
+    };
+    Hash shapes;
+    shapes << scene.lights.size();
+    for (const auto& light : scene.lights) {
+        const double y = luminance(light.intensity);
+        shapes << light.lightGroup << light.position << (y > 0 ? Vec3(light.intensity / y) : Vec3(0.0))
+               << relative(light.lightGroup, lightStrength(light)) << light.isSpot << light.direction << light.cosInner
+               << light.cosOuter << light.nadir << light.c0 << light.openingPoints.size();
+        for (const auto& p : light.openingPoints) shapes << p;
+        if (light.photometry) shapes << light.photometry->integratedFlux();
+    }
+    for (const auto& mat : scene.materials) {
+        const double y = luminance(mat.emission);
+        shapes << mat.lightGroup << (y > 0 ? Vec3(mat.emission / y) : Vec3(0.0)) << relative(mat.lightGroup, y);
+    }
+    f.lightShapes = shapes.value();
+    for (const auto& name : groups) f.groupStrengths.emplace_back(name, strength[name]);
+
     // Every setting the direct pass, the shooting, the reconstruction or the seam vertices
     // read (a setting added to them must be added here).
     Hash s;
@@ -150,12 +193,13 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     return f;
 }
 
-std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerprint& f, size_t vertexCount) {
+std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerprint& f, size_t vertexCount,
+                           const std::vector<GroupSolution>& groups) {
     Writer w;
     w.bytes().append(kMagic, sizeof kMagic);
     w.put(kVersion);
     w.put(kByteOrder);
-    w.put(f.geometry), w.put(f.materials), w.put(f.lights), w.put(f.settings);
+    w.put(f.geometry), w.put(f.materials), w.put(f.lights), w.put(f.settings), w.put(f.lightShapes);
     w.put(static_cast<uint64_t>(sol.directMean.size()));
     w.put(static_cast<uint64_t>(vertexCount));
     w.putArray(sol.directMean);
@@ -166,6 +210,19 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
     w.put(sol.shots), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(static_cast<uint8_t>(sol.converged));
     w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary), w.put(sol.backAbsorbedDirect);
     w.putArray(sol.backFlux);
+    // The light groups' parts (the arrays the renderer reads), with the strengths they had.
+    w.put(static_cast<uint64_t>(groups.size()));
+    for (const auto& g : groups) {
+        double strength = 0;
+        for (const auto& [name, value] : f.groupStrengths)
+            if (name == g.group) strength = value;
+        w.putString(g.group);
+        w.put(strength);
+        w.putArray(g.solution.directMean);
+        w.putArray(g.solution.directCorner);
+        w.putArray(g.solution.indirect);
+        w.putArray(g.solution.vertexIndirect);
+    }
     w.put(checksum(w.bytes(), w.bytes().size()));
     return std::move(w.bytes());
 }
@@ -188,14 +245,18 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     SolutionFingerprint f;
     f.geometry = r.get<uint64_t>("the fingerprint"), f.materials = r.get<uint64_t>("the fingerprint");
     f.lights = r.get<uint64_t>("the fingerprint"), f.settings = r.get<uint64_t>("the fingerprint");
+    f.lightShapes = r.get<uint64_t>("the fingerprint");
     const char* differs = f.geometry != expected.geometry   ? "geometry (or its meshing settings)"
                           : f.materials != expected.materials ? "materials"
-                          : f.lights != expected.lights       ? "lights"
                           : f.settings != expected.settings   ? "radiosity or cluster settings"
-                                                              : nullptr;
+                          : f.lightShapes != expected.lightShapes ? "lights"
+                                                                  : nullptr;
     if (differs)
         throw fail(std::string("this solution was computed for another scene: the ") + differs +
                    " differ; solve the scene again (rayrad solve SCENE --save FILE)");
+    // The same lights but for the groups' dimming: only a file with the groups' parts can
+    // follow it.
+    const bool dimmed = f.lights != expected.lights;
     const auto patches = r.get<uint64_t>("the patch count"), vertices = r.get<uint64_t>("the vertex count");
     if (patches != patchCount || vertices != vertexCount)
         throw fail(fmt::format("{} patches and {} vertices where the scene has {} and {}", patches, vertices, patchCount, vertexCount));
@@ -217,6 +278,32 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     const auto n = r.get<uint64_t>("the back fluxes");
     sol.backFlux.resize(n);
     for (auto& v : sol.backFlux) v = r.get<double>("the back fluxes");
+    const auto groupCount = r.get<uint64_t>("the light groups");
+    if (!dimmed) return sol;  // the full solve itself
+    if (groupCount == 0 || groupCount != expected.groupStrengths.size())
+        throw fail("the lights differ from those the solution was computed for (only dimming whole light groups can be "
+                   "applied to a saved solution, and only to one saved with light groups); solve the scene again");
+    // Σ_g (S'_g / S_g) part_g.
+    sol.directMean.assign(patchCount, Rgb(0.0));
+    sol.directCorner.assign(3 * patchCount, RgbF(0.0f));
+    sol.indirect.assign(patchCount, Rgb(0.0));
+    sol.vertexIndirect.assign(vertexCount, Rgb(0.0));
+    sol.unshot.assign(patchCount, Rgb(0.0));
+    for (uint64_t g = 0; g < groupCount; ++g) {
+        const std::string name = r.getString("a light group's name");
+        const double then = r.get<double>("a light group's strength");
+        const auto& [expectedName, now] = expected.groupStrengths[g];
+        if (name != expectedName) throw fail("its light groups are not the scene's; solve the scene again");
+        const double scale = then > 0 ? now / then : 0.0;
+        const auto add = [&](auto& total, const auto& part) {
+            if (part.size() != total.size()) return;  // corner values not kept for this part
+            for (size_t i = 0; i < total.size(); ++i) total[i] += static_cast<std::decay_t<decltype(total[0][0])>>(scale) * part[i];
+        };
+        add(sol.directMean, r.getArray<Rgb>(patchCount, "a light group's direct illuminance"));
+        add(sol.directCorner, r.getArray<RgbF>(3 * patchCount, "a light group's corner direct illuminance", true));
+        add(sol.indirect, r.getArray<Rgb>(patchCount, "a light group's indirect illuminance"));
+        add(sol.vertexIndirect, r.getArray<Rgb>(vertexCount, "a light group's vertex values"));
+    }
     return sol;
 }
 

@@ -10,6 +10,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rayrad::radiosity {
 
@@ -20,6 +22,20 @@ struct SolutionFingerprint {
     uint64_t materials = 0;  ///< kind, reflectance, emission, specular, index, sides
     uint64_t lights = 0;     ///< point lights, spots and luminaires (their tables too)
     uint64_t settings = 0;   ///< the radiosity and cluster settings
+    /// The emitters with each one's strength divided by its light group's strength: equal
+    /// when the scenes differ only by dimming whole groups. Not part of the match above.
+    uint64_t lightShapes = 0;
+    /// Each light group's strength, in the order of scene::lightGroups ("" the emitters in
+    /// no group): Σ luminance(I) × photometric scale over its lights + Σ luminance(L_e)
+    /// over its emissive materials. Only ratios of the same group's strength are used.
+    std::vector<std::pair<std::string, double>> groupStrengths;
+};
+
+/// One light group's part of a solution (the group solved alone), saved so a scene whose
+/// groups are dimmed can be rendered from it.
+struct GroupSolution {
+    std::string group;
+    RadiositySolution solution;
 };
 
 SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& mesh);
@@ -27,12 +43,15 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
 /// The file's bytes: magic "RAYRADSOL", format version, byte-order mark, fingerprint,
 /// counts, the per-patch and per-vertex arrays, the solve's statistics, and a checksum of
 /// all of it.
-std::string encodeSolution(const RadiositySolution& solution, const SolutionFingerprint& fingerprint, size_t vertexCount);
+std::string encodeSolution(const RadiositySolution& solution, const SolutionFingerprint& fingerprint, size_t vertexCount,
+                           const std::vector<GroupSolution>& groups = {});
 
 /// The solution in `bytes` (read from `path`, named in messages). Throws InputError when
 /// it is not a rayrad solution, is of another version or byte order, is damaged (the
 /// checksum), or was computed for another scene: the message says whether the geometry,
-/// the materials, the lights or the settings differ.
+/// the materials, the lights or the settings differ. Lights that differ only by dimming
+/// whole light groups are accepted when the file holds the groups' parts: the solution is
+/// then Σ_g (S'_g / S_g) part_g, with S the groups' strengths then and now.
 RadiositySolution decodeSolution(const std::string& bytes, const std::string& path, const SolutionFingerprint& expected,
                                  size_t patchCount, size_t vertexCount);
 

@@ -70,6 +70,31 @@ else
     failures=$((failures + 1))
 fi
 
+# A saved solution with light groups follows a group's dimming: rendered from it, the room
+# with the second light at half strength agrees with solving it so (the clustered solver is
+# linear in the emission to within its tolerance); a moved light is refused.
+groups='"materials": {"w": {"reflectance": 0.6}},
+  "objects": [{"type": "box", "min": [0, 0, 0], "max": [4, 2.8, 3], "facing": "inward", "material": "w"},
+              {"type": "box", "min": [2.5, 0, 0.5], "max": [3.5, 0.75, 1.5], "material": "w"}],
+  "lights": [{"type": "point", "position": [1, 2.5, 1.5], "intensity_cd": 200, "group": "left"},
+             {"type": "point", "position": [3, 2.5, 1.5], "intensity_cd": 200, "group": "right"}],
+  "camera": {"position": [0.4, 1.5, 2.6], "look_at": [3, 0.6, 1], "resolution": [48, 32]},
+  "radiosity": {"max_edge": 0.4}, "render": {"spp": 2}'
+scene groups "{ $groups }"
+"$rayrad" solve "$work/groups.json" --save "$work/groups.rrs" -q > /dev/null 2>&1
+check "groups: solve --save" test -s "$work/groups.rrs"
+"$rayrad" render "$work/groups.json" --set lights.1.intensity_cd=100 --solution "$work/groups.rrs" -o "$work/dimmed.exr" -q \
+    > /dev/null 2> "$work/dimmed.err"
+check "groups: a dimmed group rendered from the saved solution" test $? -eq 0 -a -s "$work/dimmed.exr"
+"$rayrad" render "$work/groups.json" --set lights.1.intensity_cd=100 -o "$work/resolved.exr" -q > /dev/null 2>&1
+"$rayrad" compare "$work/dimmed.exr" "$work/resolved.exr" --calibrate none --fail-above mean_abs_rel_pct=0.3 > "$work/dim.txt" 2>&1
+check "groups: the same image as solving it dimmed (mean |rel. error| below 0.3 %)" test $? -eq 0
+"$rayrad" render "$work/groups.json" --solution "$work/groups.rrs" -o "$work/undimmed.exr" -q > /dev/null 2>&1
+"$rayrad" compare "$work/undimmed.exr" "$work/dimmed.exr" --calibrate none --fail-above mean_abs_rel_pct=5 > /dev/null 2>&1
+check "groups: dimming changed the image" test $? -eq 1
+expect 2 "groups: a moved light is refused" "the lights differ" -- render "$work/groups.json" --set lights.1.position=[3,2.4,1.5] \
+    --solution "$work/groups.rrs" -o "$work/out.exr"
+
 # Sweep: two values of a light's intensity and two meshes, four jobs run by GNU parallel;
 # the light is linear in the intensity, so 400 cd gives twice the illuminance of 200.
 "$rayrad" sweep "$work/walk.json" --vary lights.0.intensity_cd=200,400 --vary radiosity.max_edge=0.5,0.4 \

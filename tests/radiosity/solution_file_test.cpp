@@ -29,10 +29,17 @@ RadiositySolution smallSolution(size_t patches, size_t vertices) {
     return s;
 }
 
+SolutionFingerprint fingerprint(uint64_t geometry, uint64_t materials, uint64_t lights, uint64_t settings,
+                                uint64_t shapes = 5) {
+    SolutionFingerprint f;
+    f.geometry = geometry, f.materials = materials, f.lights = lights, f.settings = settings, f.lightShapes = shapes;
+    return f;
+}
+
 }  // namespace
 
 TEST_CASE("a saved solution reads back exactly, and any damage is refused", "[solution]") {
-    const SolutionFingerprint f{1, 2, 3, 4};
+    const SolutionFingerprint f = fingerprint(1, 2, 3, 4);
     const RadiositySolution s = smallSolution(5, 7);
     const std::string bytes = encodeSolution(s, f, 7);
     const RadiositySolution back = decodeSolution(bytes, "s.rrs", f, 5, 7);
@@ -45,10 +52,13 @@ TEST_CASE("a saved solution reads back exactly, and any damage is refused", "[so
     CHECK(back.converged);
     CHECK(back.backFlux == s.backFlux);
     // Another scene: each part of the fingerprint is named.
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", {9, 2, 3, 4}, 5, 7), Catch::Contains("the geometry"));
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", {1, 9, 3, 4}, 5, 7), Catch::Contains("the materials differ"));
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", {1, 2, 9, 4}, 5, 7), Catch::Contains("the lights differ"));
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", {1, 2, 3, 9}, 5, 7), Catch::Contains("settings differ"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(9, 2, 3, 4), 5, 7), Catch::Contains("the geometry"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 9, 3, 4), 5, 7), Catch::Contains("the materials differ"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 3, 4, 9), 5, 7), Catch::Contains("the lights differ"));
+    // Only dimmed (the shapes agree), but the file has no light groups' parts.
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 9, 4), 5, 7),
+                      Catch::Contains("only dimming whole light groups can be applied"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 3, 9), 5, 7), Catch::Contains("settings differ"));
     // Every truncation and every flipped byte.
     int refused = 0;
     for (size_t n = 0; n < bytes.size(); ++n) {
@@ -70,4 +80,25 @@ TEST_CASE("a saved solution reads back exactly, and any damage is refused", "[so
         }
     }
     CHECK(refused == static_cast<int>(bytes.size()));
+}
+
+TEST_CASE("a saved solution with light groups follows the groups' dimming", "[solution]") {
+    SolutionFingerprint saved = fingerprint(1, 2, 3, 4);
+    saved.groupStrengths = {{"", 2.0}, {"desk", 3.0}};
+    const RadiositySolution full = smallSolution(5, 7);
+    std::vector<GroupSolution> parts = {{"", smallSolution(5, 7)}, {"desk", smallSolution(5, 7)}};
+    for (auto& v : parts[1].solution.indirect) v *= 10.0;
+    const std::string bytes = encodeSolution(full, saved, 7, parts);
+    // The same lights: the full solve itself.
+    CHECK(decodeSolution(bytes, "s.rrs", saved, 5, 7).indirect == full.indirect);
+    // The ungrouped lights at half their strength, the desk group as it was.
+    SolutionFingerprint dimmed = fingerprint(1, 2, 33, 4);
+    dimmed.groupStrengths = {{"", 1.0}, {"desk", 3.0}};
+    const RadiositySolution mixed = decodeSolution(bytes, "s.rrs", dimmed, 5, 7);
+    for (size_t i = 0; i < mixed.indirect.size(); ++i)
+        CHECK(mixed.indirect[i].x == Approx(0.5 * parts[0].solution.indirect[i].x + parts[1].solution.indirect[i].x));
+    CHECK(mixed.directMean[2].y == Approx(1.5 * parts[0].solution.directMean[2].y));
+    // Another group's name: refused.
+    dimmed.groupStrengths[1].first = "window";
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", dimmed, 5, 7), Catch::Contains("light groups are not the scene's"));
 }
