@@ -360,7 +360,8 @@ int main(int argc, char** argv) {
     exporter->add_option("-o,--output", exportOutput, "The .glb file")->required();
     exporter->add_option("--solution", exportSolution, "Use a solution saved by solve --save (no solve)");
     exporter->add_option("--exposure", exportExposure,
-                         "\"auto\" (the solution's log-average luminance → 0.18) or stops: 2^stops per cd/m²")
+                         "\"auto\" (the log-average luminance of the scene camera's view, else of the solution → 0.18) or stops: "
+                         "2^stops per cd/m²")
         ->default_str("auto");
     exporter->add_option("--tonemap", exportTone, "Tone operator: exposure, tumblin-rushmeier, ward or reinhard")
         ->default_str("exposure");
