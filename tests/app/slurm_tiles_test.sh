@@ -2,7 +2,7 @@
 # Tiles through a Slurm job array (issue 16), not in the default run: it installs Slurm and
 # munge and makes this machine a one-node cluster (scripts/slurm/single-node, needs root).
 # Four array tasks render four tiles from a saved solution; the merge is bit-identical to
-# rendering the whole. Run: ctest -L slurm (from build/).
+# rendering the whole; a sweep's jobs run as a job array. Run: ctest -L slurm (from build/).
 set -u
 rayrad="$1"
 src="$2"
@@ -20,4 +20,9 @@ check "the job array ran" test $? -eq 0 -a -s "$work/tile4.exr"
 "$rayrad" merge -o "$work/merged.exr" "$work"/tile*.exr > /dev/null 2>&1
 check "merged" test $? -eq 0
 check "bit-identical to the whole" cmp -s "$work/whole.exr" "$work/merged.exr"
+# A sweep's four jobs as a job array (scripts/slurm/sweep.sbatch runs line K + 1).
+"$rayrad" sweep "$scene" --vary radiosity.max_edge=0.25,0.2 --vary render.seed=1,2 \
+    --run "solve -q --sensors $work/sweep{job}.csv" --jobs "$work/jobs.txt" > /dev/null 2>&1
+(cd "$work" && sbatch --array=0-3 --wait "$src/scripts/slurm/sweep.sbatch" "$work/jobs.txt" > "$work/sweep.log" 2>&1)
+check "the sweep's job array ran every job" test $? -eq 0 -a -s "$work/sweep0.csv" -a -s "$work/sweep3.csv"
 finish slurm
