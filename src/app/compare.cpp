@@ -97,12 +97,13 @@ double figure(const ErrorFigures& f, const std::string& metric) {
     if (metric == "p95_abs_rel_pct") return f.p95AbsRelPct;
     if (metric == "rms_log") return f.rmsLog;
     if (metric == "ssim_loss") return 1 - f.ssim;
+    if (metric == "mean_flip") return f.meanFlip;
     if (metric == "abs_mean_rel_pct") return std::abs(f.meanRelPct);
     if (metric == "mean_delta_e2000") return f.meanDeltaE2000;
     if (metric == "p95_delta_e2000") return f.p95DeltaE2000;
     throw InputError(placeMessage("", "--fail-above",
                                   "unknown metric \"" + metric +
-                                      "\" (mean_abs_rel_pct, median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, rms_log, ssim_loss, "
+                                      "\" (mean_abs_rel_pct, median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, rms_log, ssim_loss, mean_flip, "
                                       "mean_delta_e2000, p95_delta_e2000)"));
 }
 
@@ -217,10 +218,10 @@ int compareImages(const CompareOptions& o) {
                b.height, o.calibrate, regions.size() > 1 ? "the regions" : "the image", factors[0], factors[1], factors[2]);
     if (!pairs.empty())
         fmt::print("aligned by a homography through {} point pairs (largest residual {:.3g} px)\n", pairs.size(), residual);
-    fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>7} {:>7}\n", "region", "pixels", "mean %", "|mean| %",
-               "median %", "p95 %", "rms ln", "SSIM", "ΔE00", "ΔE00 95");
+    fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>7} {:>7} {:>7}\n", "region", "pixels", "mean %", "|mean| %",
+               "median %", "p95 %", "rms ln", "SSIM", "ΔE00", "ΔE00 95", "FLIP");
     std::string csv = "region,pixels,mean_rel_pct,mean_abs_rel_pct,median_abs_rel_pct,p95_abs_rel_pct,rms_log,ssim,"
-                      "mean_delta_e2000,p95_delta_e2000\n";
+                      "mean_delta_e2000,p95_delta_e2000,mean_flip\n";
     nlohmann::json j;
     j["a"] = o.a, j["b"] = o.b, j["width"] = b.width, j["height"] = b.height;
     j["calibration"] = {{"kind", o.calibrate}, {"factors", factors}};
@@ -228,18 +229,18 @@ int compareImages(const CompareOptions& o) {
     j["regions"] = nlohmann::json::array();
     for (size_t i = 0; i < regions.size(); ++i) {
         const auto& f = figures[i];
-        fmt::print("{:<16} {:>9} {:>+9.3f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.4f} {:>7.4f} {:>7.3f} {:>7.3f}\n",
+        fmt::print("{:<16} {:>9} {:>+9.3f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.4f} {:>7.4f} {:>7.3f} {:>7.3f} {:>7.4f}\n",
                    regions[i].name.substr(0, 16), f.pixels, f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct,
-                   f.rmsLog, f.ssim, f.meanDeltaE2000, f.p95DeltaE2000);
-        csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", regions[i].name, f.pixels,
+                   f.rmsLog, f.ssim, f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
+        csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", regions[i].name, f.pixels,
                            f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct, f.rmsLog, f.ssim,
-                           f.meanDeltaE2000, f.p95DeltaE2000);
+                           f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
         j["regions"].push_back({{"name", regions[i].name}, {"x", regions[i].x}, {"y", regions[i].y},
                                 {"width", regions[i].width}, {"height", regions[i].height}, {"pixels", f.pixels},
                                 {"mean_rel_pct", f.meanRelPct}, {"mean_abs_rel_pct", f.meanAbsRelPct},
                                 {"median_abs_rel_pct", f.medianAbsRelPct}, {"p95_abs_rel_pct", f.p95AbsRelPct},
                                 {"rms_log", f.rmsLog}, {"ssim", f.ssim}, {"mean_delta_e2000", f.meanDeltaE2000},
-                                {"p95_delta_e2000", f.p95DeltaE2000}});
+                                {"p95_delta_e2000", f.p95DeltaE2000}, {"mean_flip", f.meanFlip}});
     }
     // The bounds, on the whole image.
     int status = 0;

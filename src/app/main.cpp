@@ -410,7 +410,7 @@ int main(int argc, char** argv) {
     compare->add_option("--fail-above", compareOptions.failAbove,
                         "METRIC=VALUE, repeatable: exit 1 when the whole image's figure exceeds it (mean_abs_rel_pct, "
                         "median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, rms_log, ssim_loss = 1 − SSIM, mean_delta_e2000, "
-                        "p95_delta_e2000)");
+                        "p95_delta_e2000, mean_flip)");
 
     app::ValidateOptions validateOptions;
     validateOptions.scene = app::bundledPath(validateOptions.scene);

@@ -1,5 +1,7 @@
 #include <tonemap/image_metrics.h>
 
+#include <tonemap/image_flip.h>
+
 #include <core/colour_space.h>
 #include <tonemap/tone_operators.h>
 
@@ -192,6 +194,17 @@ ErrorFigures compareImages(const HdrImage& a, const HdrImage& b, const Region& r
         f.meanDeltaE2000 = sum / static_cast<double>(de.size());
         f.p95DeltaE2000 = percentile(de, 0.95);
     }
+    // ꟻLIP between the same displayed colours (outside an aligned image: black).
+    std::vector<Rgb> shownA, shownB;
+    forEachPixel(r, [&](int x, int y) {
+        const Rgb& pa = a.at(x, y);
+        shownA.push_back(std::isfinite(luminance(pa)) ? toDisplayGamut(pa * scale) : Rgb(0.0));
+        shownB.push_back(toDisplayGamut(b.at(x, y) * scale));
+    });
+    const auto flip = flipErrorMap(shownB, shownA, r.width, r.height);
+    double flipSum = 0;
+    for (double v : flip) flipSum += v;
+    f.meanFlip = flip.empty() ? 0.0 : flipSum / static_cast<double>(flip.size());
     return f;
 }
 

@@ -38,6 +38,7 @@ struct ErrorFigures {
     double ssim = 1;             ///< SSIM of the display-encoded luminance (1 = identical)
     double meanDeltaE2000 = 0;   ///< CIEDE2000 between the displayed colours (lcms2), mean
     double p95DeltaE2000 = 0;    ///< and 95th percentile
+    double meanFlip = 0;         ///< ꟻLIP (tonemap/image_flip) between the displayed colours, mean over the region
 };
 
 /// CIEDE2000 colour difference of two CIELAB colours (Sharma, Wu & Dalal 2005; lcms2's
@@ -48,8 +49,8 @@ double deltaE2000(const std::array<double, 3>& lab1, const std::array<double, 3>
 /// where b's luminance is at least `floor` × b's mean (darker ones make relative errors
 /// meaningless). SSIM (Wang et al. 2004: 11 × 11 Gaussian window, σ 1.5, K1 0.01, K2 0.03)
 /// on the sRGB-encoded luminance of both after one exposure (b's log-average → 0.18);
-/// CIEDE2000 between the colours as a display shows them at that exposure (in gamut, D65
-/// white of luminance 1).
+/// CIEDE2000 and ꟻLIP between the colours as a display shows them at that exposure (in
+/// gamut, D65 white of luminance 1; ꟻLIP at 67 pixels per degree, over the region alone).
 ErrorFigures compareImages(const HdrImage& a, const HdrImage& b, const Region& region, double floor = 0.01);
 
 /// |L_a − L_b| / L_b in % per pixel (NaN where b has no light), for the difference map.
