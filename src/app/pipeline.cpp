@@ -1,6 +1,7 @@
 #include <app/pipeline.h>
 
 #include <radiosity/patch_reflectance.h>
+#include <radiosity/shading_normals.h>
 #include <tonemap/texture_images.h>
 
 #include <app/problem_size.h>
@@ -275,6 +276,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         run.report.begin(fmt::format("texture means ({} images)", run.scene.textures.size()));
         radiosity::computeTexturedReflectance(run.scene, run.mesh);
     }
+    if (run.scene.camera || !run.scene.pathFrames.empty()) radiosity::computeShadingNormals(run.mesh, run.scene.render.smoothingAngleDeg);
     // Cost warnings at once: the work they warn of may start next.
     run.warnings = costWarnings(sceneFile, run.scene, run.mesh, options.wantSensors);
     if (!options.quiet)

@@ -32,6 +32,9 @@ struct PatchMesh {
     /// fills it); empty when the scene has no textures. The radiosity uses it; the ray
     /// tracer uses ρ · T at the hit, whose mean over the patch is this.
     std::vector<RgbF> texturedReflectance;
+    /// Shading normals of each patch's corners, 3·i + k (computeShadingNormals); empty when
+    /// no corner's differs from its patch's normal (flat surfaces only) or smoothing is off.
+    std::vector<glm::vec3> cornerNormal;
 
     const Vec3& corner(const Patch& p, int k) const { return vertices[p.v[k]]; }
     /// The point with barycentric coordinates (1-u-v, u, v) on patch p.

@@ -1,6 +1,7 @@
 #include <raytrace/ray_tracer.h>
 
 #include <radiosity/patch_reflectance.h>
+#include <radiosity/shading_normals.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -74,14 +75,17 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     }
     const radiosity::Patch& p = mesh.patches[h.patch];
     const scene::Material& m = scene.materials[p.material];
-    // Recompute the hit point in double from the barycentrics (more precise than o + t d).
-    Vec3 x = mesh.pointAt(p, h.u, h.v);
     Rgb L = m.emission;
     if (m.reflectance == Rgb(0.0)) return L;
     // ρ at the hit: the texture's value here, whose mean over the patch the radiosity used.
     const Rgb rho = radiosity::reflectanceAt(scene, mesh, h.patch, h.u, h.v);
-    // With virtual lights; the weakest real lights shadow-tested only while they matter.
-    Rgb direct = lights.illuminanceForDisplay(x, p.normal, embree, areaLightSamples, &rng, scene.render.directThreshold);
+    // With virtual lights; the weakest real lights shadow-tested only while they matter. The
+    // hit point is recomputed in double from the barycentrics (more precise than o + t d);
+    // on curved meshes it is lifted toward the smooth surface and shaded with the
+    // interpolated normal, so the facets do not show.
+    const Vec3 x = radiosity::shadingPoint(mesh, h.patch, h.u, h.v);
+    const Vec3 n = radiosity::shadingNormal(mesh, h.patch, h.u, h.v);
+    Rgb direct = lights.illuminanceForDisplay(x, n, embree, areaLightSamples, &rng, scene.render.directThreshold);
     Rgb indirect = solution.vertexIndirect.empty()
                        ? Rgb(0.0)
                        : radiosity::interpolateIndirect(mesh, solution, h.patch, h.u, h.v);

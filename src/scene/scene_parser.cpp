@@ -536,6 +536,9 @@ void parseRender(JsonObject r, SceneDesc& d) {
         r.integer("sensor_area_light_samples", d.render.sensorAreaLightSamples, 1, 1 << 20);
     d.render.maxDepth = r.integer("max_depth", d.render.maxDepth, 0, 64);
     d.render.displayRangeCompression = r.boolean("display_range_compression").value_or(d.render.displayRangeCompression);
+    d.render.smoothingAngleDeg = r.number("smoothing_angle_deg", d.render.smoothingAngleDeg);
+    if (!(d.render.smoothingAngleDeg >= 0 && d.render.smoothingAngleDeg < 90))
+        r.error("smoothing_angle_deg", fmt::format("expected an angle in [0, 90) (0: flat shading), got {}", d.render.smoothingAngleDeg));
     r.finish();
 }
 

@@ -146,6 +146,10 @@ struct RenderOptions {
     /// 1/(1 + L_s/L_c)), so emitter edges and highlights stay smooth; the EXR keeps the
     /// plain average.
     bool displayRangeCompression = true;
+    /// Curved meshes are shaded with normals interpolated across each triangle from the
+    /// vertices (the mean normal of the triangles around a corner that meet it within this
+    /// angle), so their facets do not show; 0 shades every triangle flat. Images only.
+    double smoothingAngleDeg = 30;
 };
 
 }  // namespace rayrad::scene
