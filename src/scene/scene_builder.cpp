@@ -163,7 +163,7 @@ class Builder {
     int textureIndex(Scene& s, const std::string& file, const std::string& where) {
         const auto it = std::find(s.textures.begin(), s.textures.end(), file);
         if (it != s.textures.end()) return static_cast<int>(it - s.textures.begin());
-        if (const std::string problem = inputFileProblem(file, "image file"); !problem.empty())
+        if (const std::string problem = inputFileProblem(file, "texture image"); !problem.empty())
             fail(where, file + ": " + problem);
         s.textures.push_back(file);
         return static_cast<int>(s.textures.size()) - 1;
@@ -301,7 +301,7 @@ class Builder {
             textureFile = t.is_absolute() ? t.string() : (std::filesystem::path(o.resolvedFile).parent_path() / t).string();
             // Models often arrive without their images: a missing one is a warning, and the
             // material keeps its plain colour.
-            if (const std::string problem = inputFileProblem(textureFile, "image file"); !problem.empty()) {
+            if (const std::string problem = inputFileProblem(textureFile, "texture image"); !problem.empty()) {
                 s.warnings.missingTextures.push_back(fmt::format("{}/file: material \"{}\": texture {}: {} (its colour is used)",
                                                                  o.where, m.name, textureFile, problem));
                 textureFile.clear();

@@ -100,7 +100,7 @@ struct CameraPathDesc {
     int frames = 2;
     std::vector<CameraDesc> keyframes;
 };
-constexpr int kMaxPathFrames = 1'000'000;
+constexpr int kMaxPathFrames = 100'000;
 
 /// A point where illuminance is reported, with optional references in lx.
 struct SensorDesc {

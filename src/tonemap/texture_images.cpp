@@ -38,7 +38,8 @@ TextureImages::TextureImages(const std::vector<std::string>& files) : m_impl(std
         image.name = OIIO::ustring(file);
         OIIO::ImageSpec spec;
         if (!m_impl->system->get_imagespec(image.name, 0, spec)) {
-            const std::string error = m_impl->system->has_error() ? m_impl->system->geterror() : "unreadable";
+            std::string error = m_impl->system->has_error() ? m_impl->system->geterror() : "unreadable";
+            error = error.substr(0, error.find('\n'));  // one line, as every message
             throw InputError(file + ": not a texture image OpenImageIO can read (" + error + ")");
         }
         if (spec.nchannels < 1 || spec.width < 1 || spec.height < 1)

@@ -162,6 +162,30 @@ else
     echo "FAIL voxel_size 1e-6: no warning from info"; failures=$((failures + 1))
 fi
 
+# Walkthroughs, export, sweeps and textures (issue 16, issue 15).
+good_camera='"camera": {"position": [0.5,0.5,0.9], "look_at": [0.5,0.5,0], "resolution": [8, 8]}'
+good_path='"camera_path": {"frames": 3, "resolution": [8, 8], "keyframes": [{"position": [0.5,0.5,0.9], "look_at": [0.5,0.5,0]}, {"position": [0.4,0.5,0.8], "look_at": [0.5,0.4,0]}]}'
+scene walk "{$good_materials, $good_box, $good_light, $good_camera, $good_path}"
+expect 2 "frames beyond the path" "frame 3 is beyond the path's 3 frames" -- render "$work/walk.json" --frames 0:3 -o "$work/out.png"
+expect 2 "frames malformed" "expected all, K or A:B" -- render "$work/walk.json" --frames 1:x -o "$work/out.png"
+expect 3 "frames into a missing directory" "out.0000.png: cannot write: directory" -- render "$work/walk.json" --frames all -o "$work/nowhere/out.png"
+scene still "{$good_materials, $good_box, $good_light, \"camera_path\": {\"frames\": 3, \"keyframes\": [{\"position\": [0.5,0.5,0.9], \"look_at\": [0.5,0.5,0]}, {\"position\": [0.5,0.5,0.9], \"look_at\": [0.5,0.5,0]}]}}"
+expect 2 "a path that does not move" "still.json: /camera_path: the keyframes do not move" -- render "$work/still.json" --frames all -o "$work/out.png"
+expect 2 "export to another format" "the lit mesh is written as binary glTF" -- export "$work/walk.json" -o "$work/out.obj"
+expect 3 "export into a missing directory" "cannot write: directory" -- export "$work/walk.json" -o "$work/nowhere/out.glb"
+expect 2 "sweep without a value" "an empty value in" -- sweep "$work/walk.json" --vary radiosity.max_edge=0.5,,0.25 --jobs "$work/out.txt"
+expect 2 "sweep value the scene refuses" "job 1 (0.5,-3)" -- sweep "$work/walk.json" --vary radiosity.max_edge=0.5 --vary lights.0.intensity_cd=10,-3 --jobs "$work/out.txt"
+expect 2 "sweep with --set in the command" "give the values to vary with --vary" -- sweep "$work/walk.json" --vary radiosity.max_edge=0.5 --run "solve --set render.spp=2" --jobs "$work/out.txt"
+scene texture_dir "{\"materials\": {\"white\": {\"texture\": \"$work\"}}, $good_box, $good_light}"
+expect 2 "a texture that is a directory" "texture_dir.json: /materials/white/texture: $work: is a directory, not a texture image" -- solve "$work/texture_dir.json"
+printf 'not a png' > "$work/fake.png"
+scene texture_fake "{\"materials\": {\"white\": {\"texture\": \"fake.png\"}}, $good_box, $good_light}"
+expect 2 "a texture that is not an image" "fake.png: not a texture image OpenImageIO can read" -- solve "$work/texture_fake.json"
+scene texture_sphere "{\"materials\": {\"white\": {\"texture\": \"fake.png\"}}, \"objects\": [{\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": 1, \"material\": \"white\"}], $good_light}"
+expect 2 "a textured sphere" "not onto a polygon or a sphere" -- solve "$work/texture_sphere.json"
+scene smoothing "{$good_materials, $good_box, $good_light, \"render\": {\"smoothing_angle_deg\": 95}}"
+expect 2 "smoothing angle out of range" "/render/smoothing_angle_deg: expected an angle in [0, 90)" -- solve "$work/smoothing.json"
+
 echo keep > "$work/keep.png"
 "$rayrad" render "$work/negative.json" -o "$work/keep.png" >/dev/null 2>&1
 if [ "$(cat "$work/keep.png")" != keep ]; then echo "FAIL existing output was overwritten"; failures=$((failures + 1)); else passed=$((passed + 1)); fi
