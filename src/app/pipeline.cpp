@@ -41,6 +41,14 @@ scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Ove
 
 namespace {
 
+/// The shading normals, made before the first image (images only: the radiosity and the
+/// sensors use the triangles' own normals).
+void ensureShadingNormals(PipelineRun& run) {
+    if (run.shadingNormals) return;
+    radiosity::computeShadingNormals(run.mesh, run.scene.render.smoothingAngleDeg);
+    run.shadingNormals = true;
+}
+
 /// L_c for the display average (render.display_range_compression), 0 when off.
 double displayCompression(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution) {
     return scene.render.displayRangeCompression ? raytrace::compressionLuminance(scene, mesh, solution) : 0.0;
@@ -111,6 +119,7 @@ class PushPullObserver {
     }
 
     void writeSnapshot(const radiosity::RadiositySolution& copy) {
+        ensureShadingNormals(m_run);
         raytrace::ImageCamera camera(*m_run.scene.camera);
         raytrace::DisplayAverage forDisplay{displayCompression(m_run.scene, m_run.mesh, copy), {}};
         HdrImage image = raytrace::render(m_run.scene, m_run.mesh, copy, *m_run.lights, *m_run.embree, camera,
@@ -163,6 +172,7 @@ scene::Camera findView(const scene::Scene& scene, const std::string& name) {
 /// The ray tracer for one camera: the plain average (cd/m²) and the display average.
 std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& cam, const std::string& label,
                                          const PipelineOptions& options) {
+    ensureShadingNormals(run);
     raytrace::ImageCamera camera(cam);
     Progress progress(label, options.quiet);
     std::mutex m;
@@ -264,7 +274,6 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.scene = loadSceneFile(sceneFile, options.overrides);
     if (options.lightGroup) scene::keepLightGroup(run.scene, *options.lightGroup);
     if (!options.view.empty()) run.scene.camera = findView(run.scene, options.view);
-    if (options.frame >= 0) run.scene.camera = run.scene.pathFrames.at(static_cast<size_t>(options.frame));
 
     checkPatchCount(sceneFile, run.scene);
     run.report.begin("premesh");
@@ -276,7 +285,6 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
         run.report.begin(fmt::format("texture means ({} images)", run.scene.textures.size()));
         radiosity::computeTexturedReflectance(run.scene, run.mesh);
     }
-    if (run.scene.camera || !run.scene.pathFrames.empty()) radiosity::computeShadingNormals(run.mesh, run.scene.render.smoothingAngleDeg);
     // Cost warnings at once: the work they warn of may start next.
     run.warnings = costWarnings(sceneFile, run.scene, run.mesh, options.wantSensors);
     if (!options.quiet)

@@ -40,8 +40,6 @@ struct PipelineOptions {
     std::optional<std::string> lightGroup;
     /// The view the image (and the snapshots) are rendered from; empty: the default.
     std::string view;
-    /// Render from this frame of the scene's camera path instead of a view (−1: none).
-    int frame = -1;
     /// A saved solution to use instead of solving (render --solution FILE.rrs).
     std::string solutionFile;
     /// Trace only these rows of the image (render --tile); rowEnd −1: to the last.
@@ -75,6 +73,7 @@ struct PipelineRun {
     size_t edgeVertices = 0;        ///< vertices whose value came from a point gather
     size_t sensorGathers = 0;       ///< point gathers the sensors took (their own and every re-gather)
     bool singleChannel = false;     ///< the scene is grey: one channel was solved
+    bool shadingNormals = false;    ///< mesh.cornerNormal computed (before the first ray trace)
     std::unique_ptr<raytrace::EmbreeScene> embree;
     std::unique_ptr<radiosity::DirectLight> lights;
     radiosity::RadiositySolution solution;
