@@ -2,6 +2,7 @@
 
 #include <core/input_error.h>
 #include <raytrace/ray_tracer.h>
+#include <tonemap/tone_operators.h>
 
 #include <fmt/format.h>
 
@@ -59,20 +60,18 @@ double viewsAdaptationLuminance(PipelineRun& run, const std::vector<scene::Camer
     const size_t count = std::min(kSamples, cameras.size());
     const scene::RenderOptions saved = run.scene.render;
     run.scene.render.samplesPerPixel = 1;
-    double sumLog = 0;
-    size_t lit = 0;
+    HdrImage seen;  // every sample's pixels in one row, for the log-average
+    seen.height = 1;
     for (size_t i = 0; i < count; ++i) {
         scene::Camera c = cameras[count == 1 ? 0 : i * (cameras.size() - 1) / (count - 1)];
         c.height = std::max(1, static_cast<int>(std::lround(static_cast<double>(kWidth) * c.height / c.width)));
         c.width = kWidth;
         const auto view = renderCamera(run, fmt::format("adaptation sample {}", i + 1), c, sampling);
-        for (const auto& p : view.image.pixels) {
-            const double y = luminance(p);
-            if (y > 0 && std::isfinite(y)) sumLog += std::log(y), ++lit;
-        }
+        seen.pixels.insert(seen.pixels.end(), view.image.pixels.begin(), view.image.pixels.end());
     }
     run.scene.render = saved;
-    return lit > 0 ? std::exp(sumLog / static_cast<double>(lit)) : 0.0;
+    seen.width = static_cast<int>(seen.pixels.size());
+    return tonemap::logAverageLuminance(seen);  // over the lit pixels; 0 when none
 }
 
 tonemap::DisplayOptions steadyDisplay(double average, tonemap::DisplayOptions display) {

@@ -4,6 +4,8 @@
 
 #include <core/math.h>
 
+#include <cmath>
+
 namespace rayrad {
 
 /// Linear Rec.709 → XYZ, row-major.
@@ -16,6 +18,9 @@ constexpr double kXyzToRec709[3][3] = {{3.2404542, -1.5371385, -0.4985314},
                                        {0.0556434, -0.2040259, 1.0572252}};
 /// The D65 white's X and Z for Y = 1.
 constexpr double kD65WhiteX = 0.95047, kD65WhiteZ = 1.08883;
+
+/// The sRGB decoding (IEC 61966-2-1) of one encoded channel value in [0, 1] to linear.
+inline double srgbDecode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
 
 inline Vec3 rec709ToXyz(const Rgb& c) {
     const auto& m = kRec709ToXyz;

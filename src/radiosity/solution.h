@@ -3,6 +3,7 @@
 
 #include <core/math.h>
 #include <radiosity/patch_mesh.h>
+#include <radiosity/patch_reflectance.h>
 #include <scene/scene.h>
 
 #include <vector>
@@ -35,9 +36,7 @@ struct RadiositySolution {
 
     /// Reflected (non-emitted) luminance of patch i: ρ (E_direct + E_indirect) / π.
     Rgb reflectedLuminance(const scene::Scene& scene, const PatchMesh& mesh, size_t i) const {
-        const Rgb rho = mesh.texturedReflectance.empty() ? scene.materials[mesh.patches[i].material].reflectance
-                                                         : Rgb(mesh.texturedReflectance[i]);
-        return rho * (directMean[i] + indirect[i]) / kPi;
+        return patchReflectance(scene, mesh, i) * (directMean[i] + indirect[i]) / kPi;
     }
 };
 

@@ -211,10 +211,7 @@ ErrorFigures compareImages(const HdrImage& a, const HdrImage& b, const Region& r
 HdrImage linearFromSrgb(const HdrImage& encoded) {
     HdrImage out = encoded;
     for (auto& p : out.pixels)
-        for (int c = 0; c < 3; ++c) {
-            const double v = p[c];
-            p[c] = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-        }
+        for (int c = 0; c < 3; ++c) p[c] = srgbDecode(p[c]);
     return out;
 }
 

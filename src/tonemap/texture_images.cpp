@@ -1,5 +1,6 @@
 #include <tonemap/texture_images.h>
 
+#include <core/colour_space.h>
 #include <core/input_error.h>
 
 #include <OpenImageIO/texture.h>
@@ -9,13 +10,6 @@
 #include <cmath>
 
 namespace rayrad::tonemap {
-
-namespace {
-
-/// The sRGB decoding (IEC 61966-2-1) of one channel in [0, 1].
-double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-
-}  // namespace
 
 struct TextureImages::Impl {
     struct Image {
@@ -74,7 +68,7 @@ Rgb TextureImages::sample(int index, double u, double v, bool bilinear) const {
     if (image.channels == 1) rgb[1] = rgb[2] = rgb[0];
     Rgb out(rgb[0], rgb[1], rgb[2]);
     if (image.srgb)
-        for (int c = 0; c < 3; ++c) out[c] = srgbToLinear(std::clamp(out[c], 0.0, 1.0));
+        for (int c = 0; c < 3; ++c) out[c] = srgbDecode(std::clamp(out[c], 0.0, 1.0));
     return out;
 }
 
