@@ -14,6 +14,8 @@ namespace {
 /// subtends a smaller solid angle and its penumbrae are narrower, and the rays fall in
 /// proportion to the solid angle (at least one).
 constexpr double kAllSamplesDiameters = 5.0;
+/// Beyond this many of its diameters an area light's form factor is the second-order one.
+constexpr double kFarFormFactorDiameters = 5.0;
 }  // namespace
 
 AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance) {
@@ -30,7 +32,17 @@ AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rg
         light.triangles.push_back(tri);
         light.triangleAreas.push_back(0.5 * glm::length(glm::cross(tri[1] - tri[0], tri[2] - tri[0])));
     }
+    light.moments = polygonMoments(light.triangles);
     return light;
+}
+
+double areaLightFormFactor(const AreaLight& light, const Vec3& x, const Vec3& n) {
+    const Vec3 d = light.centre - x;
+    const double far = kFarFormFactorDiameters * 2 * light.radius;  // m
+    bool farAndAbove = glm::dot(d, d) > far * far;
+    for (size_t k = 0; k < light.vertices.size() && farAndAbove; ++k) farAndAbove = glm::dot(n, light.vertices[k] - x) > 0;
+    if (farAndAbove) return formFactorSecondOrder(x, n, light.moments, light.normal, light.area);
+    return formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
 }
 
 DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights) {
@@ -59,6 +71,7 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             }
             v.normal = glm::normalize(image.direction(a.normal));
             v.centre = image.point(a.centre);
+            v.moments = polygonMoments(v.triangles);
             v.luminance = a.luminance * image.weight;
             mirrored.push_back(std::move(v));
         }
@@ -203,8 +216,7 @@ Rgb DirectLight::fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n,
 
 Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const {
     auto open = [&](const AreaLight& light) {
-        double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
-        return light.luminance * (kPi * f);  // E = π L F
+        return light.luminance * (kPi * areaLightFormFactor(light, x, n));  // E = π L F
     };
     if (s < perChain()) return open(areaSource(s));
     const auto part = visiblePartOfImage(s / perChain() - 1, s % perChain() - m_pointLights.size(), x);
@@ -280,7 +292,7 @@ Rgb DirectLight::fromImages(const Vec3& x, const Vec3& n, const Visibility& vis,
 
 Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
                                int samples, Random* rng, Rgb* open) const {
-    double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
+    const double f = areaLightFormFactor(light, x, n);
     if (open) *open = light.luminance * (kPi * std::max(0.0, f));
     if (f <= 0) return Rgb(0.0);
     return light.luminance * (kPi * f * visibleFraction(light, x, n, vis, samples, rng));  // E = π L F

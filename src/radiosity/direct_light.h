@@ -4,6 +4,7 @@
 #include <core/math.h>
 #include <core/random.h>
 #include <core/visibility.h>
+#include <radiosity/form_factor.h>
 #include <radiosity/mirror_images.h>
 #include <radiosity/patch_mesh.h>
 #include <scene/scene.h>
@@ -24,10 +25,16 @@ struct AreaLight {
     std::vector<double> triangleAreas;
     Vec3 centre{0.0};            ///< mean of the vertices
     double radius = 0;           ///< largest vertex distance from the centre, m
+    PolygonMoments moments;      ///< area centroid and second moment, for far form factors
 };
 
 /// An area light from its outline (CCW seen from its emitting front).
 AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance);
+
+/// F(dA_x → light), unoccluded: Lambert's formula within 5 of the light's diameters, or
+/// when x's horizon cuts the light; beyond, the second-order far form factor
+/// (form_factor.h: within 10⁻⁴ of A/(π r²) there), a fraction of the cost.
+double areaLightFormFactor(const AreaLight& light, const Vec3& x, const Vec3& n);
 
 /// How the mirror polygons of a virtual point light's chain let it onto a triangle,
 /// ignoring occluders: onto none of it, all of it, or perhaps some of it.

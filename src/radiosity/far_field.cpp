@@ -1,5 +1,7 @@
 #include <radiosity/far_field.h>
 
+#include <radiosity/form_factor.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -82,15 +84,11 @@ Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage
     // The expansion is of g(u) = a b / s², which is smooth but not clamped: a node that
     // faces away (b ≤ 0) gives nothing, whatever its second-order term says.
     if (b <= 0) return Rgb(0.0);
-    // ½ tr(H M), H the Hessian of g:
-    //   H = −(n mᵀ + m nᵀ)/s² − 4 (v uᵀ + u vᵀ)/s³ + 24 a b u uᵀ/s⁴ − 4 a b I/s³, v = b n − a m.
+    // ½ tr(H M), H the Hessian of g (form_factor.h).
     const glm::dmat3 R = image ? glm::dmat3(image->transform) : glm::dmat3(1.0);
     const glm::dmat3 moment(f.moment);
     const glm::dmat3 M = image ? R * moment * glm::transpose(R) : moment;
-    const double s2 = s * s, ab = a * b;
-    const double trace = M[0][0] + M[1][1] + M[2][2];
-    const double trHM = -2 * glm::dot(n, M * m) / s2 - 8 * glm::dot(u, M * (b * n - a * m)) / (s2 * s) +
-                        24 * ab * glm::dot(u, M * u) / (s2 * s2) - 4 * ab * trace / (s2 * s);
+    const double trHM = pointKernelHessianTrace(u, n, m, M);
     const Rgb weight = image ? image->weight : Rgb(1.0);
     Rgb e(0.0);
     for (int ch = 0; ch < 3; ++ch) {

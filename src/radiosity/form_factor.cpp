@@ -105,6 +105,44 @@ double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, c
     return area * cosX * cosS / (kPi * r2);
 }
 
+double pointKernelHessianTrace(const Vec3& u, const Vec3& n, const Vec3& m, const glm::dmat3& M) {
+    const double s = glm::dot(u, u), a = glm::dot(n, u), b = -glm::dot(m, u);
+    const double s2 = s * s, ab = a * b;
+    const double trace = M[0][0] + M[1][1] + M[2][2];
+    return -2 * glm::dot(n, M * m) / s2 - 8 * glm::dot(u, M * (b * n - a * m)) / (s2 * s) +
+           24 * ab * glm::dot(u, M * u) / (s2 * s2) - 4 * ab * trace / (s2 * s);
+}
+
+PolygonMoments polygonMoments(const std::vector<std::array<Vec3, 3>>& triangles) {
+    PolygonMoments p;
+    double area = 0;
+    for (const auto& t : triangles) {
+        const double a = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        p.centroid += a * (t[0] + t[1] + t[2]) / 3.0;
+        area += a;
+    }
+    if (area <= 0) return p;
+    p.centroid /= area;
+    for (const auto& t : triangles) {
+        const double a = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        const Vec3 ct = (t[0] + t[1] + t[2]) / 3.0;
+        glm::dmat3 second = glm::outerProduct(ct - p.centroid, ct - p.centroid);
+        for (const Vec3& v : t) second += glm::outerProduct(v - ct, v - ct) / 12.0;
+        p.moment += a * second;
+    }
+    return p;
+}
+
+double formFactorSecondOrder(const Vec3& x, const Vec3& n, const PolygonMoments& polygon, const Vec3& polyNormal,
+                             double area) {
+    const Vec3 u = polygon.centroid - x;
+    const double s = glm::dot(u, u);
+    const double a = glm::dot(n, u), b = -glm::dot(polyNormal, u);
+    if (a <= 0 || b <= 0) return 0.0;  // the polygon is planar: x behind it sees none of it
+    const double f = area * a * b / (s * s) + 0.5 * pointKernelHessianTrace(u, n, polyNormal, polygon.moment);
+    return std::max(0.0, f) / kPi;
+}
+
 double triangleSolidAngle(const Vec3& p, const Vec3& v0, const Vec3& v1, const Vec3& v2) {
     Vec3 a = v0 - p, b = v1 - p, c = v2 - p;
     double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);

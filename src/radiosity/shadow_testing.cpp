@@ -12,7 +12,8 @@ namespace rayrad::radiosity {
 
 namespace {
 /// Beyond this many of its diameters an area light's unshadowed illuminance is ranked by
-/// the point approximation L A cosθ_x cosθ_y / r² (exact for the light that is tested).
+/// the point approximation L A cosθ_x cosθ_y / r² (a light that is tested gets its
+/// analytic or second-order F: areaLightFormFactor).
 constexpr double kRankPointDiameters = 5.0;
 
 /// An area light's unshadowed illuminance at x (lx, RGB), for ranking and for the

@@ -1,7 +1,12 @@
 // Point-to-polygon form factors against closed forms from the catalogue.
 #include <radiosity/form_factor.h>
 
+#include <core/random.h>
+
 #include "test_support.h"
+
+#include <algorithm>
+#include <array>
 
 #include <cmath>
 #include <vector>
@@ -95,4 +100,62 @@ TEST_CASE("the point approximation converges to the analytic value far away", "[
     double exact = toPolygon({0, 0, 0}, {0, 0, 1}, tri, {0, 0, -1});
     double approx = formFactorPointApprox({0, 0, 0}, {0, 0, 1}, c, {0, 0, -1}, 0.005);
     CHECK(approx == Approx(exact).epsilon(1e-4));
+}
+
+TEST_CASE("second-order polygon form factor against Lambert's formula", "[form_factor]") {
+    // A 0.6 m troffer and a 24-gon disk, seen from random points at k of their diameters
+    // with random normals that keep the whole polygon above the horizon: the error is
+    // relative to A/(π r²) (the scale of the light's contribution), and falls as (d/r)⁴.
+    auto triangles = [](const std::vector<Vec3>& poly) {
+        std::vector<std::array<Vec3, 3>> t;
+        for (size_t i = 1; i + 1 < poly.size(); ++i) t.push_back({poly[0], poly[i], poly[i + 1]});
+        return t;
+    };
+    std::vector<Vec3> disk;
+    for (int i = 0; i < 24; ++i) {
+        const double t = -2 * kPi * i / 24;
+        disk.push_back({0.4 * std::cos(t), 0.4 * std::sin(t), 0});
+    }
+    const std::vector<std::vector<Vec3>> lights = {{{-0.3, -0.3, 0}, {-0.3, 0.3, 0}, {0.3, 0.3, 0}, {0.3, -0.3, 0}}, disk};
+    const Vec3 down(0, 0, -1);
+    Random rng(7);
+    auto unit = [&] {
+        Vec3 v(rng.nextDouble() - 0.5, rng.nextDouble() - 0.5, rng.nextDouble() - 0.5);
+        return glm::length(v) > 1e-3 ? glm::normalize(v) : Vec3(0, 0, -1);
+    };
+    for (const auto& poly : lights) {
+        const PolygonMoments moments = polygonMoments(triangles(poly));
+        CHECK(glm::length(moments.centroid) < 1e-12);
+        double diameter = 0, area = 0;
+        for (const auto& t : triangles(poly)) area += 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        for (const Vec3& v : poly) diameter = std::max(diameter, 2 * glm::length(v));
+        double previous = 1;
+        for (double k : {2.0, 5.0, 10.0}) {
+            double worst = 0;
+            int tried = 0;
+            for (int i = 0; i < 4000; ++i) {
+                Vec3 dir = unit();
+                dir.z = -std::abs(dir.z);
+                const Vec3 x = k * diameter * dir;
+                Vec3 n = unit();
+                if (glm::dot(n, -x) < 0) n = -n;
+                bool above = x.z < 0;
+                for (const Vec3& v : poly) above &= glm::dot(n, v - x) > 0;
+                if (!above) continue;
+                ++tried;
+                const double exact = toPolygon(x, n, poly, down);
+                const double scale = area / (kPi * glm::dot(x, x));
+                worst = std::max(worst, std::abs(formFactorSecondOrder(x, n, moments, down, area) - exact) / scale);
+            }
+            INFO("polygon of " << poly.size() << " at " << k << " diameters, " << tried << " points");
+            CHECK(tried > 1000);
+            CHECK(worst < previous / 10);  // (d/r)⁴: 2 → 5 diameters is ×39, 5 → 10 ×16
+            if (k == 5.0) CHECK(worst < 1e-4);
+            previous = worst;
+        }
+    }
+    // Behind the polygon, or the polygon facing away: nothing.
+    const auto square = polygonMoments(triangles(lights[0]));
+    CHECK(formFactorSecondOrder({0, 0, 5}, {0, 0, -1}, square, down, 0.36) == 0.0);
+    CHECK(formFactorSecondOrder({0, 0, -5}, {0, 0, -1}, square, down, 0.36) == 0.0);
 }
