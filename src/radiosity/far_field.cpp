@@ -24,7 +24,7 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
     Vec3 at(0.0);
     Rgb power(0.0);
     std::array<Vec3, 3> flux{};  // summed in double, kept in float
-    glm::dmat3 moment(0.0);
+    glm::dmat3 moment(0.0), turning(0.0);
     for (uint32_t k = node.begin; k < node.end; ++k) {
         const uint32_t m = tree.order[k];
         const Patch& p = mesh.patches[C.patches[m]];
@@ -50,10 +50,13 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
             second += glm::outerProduct(v - p.centroid, v - p.centroid) / 12.0;
             r = std::max(r, glm::length(v - f.at));
         }
-        moment += double(f.sign) * rayrad::luminance(luminance[m]) * p.area * second;
+        const double y = double(f.sign) * rayrad::luminance(luminance[m]) * p.area;  // cd
+        moment += y * second;
+        turning += y * glm::outerProduct(dc, p.normal);
     }
     f.reach = 2 * r;
     f.moment = glm::mat3(moment);
+    f.turning = glm::mat3(turning);
     for (int ch = 0; ch < 3; ++ch) f.flux[ch] = glm::vec3(flux[ch]);
     // Φ of the luminance: each component is Y of the channels' components.
     const Vec3 fluxY(rayrad::luminance(Rgb(flux[0].x, flux[1].x, flux[2].x)),
@@ -89,11 +92,16 @@ Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage
     const glm::dmat3 moment(f.moment);
     const glm::dmat3 M = image ? R * moment * glm::transpose(R) : moment;
     const double trHM = pointKernelHessianTrace(u, n, m, M);
+    // −tr(J P), J = ∂[(n·u) u / s²]/∂u = (u nᵀ + a I)/s² − 4 a u uᵀ/s³ (P mirrored as M is).
+    const glm::dmat3 turning(f.turning);
+    const glm::dmat3 P = image ? R * turning * glm::transpose(R) : turning;
+    const double trJP = (glm::dot(n, P * u) + a * (P[0][0] + P[1][1] + P[2][2])) / (s * s) -
+                        4 * a * glm::dot(u, P * u) / (s * s * s);
     const Rgb weight = image ? image->weight : Rgb(1.0);
     Rgb e(0.0);
     for (int ch = 0; ch < 3; ++ch) {
         const double zeroth = a * std::max(0.0, -glm::dot(turn(Vec3(f.flux[ch])), u)) / (s * s);  // cosθ_x (−Φ·u) / r³
-        e[ch] = double(f.sign) * weight[ch] * std::max(0.0, zeroth + double(f.share[ch]) * 0.5 * trHM);
+        e[ch] = double(f.sign) * weight[ch] * std::max(0.0, zeroth + double(f.share[ch]) * (0.5 * trHM - trJP));
     }
     return e;
 }

@@ -27,6 +27,11 @@ struct FarSource {
     glm::vec3 normal{0.0f};            ///< Φ's direction (luminance), unit
     glm::vec3 share{0.0f};             ///< per channel Σ L_j A_j over the luminance sum W
     glm::mat3 moment{0.0f};            ///< M = Σ Y(L_j) ∫_{A_j} (y − at)(y − at)ᵀ dA (cd m²)
+    /// P = Σ Y(L_j) A_j (c_j − at) n_jᵀ (cd m): how the normals turn across a curved node
+    /// (0 for a flat one). Its term −tr(J P), J the Jacobian of (n·u) u / |u|⁴, is of the
+    /// same order as the moment's; without it a curved node lost light (a closed sphere's
+    /// solve at 20° normal tolerance: 0.6 % of the indirect light).
+    glm::mat3 turning{0.0f};
     uint32_t brightest = 0;            ///< member position k with the most power: the node's ray goes there
     float sign = 1;                    ///< +1, or −1 for a node of negative light
     bool mixed = false;                ///< members of both signs: no far field
@@ -39,8 +44,9 @@ std::vector<FarSource> farSources(const PatchMesh& mesh, const Cluster& cluster,
                                   const std::vector<Rgb>& luminance);
 
 /// The node's light at x with normal n (lx, RGB): g expanded about its luminance-weighted
-/// centroid to second order, E ≈ cosθ_x (−Φ·u)/r³ + ½ tr(H_g M) (the first-order term
-/// vanishes there); nothing when the node faces away. `image` (or null) mirrors the node.
+/// centroid to second order, E ≈ cosθ_x (−Φ·u)/r³ + ½ tr(H_g M) − tr(J P) (the
+/// first-order term in position vanishes there; P carries the first order in the normals);
+/// nothing when the node faces away. `image` (or null) mirrors the node.
 Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage* image);
 
 }  // namespace rayrad::radiosity

@@ -260,3 +260,40 @@ TEST_CASE("a cluster's form factor summed through its member tree agrees with th
     }
     CHECK(opened > 5);  // the tree's far field was used, not every member
 }
+
+TEST_CASE("a curved cluster's far field follows its turning normals", "[clusters]") {
+    // A cap of an inward-facing sphere (members within 20° of one direction) as one
+    // cluster; points inside the sphere. Its far nodes' normals turn across them: the
+    // far field's first-order term in the normals (FarSource::turning) keeps the tree's
+    // sum within 0.1 % of the member-by-member sum (measured: 0.027 %; without the term
+    // up to 0.9 % low, as a closed sphere's solve lost 0.6 % of its indirect light at a
+    // 20° normal tolerance).
+    const std::string json = R"({"materials": {"m": {"reflectance": 0.5}},
+        "objects": [{"type": "sphere", "material": "m", "radius": 1, "subdivisions": 48, "facing": "inward"}],
+        "lights": [{"type": "point", "position": [0, 0, 0], "intensity_cd": 1}],
+        "radiosity": {"max_edge": 10}})";
+    auto s = scene::buildScene(scene::loadScene(test::writeTempScene("curved_cap", json)));
+    auto mesh = premesh(s, s.meshing);
+    Cluster cap;
+    const Vec3 axis(0, 0, -1);  // the cap around +z faces −z (inward)
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
+        if (glm::dot(mesh.patches[i].normal, axis) > std::cos(glm::radians(20.0))) cap.patches.push_back(i);
+    REQUIRE(cap.patches.size() > 200);
+    const MemberTree tree = memberTree(mesh, cap, 8);
+    const SourceGeometry geometry = sourceGeometry(mesh, cap, tree, 3.0);
+    REQUIRE(geometry.tree);
+    int opened = 0;
+    double worst = 0;
+    for (const Vec3 x : {Vec3(0, 0, -0.9), Vec3(0.3, 0.2, -0.5), Vec3(0.6, 0, 0), Vec3(0, -0.7, -0.6), Vec3(0, 0, 0)}) {
+        for (const Vec3 n : {Vec3(0, 0, 1), glm::normalize(Vec3(0.3, 0.2, 1)), glm::normalize(-x + Vec3(0, 0, 1))}) {
+            const double members = memberFormFactorSum(mesh, cap, nullptr, x, n, 4.0);
+            const double throughTree = memberFormFactorSum(mesh, cap, &geometry, x, n, 4.0);
+            INFO("x " << toString(x) << " n " << toString(n) << " members " << members << " tree " << throughTree);
+            CHECK(throughTree == Approx(members).epsilon(1e-3));
+            worst = std::max(worst, std::abs(throughTree / members - 1));
+            opened += throughTree != members;
+        }
+    }
+    INFO("worst " << worst);
+    CHECK(opened > 5);
+}
