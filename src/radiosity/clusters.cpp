@@ -5,6 +5,7 @@
 #include <scene/polygon.h>
 
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -150,6 +151,18 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
         double h = lift + 0.25 * glm::length(a.centroid - b.centroid) * glm::length(glm::cross(a.normal, b.normal));
         return vis->visible(a.centroid + h * a.normal, b.centroid + h * b.normal);
     };
+    // A patch under a cover (a surface in front of it nearer than a quarter of its size: the
+    // ceiling above a troffer hung 1 cm below it, the floor under a low shelf) sees little
+    // of what the open surface around it sees, yet the lifted segment through the gap
+    // joined them: then a cluster sample under the cover darkened the whole cluster's
+    // cluster→cluster light (blotches of the cluster's size on the hall's ceiling).
+    // Covered and open patches are never one cluster.
+    std::vector<char> covered(mesh.patches.size(), 0);
+    if (vis)
+        tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
+            const Patch& p = mesh.patches[i];
+            covered[i] = !vis->visible(p.centroid + lift * p.normal, p.centroid + (lift + 0.25 * p.diameter) * p.normal);
+        });
     std::map<std::array<int, 3>, std::vector<uint32_t>> voxelClusters;  // voxel → cluster ids
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];
@@ -157,8 +170,9 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
         auto& ids = voxelClusters[v];
         uint32_t chosen = UINT32_MAX;
         for (uint32_t id : ids)
-            if (const Patch& first = mesh.patches[out.clusters[id].patches[0]];
-                glm::dot(first.normal, p.normal) >= cosTolerance && seeEachOther(first, p)) {
+            if (const uint32_t f = out.clusters[id].patches[0];
+                covered[f] == covered[i] && glm::dot(mesh.patches[f].normal, p.normal) >= cosTolerance &&
+                seeEachOther(mesh.patches[f], p)) {
                 chosen = id;
                 break;
             }

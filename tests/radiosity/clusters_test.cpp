@@ -13,6 +13,7 @@
 #include "pipeline_test_util.h"
 #include "test_support.h"
 
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
@@ -296,4 +297,52 @@ TEST_CASE("a curved cluster's far field follows its turning normals", "[clusters
     }
     INFO("worst " << worst);
     CHECK(opened > 5);
+}
+
+TEST_CASE("a ceiling above troffers hung 1 cm below it: no cluster-sized blotches", "[clusters]") {
+    // The bench hall's geometry in small: 8 × 8 × 3 m, four 0.6 m troffers 1 cm under the
+    // ceiling. The ceiling gets only indirect light. Patches above a troffer are covered
+    // (they see the troffer's back), the rest are open; a cluster holding both once took
+    // its cluster→cluster visibility from a covered sample and went dark as a whole.
+    // Against the unclustered solve, the open ceiling patches' indirect light: measured
+    // worst 8.6 %, RMS 1.6 % with covered patches apart; 76.5 % and 7.4 % when joined.
+    std::string objects = R"([
+        {"type": "quad", "material": "floor", "vertices": [[0,0,0],[0,0,8],[8,0,8],[8,0,0]]},
+        {"type": "quad", "material": "ceiling", "vertices": [[0,3,0],[8,3,0],[8,3,8],[0,3,8]]},
+        {"type": "quad", "material": "wall", "vertices": [[0,0,0],[0,3,0],[0,3,8],[0,0,8]]},
+        {"type": "quad", "material": "wall", "vertices": [[8,0,0],[8,0,8],[8,3,8],[8,3,0]]},
+        {"type": "quad", "material": "wall", "vertices": [[0,0,0],[8,0,0],[8,3,0],[0,3,0]]},
+        {"type": "quad", "material": "wall", "vertices": [[0,0,8],[0,3,8],[8,3,8],[8,0,8]]})";
+    const double troffers[4][2] = {{2.1, 2.3}, {5.7, 1.9}, {2.4, 5.8}, {6.1, 6.2}};
+    for (const auto& t : troffers)
+        objects += fmt::format(R"(, {{"type": "quad", "material": "troffer", "vertices": [[{0},2.99,{1}],[{2},2.99,{1}],[{2},2.99,{3}],[{0},2.99,{3}]]}})",
+                               t[0] - 0.3, t[1] - 0.3, t[0] + 0.3, t[1] + 0.3);
+    const std::string json = R"({"materials": {"floor": {"reflectance": 0.3}, "ceiling": {"reflectance": 0.8},
+        "wall": {"reflectance": 0.6}, "troffer": {"type": "emissive", "luminance_cd_m2": 2653, "reflectance": 0.7}},
+        "objects": )" + objects + R"(], "radiosity": {"max_edge": 0.25}})";
+    const std::string path = test::writeTempScene("troffer_ceiling", json);
+    auto clustered = app::runPipeline(path, test::quiet());
+    auto plain = app::runPipeline(path, test::quiet({{"clusters.enabled", "false"}}));
+    REQUIRE(clustered.mesh.patches.size() == plain.mesh.patches.size());
+    auto aboveTroffer = [&](const Vec3& c) {
+        for (const auto& t : troffers)
+            if (std::abs(c.x - t[0]) < 0.3 && std::abs(c.z - t[1]) < 0.3) return true;
+        return false;
+    };
+    double worst = 0, squares = 0;
+    int open = 0;
+    for (size_t i = 0; i < clustered.mesh.patches.size(); ++i) {
+        const Patch& p = clustered.mesh.patches[i];
+        if (p.normal.y > -0.99 || p.centroid.y < 2.995 || aboveTroffer(p.centroid)) continue;  // open ceiling only
+        ++open;
+        const double a = luminance(clustered.solution.indirect[i]), b = luminance(plain.solution.indirect[i]);
+        worst = std::max(worst, std::abs(a / b - 1));
+        squares += (a / b - 1) * (a / b - 1);
+    }
+    const double rms = std::sqrt(squares / std::max(open, 1));
+    INFO("open ceiling patches " << open << ", clustered/unclustered difference: worst " << 100 * worst << " %, RMS "
+                                 << 100 * rms << " %");
+    REQUIRE(open > 1000);
+    CHECK(worst < 0.15);
+    CHECK(rms < 0.02);
 }
