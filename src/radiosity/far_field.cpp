@@ -42,17 +42,11 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
     for (uint32_t k = node.begin; k < node.end; ++k) {
         const uint32_t m = tree.order[k];
         const Patch& p = mesh.patches[C.patches[m]];
-        // ∫ (y − at)(y − at)ᵀ dA = A [(c − at)(c − at)ᵀ + Σ_k (v_k − c)(v_k − c)ᵀ / 12].
-        const Vec3 dc = p.centroid - f.at;
-        glm::dmat3 second = glm::outerProduct(dc, dc);
-        for (int corner = 0; corner < 3; ++corner) {
-            const Vec3 v = mesh.corner(p, corner);
-            second += glm::outerProduct(v - p.centroid, v - p.centroid) / 12.0;
-            r = std::max(r, glm::length(v - f.at));
-        }
+        const Vec3 v0 = mesh.corner(p, 0), v1 = mesh.corner(p, 1), v2 = mesh.corner(p, 2);
+        for (const Vec3& v : {v0, v1, v2}) r = std::max(r, glm::length(v - f.at));
         const double y = double(f.sign) * rayrad::luminance(luminance[m]) * p.area;  // cd
-        moment += y * second;
-        turning += y * glm::outerProduct(dc, p.normal);
+        moment += y * triangleSecondMoment(v0, v1, v2, f.at);  // ∫ (y − at)(y − at)ᵀ dA, weighted
+        turning += y * glm::outerProduct(p.centroid - f.at, p.normal);
     }
     f.reach = 2 * r;
     f.moment = glm::mat3(moment);

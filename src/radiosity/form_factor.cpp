@@ -113,23 +113,26 @@ double pointKernelHessianTrace(const Vec3& u, const Vec3& n, const Vec3& m, cons
            24 * ab * glm::dot(u, M * u) / (s2 * s2) - 4 * ab * trace / (s2 * s);
 }
 
+glm::dmat3 triangleSecondMoment(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& c) {
+    const Vec3 ct = (v0 + v1 + v2) / 3.0;
+    glm::dmat3 second = glm::outerProduct(ct - c, ct - c);
+    for (const Vec3& v : {v0, v1, v2}) second += glm::outerProduct(v - ct, v - ct) / 12.0;
+    return second;
+}
+
 PolygonMoments polygonMoments(const std::vector<std::array<Vec3, 3>>& triangles) {
     PolygonMoments p;
+    std::vector<double> areas;
     double area = 0;
     for (const auto& t : triangles) {
-        const double a = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
-        p.centroid += a * (t[0] + t[1] + t[2]) / 3.0;
-        area += a;
+        areas.push_back(0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0])));
+        p.centroid += areas.back() * (t[0] + t[1] + t[2]) / 3.0;
+        area += areas.back();
     }
     if (area <= 0) return p;
     p.centroid /= area;
-    for (const auto& t : triangles) {
-        const double a = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
-        const Vec3 ct = (t[0] + t[1] + t[2]) / 3.0;
-        glm::dmat3 second = glm::outerProduct(ct - p.centroid, ct - p.centroid);
-        for (const Vec3& v : t) second += glm::outerProduct(v - ct, v - ct) / 12.0;
-        p.moment += a * second;
-    }
+    for (size_t k = 0; k < triangles.size(); ++k)
+        p.moment += areas[k] * triangleSecondMoment(triangles[k][0], triangles[k][1], triangles[k][2], p.centroid);
     return p;
 }
 
@@ -138,7 +141,9 @@ double formFactorSecondOrder(const Vec3& x, const Vec3& n, const PolygonMoments&
     const Vec3 u = polygon.centroid - x;
     const double s = glm::dot(u, u);
     const double a = glm::dot(n, u), b = -glm::dot(polyNormal, u);
-    if (a <= 0 || b <= 0) return 0.0;  // the polygon is planar: x behind it sees none of it
+    // b ≤ 0: x is behind the polygon's plane and sees none of it. a ≤ 0 cannot happen with
+    // the whole polygon above x's horizon, as the caller ensures, but for rounding.
+    if (a <= 0 || b <= 0) return 0.0;
     const double f = area * a * b / (s * s) + 0.5 * pointKernelHessianTrace(u, n, polyNormal, polygon.moment);
     return std::max(0.0, f) / kPi;
 }

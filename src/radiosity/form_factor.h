@@ -29,6 +29,10 @@ double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, c
 ///   s = |u|², a = n·u, b = −m·u, v = b n − a m.
 double pointKernelHessianTrace(const Vec3& u, const Vec3& n, const Vec3& m, const glm::dmat3& M);
 
+/// A triangle's second moment about a point c per unit area, ∫_T (y − c)(y − c)ᵀ dA / A_T
+/// = (c_t − c)(c_t − c)ᵀ + Σ_k (v_k − c_t)(v_k − c_t)ᵀ / 12, c_t its centroid (m²).
+glm::dmat3 triangleSecondMoment(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& c);
+
 /// A planar polygon's area centroid and second moment about it, M = ∫ (y − c)(y − c)ᵀ dA
 /// (m⁴), from its triangles: per triangle A [(c_t − c)(c_t − c)ᵀ + Σ_k (v_k − c_t)(v_k − c_t)ᵀ / 12].
 struct PolygonMoments {
