@@ -12,7 +12,62 @@ namespace {
 constexpr double kFarDiameters = 4.0;
 /// Below this form factor one visibility ray instead of four (see the header).
 constexpr double kOneRayFormFactor = 1e-3;
+
+/// The point kernel g = cosθ_x cosθ_C / r² = (n·d)(−n_C·d) / r⁴ (1/m²) at x with unit
+/// normal n from the source cluster's centroid, d = centroid − x.
+double pointKernel(const Cluster& source, const Vec3& x, const Vec3& n) {
+    const Vec3 d = source.centroid - x;
+    const double r2 = glm::dot(d, d);
+    if (r2 <= 0) return 0.0;
+    return std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(source.normal, d)) / (r2 * r2);
 }
+
+/// What receiverShape divides the members' kernels by (1/m²): g at the receiver's
+/// centroid with its mean normal. A receiver whose centroid lies (nearly) in the
+/// source's plane, with members on both sides, has a g of rounding size there: dividing
+/// by it gave ratios of 1e13 (a mirror image of a box face level with a wall's
+/// centroid). Then the area-weighted mean of g over the members instead. Every member's
+/// g is at most 1/r² ≤ 1/(r_centre − diameter/2)², and so is the mean: when g at the
+/// centre is at least 1e-3 of that bound the mean need not be summed.
+double shapeReference(const PatchMesh& mesh, const Cluster& source, const Cluster& receiver) {
+    double atCentre = pointKernel(source, receiver.centroid, receiver.normal);
+    if (atCentre <= 0) return 0.0;
+    const double closest = glm::length(source.centroid - receiver.centroid) - 0.5 * receiver.diameter;
+    if (closest > 0 && atCentre * closest * closest >= 1e-3) return atCentre;
+    double mean = 0, area = 0;
+    for (uint32_t j : receiver.patches) {
+        const Patch& p = mesh.patches[j];
+        mean += p.area * pointKernel(source, p.centroid, receiver.normal);
+        area += p.area;
+    }
+    mean /= area;
+    return atCentre < 1e-3 * mean ? mean : atCentre;
+}
+
+/// F at the receiver's centroid as its own surface sees the source (header): the member
+/// sum at the receiver's distinct sample patches, their positions and normals, carried
+/// to the centroid by the point kernel, F_c = g_ref Σ_s A_s F_s / Σ_s A_s g_s, so that
+/// member k receives π L V g_k Σ A_s F_s / Σ A_s g_s. Samples the kernel does not reach
+/// (g_s = 0) are left out of both sums. Returns a negative value when there is nothing
+/// to calibrate with (g_ref = 0 or no sample with g_s > 0).
+double sampledFormFactor(const PatchMesh& sourceMesh, const Cluster& source, const SourceGeometry* geometry,
+                         const PatchMesh& receiverMesh, const Cluster& receiver, double analyticDistance) {
+    const double reference = shapeReference(receiverMesh, source, receiver);
+    if (reference <= 0) return -1.0;
+    double sumF = 0, sumG = 0;
+    for (int s = 0; s < 4; ++s) {
+        bool repeat = false;
+        for (int m = 0; m < s; ++m) repeat |= receiver.samples[m] == receiver.samples[s];
+        if (repeat) continue;
+        const Patch& p = receiverMesh.patches[receiver.samples[s]];
+        const double g = pointKernel(source, p.centroid, p.normal);
+        if (g <= 0) continue;
+        sumF += p.area * memberFormFactorSum(sourceMesh, source, geometry, p.centroid, p.normal, analyticDistance);
+        sumG += p.area * g;
+    }
+    return sumG > 0 ? reference * sumF / sumG : -1.0;
+}
+}  // namespace
 
 SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, const MemberTree& tree,
                               double farDiameters) {
@@ -54,24 +109,39 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
 
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance, const SourceGeometry* geometry) {
+                       double analyticDistance, bool receiverDetail, const SourceGeometry* geometry) {
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
-    double f = 0;
+    double f = -1;
     if (r2 > kFarDiameters * kFarDiameters * source.diameter * source.diameter) {
         f = formFactorPointApprox(receiver.centroid, receiver.normal, source.centroid, source.normal,
                                   source.projectedArea);
     } else {
-        f = memberFormFactorSum(sourceMesh, source, geometry, receiver.centroid, receiver.normal, analyticDistance);
+        if (receiverDetail && !receiver.planar)
+            f = sampledFormFactor(sourceMesh, source, geometry, receiverMesh, receiver, analyticDistance);
+        if (f < 0)
+            f = memberFormFactorSum(sourceMesh, source, geometry, receiver.centroid, receiver.normal,
+                                    analyticDistance);
     }
     if (f <= 0) return 0.0;
+    // V from the sample pairs that face each other. On a curved cluster (a ball's cap) a
+    // sample may face away from the other end: its ray runs through the ball itself and
+    // voted "occluded" for light that only the members facing the source receive.
+    auto faces = [&](int k) {
+        const Patch& at = receiverMesh.patches[receiver.samples[k]];
+        const Patch& from = sourceMesh.patches[sourceSamples[k]];
+        const Vec3 u = from.centroid - at.centroid;
+        return glm::dot(at.normal, u) > 0 && glm::dot(from.normal, u) < 0;
+    };
+    bool anyFacing = false;
+    for (int k = 0; k < 4 && !anyFacing; ++k) anyFacing = faces(k);
     int visible = 0, rays = 0;
     const int samples = f < kOneRayFormFactor ? 1 : 4;
-    for (int k = 0; k < samples; ++k) {
+    for (int k = 0; k < 4 && rays < samples; ++k) {
         // Skip repeated pairs (small clusters list the same member several times).
         bool repeat = false;
         for (int m = 0; m < k; ++m) repeat |= sourceSamples[m] == sourceSamples[k] && receiver.samples[m] == receiver.samples[k];
-        if (repeat) continue;
+        if (repeat || (anyFacing && !faces(k))) continue;
         ++rays;
         const Patch& at = receiverMesh.patches[receiver.samples[k]];
         visible += vis.visibleFromSurface(at.centroid, at.normal, sourceMesh.patches[sourceSamples[k]].centroid);
@@ -84,36 +154,11 @@ void receiverShape(const PatchMesh& mesh, const Cluster& source, const Cluster& 
     const size_t n = receiver.patches.size();
     shape.assign(n, 1.0);
     if (!detail || n == 1) return;
-    // Point kernel cosθ_x cosθ_C / r² = (n·d)(−n_C·d) / r⁴ from the source cluster's
-    // centroid, d = centroid − x.
-    auto kernel = [&](const Vec3& x, const Vec3& normal) {
-        Vec3 d = source.centroid - x;
-        double r2 = glm::dot(d, d);
-        if (r2 <= 0) return 0.0;
-        return std::max(0.0, glm::dot(normal, d)) * std::max(0.0, -glm::dot(source.normal, d)) / (r2 * r2);
-    };
-    double atCentre = kernel(receiver.centroid, receiver.normal);
-    if (atCentre <= 0) return;  // the cluster-level transfer is 0 as well
-    // A receiver whose centroid lies (nearly) in the source's plane, with members on
-    // both sides, has a kernel of rounding size at the centre: dividing by it gave
-    // ratios of 1e13 (a mirror image of a box face level with a wall's centroid). Then
-    // normalise by the area-weighted mean over the members instead.
-    // Every member's kernel is at most 1/r² ≤ 1/(r_centre − diameter/2)², and so is the
-    // mean: when atCentre is at least 1e-3 of that bound the mean need not be summed.
-    const double closest = glm::length(source.centroid - receiver.centroid) - 0.5 * receiver.diameter;
-    if (!(closest > 0 && atCentre * closest * closest >= 1e-3)) {
-        double mean = 0, area = 0;
-        for (uint32_t j : receiver.patches) {
-            const Patch& p = mesh.patches[j];
-            mean += p.area * kernel(p.centroid, receiver.normal);
-            area += p.area;
-        }
-        mean /= area;
-        if (atCentre < 1e-3 * mean) atCentre = mean;
-    }
+    const double reference = shapeReference(mesh, source, receiver);
+    if (reference <= 0) return;  // the cluster-level transfer is 0 as well
     for (size_t k = 0; k < n; ++k) {
         const Patch& p = mesh.patches[receiver.patches[k]];
-        shape[k] = kernel(p.centroid, p.normal) / atCentre;
+        shape[k] = pointKernel(source, p.centroid, p.normal) / reference;
     }
 }
 

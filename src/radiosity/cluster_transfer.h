@@ -36,9 +36,18 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
 /// centroid (with its mean normal) from the source cluster at unit luminance.
 /// Adaptive accuracy instead of a deeper hierarchy: far away (beyond 4 source
 /// diameters) the point approximation A_C cosθ_C cosθ_D / (π r²); nearer, the sum of the
-/// member patches' form factors (memberFormFactorSum, through `geometry` when given). V is the visible fraction of
-/// up to four rays from `sourceSamples` (member patches of the source, see
-/// powerSamples) to the receiver's sample patches.
+/// member patches' form factors (memberFormFactorSum, through `geometry` when given).
+/// Nearer, with `receiverDetail` (receiverShape shares the light by the point kernel g),
+/// that sum is taken where the receiver's surface is: at its sample patches, with their
+/// own normals, and carried to the centroid by g, F_c = g_c Σ_s A_s F_s / Σ_s A_s g_s.
+/// The sum at the centroid with the mean normal lost light on curved receivers, whose
+/// centroid lies off their surface: a closed sphere's solve at 20° normal tolerance
+/// left −0.31 % of its light unaccounted; with the samples +0.025 % (no clusters: +0.08 %).
+/// V is the visible fraction of up to four rays from `sourceSamples` (member patches of
+/// the source, see powerSamples) to the receiver's sample patches, counting only the
+/// pairs that face each other when any does: on a curved cluster a sample facing away
+/// from the other end sent its ray through its own object (balls on a floor came out
+/// 0.6 % dark at 20°).
 /// The source may be a mirror image (its own mesh, and a MirrorPath as `vis`).
 /// A pair with F < 10⁻³ (most pairs of a furnished room) takes V from the first sample
 /// pair alone: a wrong V there costs at most a thousandth of the source's luminance. The
@@ -46,7 +55,7 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
 /// shots delivered with the same rays.
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance, const SourceGeometry* geometry = nullptr);
+                       double analyticDistance, bool receiverDetail, const SourceGeometry* geometry = nullptr);
 
 /// How a cluster→cluster shot from `source` is shared among the receiver's patches:
 /// shape[k] multiplies the illuminance computed at the receiver's centroid for member k.

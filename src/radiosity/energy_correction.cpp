@@ -34,7 +34,7 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
     Correction moved;
     V received =
         shotSoFar * s.weight * clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
-                                                      &from.geometry);
+                                               m_clusterOptions.receiverDetail, &from.geometry);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);

@@ -393,7 +393,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                     continue;
                 }
                 double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
-                                           &from.geometry);
+                                           m_clusterOptions.receiverDetail, &from.geometry);
                 V flux(0.0);
                 if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
                 if (throughMirrors) deliveredTo[d] = flux;

@@ -346,3 +346,48 @@ TEST_CASE("a ceiling above troffers hung 1 cm below it: no cluster-sized blotche
     CHECK(worst < 0.15);
     CHECK(rms < 0.02);
 }
+
+TEST_CASE("balls on the floor: clustered against unclustered, patch by patch", "[clusters]") {
+    // A 4 × 3 × 4 m room, four tessellated balls standing on the floor (touching it, as
+    // furniture does), one point light under the ceiling; the indirect light of every
+    // patch of the clustered solve (default settings) against the unclustered one.
+    // A ball's cluster is a curved cap: its centroid lies inside the ball, and some of
+    // its visibility samples face away from a source (their rays ran through the ball
+    // and voted "occluded"). Measured (relative L2 difference, mean difference):
+    // balls 2.97 %, +0.31 % at 10°, 4.31 %, +0.17 % at 20°; the room's surfaces 4.4 %,
+    // ±0.03 % at any tolerance. Before the calibrated transfer (sampledFormFactor) and the
+    // facing visibility pairs: balls 5.13 % at 10°, 6.10 % and −0.32 % at 20°; with the
+    // calibration alone the balls came out 0.97 % dark at 20°.
+    const std::string json = R"({"materials": {"wall": {"reflectance": 0.6}, "floor": {"reflectance": 0.3},
+        "ball": {"reflectance": [0.7, 0.5, 0.4]}},
+        "objects": [
+          {"type": "box", "material": "wall", "min": [0, 0, 0], "max": [4, 3, 4], "facing": "inward"},
+          {"type": "sphere", "material": "ball", "center": [1.2, 0.45, 1.3], "radius": 0.45, "subdivisions": 16},
+          {"type": "sphere", "material": "ball", "center": [2.8, 0.45, 1.1], "radius": 0.45, "subdivisions": 16},
+          {"type": "sphere", "material": "ball", "center": [2.1, 0.6, 2.9], "radius": 0.6, "subdivisions": 20},
+          {"type": "sphere", "material": "ball", "center": [0.7, 0.25, 3.1], "radius": 0.25, "subdivisions": 10}],
+        "lights": [{"type": "point", "position": [2.2, 2.8, 1.7], "intensity_cd": 500}],
+        "radiosity": {"max_edge": 0.25}})";
+    const std::string path = test::writeTempScene("balls_room", json);
+    auto plain = app::runPipeline(path, test::quiet({{"clusters.enabled", "false"}}));
+    auto clustered = app::runPipeline(path, test::quiet());
+    REQUIRE(clustered.mesh.patches.size() == plain.mesh.patches.size());
+    REQUIRE(clustered.clustering.multiPatchClusters() > 500);
+    const int ballMaterial = plain.mesh.patches.back().material;  // the balls come last
+    double squares[2] = {0, 0}, reference[2] = {0, 0}, sum[2][2] = {{0, 0}, {0, 0}};
+    for (size_t i = 0; i < plain.mesh.patches.size(); ++i) {
+        const Patch& p = plain.mesh.patches[i];
+        const int ball = p.material == ballMaterial ? 1 : 0;
+        const double a = luminance(clustered.solution.indirect[i]), b = luminance(plain.solution.indirect[i]);
+        squares[ball] += p.area * (a - b) * (a - b);
+        reference[ball] += p.area * b * b;
+        sum[ball][0] += p.area * a;
+        sum[ball][1] += p.area * b;
+    }
+    for (int ball : {0, 1}) {
+        const double l2 = std::sqrt(squares[ball] / reference[ball]), mean = sum[ball][0] / sum[ball][1] - 1;
+        INFO((ball ? "balls" : "room") << ": relative L2 difference " << 100 * l2 << " %, mean " << 100 * mean << " %");
+        CHECK(l2 < 0.05);
+        CHECK(std::abs(mean) < 0.005);
+    }
+}
