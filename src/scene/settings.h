@@ -42,7 +42,7 @@ struct ClusterOptions {
     /// area"): voxel edge = sqrt(sizePercent/100 · referenceArea).
     double sizePercent = 1.0;
     double referenceArea = 0;       ///< m²; 0 = the area of the largest input surface
-    double normalToleranceDeg = 10; ///< patches of one cluster have normals within this of the first (curvature costs energy accuracy: docs/validation.md)
+    double normalToleranceDeg = 20; ///< patches of one cluster have normals within this of the first (curved clusters: docs/validation.md)
     /// ΔI_max in lx: cluster→cluster transfer only where one shot of the cluster's total
     /// power would give the receiver less than this. 0 = derive: 20 % of the mean
     /// illuminance (direct + estimated indirect) over the scene (see docs/validation.md).
