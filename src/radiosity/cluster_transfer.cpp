@@ -127,21 +127,20 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
     // V from the sample pairs that face each other. On a curved cluster (a ball's cap) a
     // sample may face away from the other end: its ray runs through the ball itself and
     // voted "occluded" for light that only the members facing the source receive.
-    auto faces = [&](int k) {
+    bool faces[4], anyFacing = false;
+    for (int k = 0; k < 4; ++k) {
         const Patch& at = receiverMesh.patches[receiver.samples[k]];
-        const Patch& from = sourceMesh.patches[sourceSamples[k]];
-        const Vec3 u = from.centroid - at.centroid;
-        return glm::dot(at.normal, u) > 0 && glm::dot(from.normal, u) < 0;
-    };
-    bool anyFacing = false;
-    for (int k = 0; k < 4 && !anyFacing; ++k) anyFacing = faces(k);
+        const Vec3 u = sourceMesh.patches[sourceSamples[k]].centroid - at.centroid;
+        faces[k] = glm::dot(at.normal, u) > 0 && glm::dot(sourceMesh.patches[sourceSamples[k]].normal, u) < 0;
+        anyFacing |= faces[k];
+    }
     int visible = 0, rays = 0;
     const int samples = f < kOneRayFormFactor ? 1 : 4;
     for (int k = 0; k < 4 && rays < samples; ++k) {
         // Skip repeated pairs (small clusters list the same member several times).
         bool repeat = false;
         for (int m = 0; m < k; ++m) repeat |= sourceSamples[m] == sourceSamples[k] && receiver.samples[m] == receiver.samples[k];
-        if (repeat || (anyFacing && !faces(k))) continue;
+        if (repeat || (anyFacing && !faces[k])) continue;
         ++rays;
         const Patch& at = receiverMesh.patches[receiver.samples[k]];
         visible += vis.visibleFromSurface(at.centroid, at.normal, sourceMesh.patches[sourceSamples[k]].centroid);
