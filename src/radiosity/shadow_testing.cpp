@@ -25,9 +25,9 @@ Rgb unshadowedArea(const AreaLight& light, const Vec3& x, const Vec3& n, bool& e
     const double far = kRankPointDiameters * 2 * light.radius;
     exact = r2 <= far * far;
     if (!exact) {
-        const double r = std::sqrt(r2);
-        const double cosX = glm::dot(n, d) / r, cosY = -glm::dot(light.normal, d) / r;
-        return cosX > 0 && cosY > 0 ? light.luminance * (light.area * cosX * cosY / r2) : Rgb(0.0);
+        // cosθ_x cosθ_y / r² = (n·d)(−N·d) / r⁴
+        const double nd = glm::dot(n, d), ld = -glm::dot(light.normal, d);
+        return nd > 0 && ld > 0 ? light.luminance * (light.area * nd * ld / (r2 * r2)) : Rgb(0.0);
     }
     const double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
     return light.luminance * (kPi * std::max(0.0, f));  // π L F
