@@ -26,8 +26,11 @@ void printSolveSummary(const PipelineRun& run) {
             t.imageTransfers > 0 ? fmt::format(" ({} from mirror images, {:.1f} % of those carrying light)", t.imageTransfers,
                                                100.0 * static_cast<double>(t.imageTransfersLit) / t.imageTransfers)
                                  : "";
-        fmt::print(stderr, "transfers: {} cluster→cluster{}, {} patch→patch pairs, {} corrections, {} push-pulls; ΔI_max {:.4g} lx\n",
-                   t.clusterTransfers, throughImages, t.patchPairs, t.corrections, t.pushPulls, run.maxIlluminanceStep);
+        fmt::print(stderr,
+                   "transfers: {} cluster→cluster{} ({} split by a shadow's edge), {} patch→patch pairs, {} corrections, "
+                   "{} push-pulls; ΔI_max {:.4g} lx\n",
+                   t.clusterTransfers, throughImages, t.splitTransfers, t.patchPairs, t.corrections, t.pushPulls,
+                   run.maxIlluminanceStep);
     }
     std::string alsoAbsorbed;
     if (!run.scene.mirrors.empty() && run.scene.solver.mirrorImages)

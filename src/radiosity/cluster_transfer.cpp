@@ -109,7 +109,9 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
 
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
-                       double analyticDistance, bool receiverDetail, const SourceGeometry* geometry) {
+                       double analyticDistance, bool receiverDetail, const SourceGeometry* geometry,
+                       SplitTransfer* split) {
+    if (split) *split = SplitTransfer{};
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
     double f = -1;
@@ -145,7 +147,29 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
         const Patch& at = receiverMesh.patches[receiver.samples[k]];
         visible += vis.visibleFromSurface(at.centroid, at.normal, sourceMesh.patches[sourceSamples[k]].centroid);
     }
+    if (split && visible > 0 && visible < rays) {
+        split->partial = true;
+        split->open = kPi * f;
+    }
     return kPi * f * visible / rays;
+}
+
+void memberVisibility(const PatchMesh& sourceMesh, const ClusterSamples& sourceSamples, const PatchMesh& receiverMesh,
+                      const Cluster& receiver, const Visibility& vis, std::vector<double>& visible) {
+    visible.assign(receiver.patches.size(), 0.0);
+    for (size_t k = 0; k < receiver.patches.size(); ++k) {
+        const Patch& at = receiverMesh.patches[receiver.patches[k]];
+        // The source samples this member faces (all four when it faces none).
+        uint32_t facing[4];
+        int count = 0;
+        for (uint32_t s : sourceSamples) {
+            const Vec3 u = sourceMesh.patches[s].centroid - at.centroid;
+            if (glm::dot(at.normal, u) > 0 && glm::dot(sourceMesh.patches[s].normal, u) < 0) facing[count++] = s;
+        }
+        if (count == 0) continue;  // faces no sample: the shape gives it (almost) nothing anyway
+        const Patch& to = sourceMesh.patches[facing[k % count]];
+        visible[k] = vis.visibleFromSurface(at.centroid, at.normal, to.centroid) ? 1.0 : 0.0;
+    }
 }
 
 void receiverShape(const PatchMesh& mesh, const Cluster& source, const Cluster& receiver, bool detail,

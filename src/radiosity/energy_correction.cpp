@@ -32,12 +32,18 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
     V shotSoFar = m_light[c].total - m_light[c].unshot;
     Correction moved;
-    V received =
-        shotSoFar * s.weight * clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
-                                               m_clusterOptions.receiverDetail, &from.geometry);
+    SplitTransfer split;
+    const double t = clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
+                                     m_clusterOptions.receiverDetail, &from.geometry, &split);
+    V received = shotSoFar * s.weight * (split.partial ? split.open : t);
     if (received != V(0.0)) {
         std::vector<double> shape;
         receiverShape(m_mesh, C, D, m_clusterOptions.receiverDetail, shape);
+        if (split.partial) {  // as the shots delivered it: each member's own V
+            std::vector<double> visible;
+            memberVisibility(from.mesh(), shotSamples, m_mesh, D, *s.vis, visible);
+            for (size_t k = 0; k < shape.size(); ++k) shape[k] *= visible[k];
+        }
         for (size_t k = 0; k < D.patches.size(); ++k) {
             uint32_t j = D.patches[k];
             receive(j, -(received * shape[k]));

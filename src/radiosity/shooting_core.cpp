@@ -215,10 +215,12 @@ void ShootingCore<V>::pull(size_t c) {
 }
 
 template <class V>
-V ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e) {
+V ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e, const std::vector<double>* visible) {
     const Cluster& D = m_clustering.clusters[receiver];
     thread_local std::vector<double> shape;
     receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
+    if (visible)
+        for (size_t k = 0; k < shape.size(); ++k) shape[k] *= (*visible)[k];
     V flux(0.0);
     m_reached[receiver] = 1;
     for (size_t k = 0; k < D.patches.size(); ++k) {
@@ -369,7 +371,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         const Shooter& from = *shooters[si];
         const Cluster& Cs = from.cluster();
         const ClusterSamples localSamples = from.local(samples);
-        std::atomic<int64_t> clusterTransfers{0}, patchPairs{0}, lit{0};
+        std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, patchPairs{0}, lit{0};
         // Deliveries per receiver when shooting through mirrors too, for the mirrors'
         // account and the conservation (summed in order).
         std::vector<V> deliveredTo(throughMirrors ? n : 0, V(0.0));
@@ -380,7 +382,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         // Cluster→cluster now; the receivers within r_v are listed for patch→patch.
         std::vector<char> isNear(n, 0);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
-            int64_t cc = 0, carried = 0;
+            int64_t cc = 0, carried = 0, split = 0;
             for (size_t d = range.begin(); d != range.end(); ++d) {
                 if (corrected[si][d]) continue;
                 const Cluster& D = m_clustering.clusters[d];
@@ -392,14 +394,22 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                     isNear[d] = 1;
                     continue;
                 }
+                SplitTransfer parts;
                 double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
-                                           m_clusterOptions.receiverDetail, &from.geometry);
+                                           m_clusterOptions.receiverDetail, &from.geometry, &parts);
                 V flux(0.0);
-                if (t > 0) flux = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
+                if (parts.partial) {  // a shadow's edge crosses D: each member's own V
+                    thread_local std::vector<double> visible;
+                    memberVisibility(from.mesh(), localSamples, m_mesh, D, *s.vis, visible);
+                    flux = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++carried, ++split;
+                } else if (t > 0) {
+                    flux = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
+                }
                 if (throughMirrors) deliveredTo[d] = flux;
                 ++cc;
             }
             clusterTransfers += cc;
+            splitTransfers += split;
             lit += carried;
         });
         std::vector<size_t> nearReceivers;
@@ -419,6 +429,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
             });
         }
         m_stats.clusterTransfers += clusterTransfers;
+        m_stats.splitTransfers += splitTransfers;
         if (s.image) m_stats.imageTransfers += clusterTransfers, m_stats.imageTransfersLit += lit;
         m_stats.patchPairs += patchPairs;
         for (const V& flux : deliveredTo) {

@@ -117,10 +117,10 @@ class ShootingCore final : public ShootingCoreBase {
     int radiusFor(size_t c) const;
     void pushPull(size_t c);
     void pull(size_t c);
-    /// A cluster→cluster shot: adds e · shape_k (see receiverShape) to this shot's
-    /// pending illuminance of the receiver's members (m_shotPending). Returns the flux
-    /// delivered, Σ e shape_k A_k (lm per channel).
-    V addPending(const Cluster& source, size_t receiver, const V& e);
+    /// A cluster→cluster shot: adds e · shape_k (see receiverShape), × visible[k] when
+    /// given (memberVisibility), to this shot's pending illuminance of the receiver's
+    /// members (m_shotPending). Returns the flux delivered, Σ e shape_k A_k (lm per channel).
+    V addPending(const Cluster& source, size_t receiver, const V& e, const std::vector<double>* visible = nullptr);
     void receive(size_t j, const V& deltaE);
     /// Patch→patch from cluster c of source s (as `from` shows it) to the receiver's
     /// patches: adds ΔE_j to into[j]. Returns the flux delivered, Σ ΔE_j A_j (lm per channel).

@@ -32,6 +32,8 @@ constexpr double kConservationBound = 3.0;
 /// Counters of what the solve did.
 struct ShootingStatistics {
     int64_t clusterTransfers = 0;  ///< cluster→cluster receivers
+    /// Of those, split by a shadow's edge (sample rays disagreeing): each member its own ray.
+    int64_t splitTransfers = 0;
     /// Of those, from a mirror image, and how many of them carried light (F V > 0): the
     /// rest were tested and found dark through the chain's apertures.
     int64_t imageTransfers = 0, imageTransfersLit = 0;

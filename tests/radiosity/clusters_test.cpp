@@ -358,6 +358,11 @@ TEST_CASE("balls on the floor: clustered against unclustered, patch by patch", "
     // ±0.03 % at any tolerance. Before the calibrated transfer (sampledFormFactor) and the
     // facing visibility pairs: balls 5.13 % at 10°, 6.10 % and −0.32 % at 20°; with the
     // calibration alone the balls came out 0.97 % dark at 20°.
+    // The floor beside the balls: a wall's or the ceiling's cluster shot one V to a floor
+    // cluster that a ball half shadows, the shadow spread evenly over its members: floor
+    // 10.0 % L2 (in a ball's shadow 112 lx against 61 lx). With each member's own ray when
+    // the sample rays disagree (memberVisibility): floor 4.64 %, +0.35 %; room 2.23 %,
+    // +0.03 %; balls 4.16 %, +0.04 %.
     const std::string json = R"({"materials": {"wall": {"reflectance": 0.6}, "floor": {"reflectance": 0.3},
         "ball": {"reflectance": [0.7, 0.5, 0.4]}},
         "objects": [
@@ -374,20 +379,28 @@ TEST_CASE("balls on the floor: clustered against unclustered, patch by patch", "
     REQUIRE(clustered.mesh.patches.size() == plain.mesh.patches.size());
     REQUIRE(clustered.clustering.multiPatchClusters() > 500);
     const int ballMaterial = plain.mesh.patches.back().material;  // the balls come last
-    double squares[2] = {0, 0}, reference[2] = {0, 0}, sum[2][2] = {{0, 0}, {0, 0}};
+    // Room, balls, and the floor they stand on (also part of the room).
+    double squares[3] = {0, 0, 0}, reference[3] = {0, 0, 0}, sum[3][2] = {{0, 0}, {0, 0}, {0, 0}};
     for (size_t i = 0; i < plain.mesh.patches.size(); ++i) {
         const Patch& p = plain.mesh.patches[i];
-        const int ball = p.material == ballMaterial ? 1 : 0;
         const double a = luminance(clustered.solution.indirect[i]), b = luminance(plain.solution.indirect[i]);
+        if (p.normal.y > 0.9 && p.centroid.y < 0.01) {
+            squares[2] += p.area * (a - b) * (a - b);
+            reference[2] += p.area * b * b;
+            sum[2][0] += p.area * a;
+            sum[2][1] += p.area * b;
+        }
+        const int ball = p.material == ballMaterial ? 1 : 0;
         squares[ball] += p.area * (a - b) * (a - b);
         reference[ball] += p.area * b * b;
         sum[ball][0] += p.area * a;
         sum[ball][1] += p.area * b;
     }
-    for (int ball : {0, 1}) {
-        const double l2 = std::sqrt(squares[ball] / reference[ball]), mean = sum[ball][0] / sum[ball][1] - 1;
-        INFO((ball ? "balls" : "room") << ": relative L2 difference " << 100 * l2 << " %, mean " << 100 * mean << " %");
-        CHECK(l2 < 0.05);
+    for (int part : {0, 1, 2}) {
+        const double l2 = std::sqrt(squares[part] / reference[part]), mean = sum[part][0] / sum[part][1] - 1;
+        INFO((part == 0 ? "room" : part == 1 ? "balls" : "floor") << ": relative L2 difference " << 100 * l2
+                                                                  << " %, mean " << 100 * mean << " %");
+        CHECK(l2 < (part == 2 ? 0.06 : 0.05));
         CHECK(std::abs(mean) < 0.005);
     }
 }
