@@ -154,12 +154,15 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
     return kPi * f * visible / rays;
 }
 
+/// Rays per receiving member in a split transfer (memberVisibility).
+constexpr int kMemberRays = 2;
+
 void memberVisibility(const PatchMesh& sourceMesh, const ClusterSamples& sourceSamples, const PatchMesh& receiverMesh,
                       const Cluster& receiver, const Visibility& vis, std::vector<double>& visible) {
     visible.assign(receiver.patches.size(), 0.0);
     for (size_t k = 0; k < receiver.patches.size(); ++k) {
         const Patch& at = receiverMesh.patches[receiver.patches[k]];
-        // The source samples this member faces (all four when it faces none).
+        // The source samples this member faces.
         uint32_t facing[4];
         int count = 0;
         for (uint32_t s : sourceSamples) {
@@ -167,8 +170,11 @@ void memberVisibility(const PatchMesh& sourceMesh, const ClusterSamples& sourceS
             if (glm::dot(at.normal, u) > 0 && glm::dot(sourceMesh.patches[s].normal, u) < 0) facing[count++] = s;
         }
         if (count == 0) continue;  // faces no sample: the shape gives it (almost) nothing anyway
-        const Patch& to = sourceMesh.patches[facing[k % count]];
-        visible[k] = vis.visibleFromSurface(at.centroid, at.normal, to.centroid) ? 1.0 : 0.0;
+        const int rays = std::min(count, kMemberRays);
+        int seen = 0;
+        for (int m = 0; m < rays; ++m)
+            seen += vis.visibleFromSurface(at.centroid, at.normal, sourceMesh.patches[facing[(k + m) % count]].centroid);
+        visible[k] = static_cast<double>(seen) / rays;
     }
 }
 

@@ -65,11 +65,14 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
                        double analyticDistance, bool receiverDetail, const SourceGeometry* geometry = nullptr,
                        SplitTransfer* split = nullptr);
 
-/// For a pair whose sample rays disagreed: visible[k] = 1 when the receiver's member k
-/// sees the source, 0 when not, one ray from its centroid to one of the source's sample
-/// patches (in turn, those it faces when any). A ball standing on a floor shadows part of
-/// a floor cluster; the cluster's single V spread that shadow evenly over its members
-/// (the floor beside the balls 10 % L2 from the unclustered solve).
+/// For a pair whose sample rays disagreed: visible[k], the fraction of two rays from the
+/// receiver's member k to the source's sample patches it faces (the pair (k, k+1) of
+/// them in turn) that arrive; 0 for a member facing none. A ball standing on a floor
+/// shadows part of a floor cluster; the cluster's single V spread that shadow evenly
+/// over its members (the floor beside the balls 10 % L2 from the unclustered solve).
+/// One ray per member left bands on the hall's desk fronts (a member's V all or nothing
+/// from one point of a large source); four gave the hall the same error as two, at more
+/// rays (see docs/validation.md).
 void memberVisibility(const PatchMesh& sourceMesh, const ClusterSamples& sourceSamples, const PatchMesh& receiverMesh,
                       const Cluster& receiver, const Visibility& vis, std::vector<double>& visible);
 

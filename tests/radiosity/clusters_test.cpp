@@ -360,9 +360,9 @@ TEST_CASE("balls on the floor: clustered against unclustered, patch by patch", "
     // calibration alone the balls came out 0.97 % dark at 20°.
     // The floor beside the balls: a wall's or the ceiling's cluster shot one V to a floor
     // cluster that a ball half shadows, the shadow spread evenly over its members: floor
-    // 10.0 % L2 (in a ball's shadow 112 lx against 61 lx). With each member's own ray when
-    // the sample rays disagree (memberVisibility): floor 4.64 %, +0.35 %; room 2.23 %,
-    // +0.03 %; balls 4.16 %, +0.04 %.
+    // 10.0 % L2 (in a ball's shadow 112 lx against 61 lx). With each member's own two rays
+    // when the sample rays disagree (memberVisibility): floor 4.60 %, +0.39 %; room
+    // 2.20 %, +0.04 %; balls 4.15 %, +0.005 %.
     const std::string json = R"({"materials": {"wall": {"reflectance": 0.6}, "floor": {"reflectance": 0.3},
         "ball": {"reflectance": [0.7, 0.5, 0.4]}},
         "objects": [
