@@ -401,7 +401,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V
                     thread_local std::vector<double> visible;
                     memberVisibility(from.mesh(), localSamples, m_mesh, D, *s.vis, visible);
-                    flux = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++carried, ++split;
+                    flux = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++split;
+                    if (flux != V(0.0)) ++carried;  // every member's rays may have been blocked
                 } else if (t > 0) {
                     flux = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
                 }
