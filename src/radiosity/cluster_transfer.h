@@ -32,6 +32,13 @@ SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, cons
 double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, const SourceGeometry* geometry,
                            const Vec3& x, const Vec3& n, double analyticDistance);
 
+/// What clusterTransfer found of a pair whose sample rays disagreed (a shadow's edge
+/// crossing it): then memberVisibility says which of the receiver's members are lit.
+struct SplitTransfer {
+    bool partial = false;  ///< some sample rays were blocked and some were not
+    double open = 0;       ///< π F without V, lx per cd/m²
+};
+
 /// π F(dA_D → C) · V(C, D) in lx per cd/m²: the illuminance at the receiver cluster's
 /// centroid (with its mean normal) from the source cluster at unit luminance.
 /// Adaptive accuracy instead of a deeper hierarchy: far away (beyond 4 source
@@ -54,12 +61,7 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
 /// sample pair alone: a wrong V there costs at most a thousandth of the source's luminance. The
 /// rule depends on geometry only, so the energy correction reconstructs what earlier
 /// shots delivered with the same rays.
-/// `split` (if given) says whether the sample rays disagreed, a shadow's edge crossing the
-/// pair, and gets π F without V: then memberVisibility says which members are lit.
-struct SplitTransfer {
-    bool partial = false;  ///< some sample rays were blocked and some were not
-    double open = 0;       ///< π F, lx per cd/m²
-};
+/// `split` (if given) says whether the sample rays disagreed, and gets π F without V.
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
                        double analyticDistance, bool receiverDetail, const SourceGeometry* geometry = nullptr,
