@@ -141,7 +141,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
               const std::vector<std::string>& cameras, const std::string& solution, const std::string& tileText,
               const std::string& framesText) {
     const tonemap::DisplayOptions display = tonemap::parseExposure(exposure, displayIn);
-    tonemap::checkDisplayOptions(display);
+    if (const auto warning = tonemap::checkDisplayOptions(display)) fmt::print(stderr, "warning: {}\n", *warning);
     app::PipelineOptions o;
     o.overrides = overridesOf(a);
     if (spp) o.overrides.push_back({"render.spp", std::to_string(*spp)});

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -17,26 +18,54 @@ const char* embeddedOcioConfig() {
     // OCIO 2.1 has no built-in configs (CreateFromBuiltinConfig is 2.2+), so we ship one.
     // sRGB encoding: ExponentWithLinearTransform gamma 2.4, offset 0.055 is the exact
     // piecewise sRGB curve (0.18 → 0.4614).
+    // The ACES view is assembled from OCIO 2.1's built-in transforms (the Academy's CTL
+    // implemented in the library, no LUT files): linear Rec.709 → ACEScg (the inverse of
+    // AP1 → Rec.709, Bradford D60 ↔ D65) → ACES2065-1 → the ACES 1.0 reference rendering
+    // and SDR video output transform (100 cd/m², dim surround) to CIE XYZ D65 → the
+    // piecewise sRGB display. It has its own tone curve: it receives scene-referred values.
     return R"(ocio_profile_version: 2
 
 environment: {}
 search_path: ""
 strictparsing: true
 luma: [0.2126, 0.7152, 0.0722]
-description: rayrad embedded config (scene-linear Rec.709, sRGB display)
+description: rayrad embedded config (scene-linear Rec.709, sRGB display; views Standard, ACES 1.0 SDR-video, Raw)
 
 roles:
   default: Linear Rec.709
   scene_linear: Linear Rec.709
   data: Raw
 
+file_rules:
+  - !<Rule> {name: Default, colorspace: default}
+
 displays:
   sRGB:
     - !<View> {name: Standard, colorspace: sRGB}
+    - !<View> {name: ACES 1.0 SDR-video, view_transform: ACES 1.0 SDR-video, display_colorspace: sRGB display}
     - !<View> {name: Raw, colorspace: Raw}
 
 active_displays: [sRGB]
-active_views: [Standard, Raw]
+active_views: [Standard, ACES 1.0 SDR-video, Raw]
+
+view_transforms:
+  - !<ViewTransform>
+    name: ACES 1.0 SDR-video
+    description: ACES 1.0 reference rendering + SDR video output transform (100 cd/m2, D65, dim surround)
+    from_scene_reference: !<GroupTransform>
+      children:
+        - !<BuiltinTransform> {style: "UTILITY - ACES-AP1_to_LINEAR-REC709_BFD", direction: inverse}
+        - !<BuiltinTransform> {style: "ACEScg_to_ACES2065-1"}
+        - !<BuiltinTransform> {style: "ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - SDR-VIDEO_1.0"}
+
+display_colorspaces:
+  - !<ColorSpace>
+    name: sRGB display
+    family: Display
+    encoding: sdr-video
+    description: sRGB display encoding from CIE XYZ (D65), for views with a view transform
+    isdata: false
+    from_display_reference: !<BuiltinTransform> {style: "DISPLAY - CIE-XYZ-D65_to_sRGB"}
 
 colorspaces:
   - !<ColorSpace>
@@ -85,35 +114,59 @@ std::string quotedList(const std::vector<std::string>& names) {
     return out.empty() ? "none" : out;
 }
 
-OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
-    auto config = loadConfig(o);
-    const std::string configName = o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig;
-    std::string display = o.display.empty() ? config->getDefaultDisplay() : o.display;
+/// A display and view of a loaded config, both checked to exist.
+struct DisplayView {
+    OCIO::ConstConfigRcPtr config;
+    std::string configName, display, view;
+};
+
+DisplayView resolveDisplayView(const DisplayOptions& o) {
+    DisplayView dv;
+    dv.config = loadConfig(o);
+    const auto& config = dv.config;
+    dv.configName = o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig;
+    dv.display = o.display.empty() ? config->getDefaultDisplay() : o.display;
     std::vector<std::string> displays;
     for (int i = 0; i < config->getNumDisplays(); ++i) displays.push_back(config->getDisplay(i));
-    if (std::find(displays.begin(), displays.end(), display) == displays.end())
-        throw InputError(placeMessage(configName, "--display",
-                                      "unknown display \"" + display + "\" (the config has " + quotedList(displays) + ")"));
-    std::string view = o.view.empty() ? config->getDefaultView(display.c_str()) : o.view;
+    if (std::find(displays.begin(), displays.end(), dv.display) == displays.end())
+        throw InputError(placeMessage(dv.configName, "--display",
+                                      "unknown display \"" + dv.display + "\" (the config has " + quotedList(displays) + ")"));
+    dv.view = o.view.empty() ? config->getDefaultView(dv.display.c_str()) : o.view;
     std::vector<std::string> views;
-    for (int i = 0; i < config->getNumViews(display.c_str()); ++i) views.push_back(config->getView(display.c_str(), i));
-    if (std::find(views.begin(), views.end(), view) == views.end())
-        throw InputError(placeMessage(configName, "--view",
-                                      "unknown view \"" + view + "\" for display \"" + display + "\" (it has " +
+    for (int i = 0; i < config->getNumViews(dv.display.c_str()); ++i) views.push_back(config->getView(dv.display.c_str(), i));
+    if (std::find(views.begin(), views.end(), dv.view) == views.end())
+        throw InputError(placeMessage(dv.configName, "--view",
+                                      "unknown view \"" + dv.view + "\" for display \"" + dv.display + "\" (it has " +
                                           quotedList(views) + ")"));
+    return dv;
+}
+
+OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
+    const DisplayView dv = resolveDisplayView(o);
     try {
-        auto processor = config->getProcessor(OCIO::ROLE_SCENE_LINEAR, display.c_str(), view.c_str(),
-                                              OCIO::TRANSFORM_DIR_FORWARD);
+        auto processor = dv.config->getProcessor(OCIO::ROLE_SCENE_LINEAR, dv.display.c_str(), dv.view.c_str(),
+                                                 OCIO::TRANSFORM_DIR_FORWARD);
         return processor->getDefaultCPUProcessor();
     } catch (const OCIO::Exception& e) {
-        throw InputError(placeMessage(o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig,
-                                      "display \"" + display + "\", view \"" + view + "\"", e.what()));
+        throw InputError(placeMessage(dv.configName, "display \"" + dv.display + "\", view \"" + dv.view + "\"", e.what()));
     }
 }
 
 }  // namespace
 
-void checkDisplayOptions(const DisplayOptions& options) { makeProcessor(options); }
+std::optional<std::string> checkDisplayOptions(const DisplayOptions& options) {
+    makeProcessor(options);
+    const std::string curve = viewToneCurve(options);
+    if (curve.empty() || options.tone.op == ToneOperator::Exposure) return std::nullopt;
+    return "--view: the view's transform \"" + curve + "\" has its own tone curve, and --tonemap " +
+           toneOperatorName(options.tone.op) + " maps the luminance before it: two tone curves (use --tonemap exposure)";
+}
+
+std::string viewToneCurve(const DisplayOptions& options) {
+    const DisplayView dv = resolveDisplayView(options);
+    const char* name = dv.config->getDisplayViewTransformName(dv.display.c_str(), dv.view.c_str());
+    return name ? name : "";
+}
 
 DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display) {
     constexpr double kMaxExposureStops = 64;
@@ -155,7 +208,12 @@ HdrImage balanced(const HdrImage& image, const WhiteBalance& wb) {
 
 }  // namespace
 
-std::vector<Rgb> toDisplayLinear(const HdrImage& image, const DisplayOptions& options) {
+namespace {
+
+/// White balanced, each pixel scaled by L_d / L_w; brought into the display gamut unless
+/// the values go on to a view with its own tone curve (which expects scene-referred
+/// values above 1 and maps them itself).
+std::vector<Rgb> toneMapped(const HdrImage& image, const DisplayOptions& options, bool intoDisplayGamut) {
     const HdrImage source = balanced(image, options.whiteBalance);
     const ToneCurve curve(source, options.tone, exposureScale(source, options));
     std::vector<Rgb> out(source.pixels.size());
@@ -163,15 +221,24 @@ std::vector<Rgb> toDisplayLinear(const HdrImage& image, const DisplayOptions& op
         const Rgb& c = source.pixels[i];
         const double world = luminance(c);
         if (!(world > 0) || !std::isfinite(world)) continue;  // black (and non-finite: refused before)
-        out[i] = toDisplayGamut(c * (curve(world) / world));
+        const Rgb mapped = c * (curve(world) / world);
+        out[i] = intoDisplayGamut ? toDisplayGamut(mapped) : mapped;
     }
     return out;
+}
+
+}  // namespace
+
+std::vector<Rgb> toDisplayLinear(const HdrImage& image, const DisplayOptions& options) {
+    return toneMapped(image, options, true);
 }
 
 std::string describeDisplay(const HdrImage& image, const DisplayOptions& options) {
     const HdrImage source = balanced(image, options.whiteBalance);
     const ToneCurve curve(source, options.tone, exposureScale(source, options));
-    return "tone: " + curve.describe() + "; white balance: " + describe(options.whiteBalance, image);
+    const std::string viewCurve = viewToneCurve(options);
+    return "tone: " + curve.describe() + "; white balance: " + describe(options.whiteBalance, image) +
+           (viewCurve.empty() ? "" : "; view transform: " + viewCurve);
 }
 
 std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOptions& options) {
@@ -183,7 +250,7 @@ std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOpt
 
 std::vector<uint8_t> toDisplay(const HdrImage& image, const DisplayOptions& options) {
     auto cpu = makeProcessor(options);
-    const std::vector<Rgb> linear = toDisplayLinear(image, options);
+    const std::vector<Rgb> linear = toneMapped(image, options, viewToneCurve(options).empty());
     std::vector<float> buf(linear.size() * 3);
     for (size_t i = 0; i < linear.size(); ++i)
         for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(linear[i][c]);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,21 +30,29 @@ struct DisplayOptions {
 DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display);
 
 /// Throws InputError for a config that does not load, or a display or view it does not
-/// have (the message lists the ones it has). Call it before long work.
-void checkDisplayOptions(const DisplayOptions& options);
+/// have (the message lists the ones it has). Call it before long work. Returns a warning
+/// when a tone operator other than exposure feeds a view with its own tone curve.
+std::optional<std::string> checkDisplayOptions(const DisplayOptions& options);
+
+/// The name of the view's OCIO view transform ("ACES 1.0 SDR-video"), or "" for a view
+/// that only encodes. A view transform brings its own tone curve and gamut mapping, so
+/// such a view receives the tone-mapped values scene-referred (not brought into [0, 1]).
+std::string viewToneCurve(const DisplayOptions& options);
 
 /// The multiplier applied to cd/m² before the display transform.
 double exposureScale(const HdrImage& image, const DisplayOptions& options);
 
-/// rayrad's own small OCIO config (scene-linear Rec.709; display sRGB with the
-/// piecewise sRGB curve, view "Standard"; view "Raw"), so nothing depends on $OCIO.
+/// rayrad's own small OCIO config (scene-linear Rec.709; display sRGB with the views
+/// "Standard" (the piecewise sRGB curve), "ACES 1.0 SDR-video" (OCIO's built-in ACES 1.0
+/// output transform) and "Raw"), so nothing depends on $OCIO.
 const char* embeddedOcioConfig();
 
 /// Converts to 8-bit display RGB, row-major, 3 bytes a pixel: the white balance, then each
 /// pixel's RGB scaled by L_d / L_w (the tone operator's display luminance over the
 /// world luminance) and brought into the display gamut toward grey (toDisplayGamut),
 /// then OCIO's processor from the scene-linear role to (display, view), then quantised.
-/// The view receives display-relative linear values in [0, 1]. Throws InputError for a
+/// The view receives display-relative linear values in [0, 1] (a view with its own tone
+/// curve: the tone-mapped values without the gamut step). Throws InputError for a
 /// bad config path or unknown display/view (with the names), or a bad white-balance region.
 std::vector<uint8_t> toDisplay(const HdrImage& image, const DisplayOptions& options);
 

@@ -189,7 +189,7 @@ expect 2 "--threads -1" "--threads: Value -1 not in range 0 to 4096" -- solve "$
 expect 2 "--threads huge" "not in range 0 to 4096" -- solve "$good" --threads 99999999999
 expect 2 "--seed -1" "--seed: Value -1 not in range" -- render "$good" -o "$work/out.png" --seed -1
 expect 2 "--spp 0" "--spp" -- render "$good" -o "$work/out.png" --spp 0
-expect 2 "--view not in the config" "--view: unknown view \"Filmic\" for display \"sRGB\" (it has \"Standard\" or \"Raw\")" -- render "$good" -o "$work/out.png" --view Filmic
+expect 2 "--view not in the config" "--view: unknown view \"Filmic\" for display \"sRGB\" (it has \"Standard\", \"ACES 1.0 SDR-video\" or \"Raw\")" -- render "$good" -o "$work/out.png" --view Filmic
 expect 2 "--display not in the config" "--display: unknown display \"Foo\" (the config has \"sRGB\")" -- render "$good" -o "$work/out.png" --display Foo
 expect 2 "--ocio-config missing" "cannot load the OpenColorIO config" -- render "$good" -o "$work/out.png" --ocio-config "$work/none.ocio"
 expect 2 "--set negative index" "--set lights.-1.intensity_cd: \"-1\" is not an array index" -- solve "$good" --set lights.-1.intensity_cd=5
