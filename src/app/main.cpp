@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
         ->default_str("none");
     render->add_option("--ocio-config", display.ocioConfig, "OpenColorIO config file (default: rayrad's embedded sRGB config)");
     render->add_option("--display", display.display, "OCIO display (default: the config's default)");
-    render->add_option("--view", display.view, "OCIO view (default: the display's default)");
+    render->add_option("--view", display.view, "OCIO view (default: the display's default; the embedded config: Standard, \"ACES 1.0 SDR-video\", Raw)");
     render->add_option("--snapshots", snapshots,
                        "Also render K images during the solve (NAME.snap01.EXT ...), evenly spaced in log unshot energy")
         ->check(CLI::Range(0, 100));

@@ -11,24 +11,48 @@ namespace rayrad::radiosity {
 
 namespace {
 
-/// ρ at (u, v) of a textured patch: the material's multiplier times the texture (bilinear,
-/// or the texel there), each channel clamped to kMaxFileReflectance.
-Rgb texturedAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v, bool bilinear) {
-    const scene::Material& m = scene.materials[mesh.patches[i].material];
-    const glm::dvec2 uv = (1 - u - v) * glm::dvec2(mesh.cornerUv[3 * i]) + u * glm::dvec2(mesh.cornerUv[3 * i + 1]) +
-                          v * glm::dvec2(mesh.cornerUv[3 * i + 2]);
-    const TextureSource& images = *scene.textureImages;
-    Rgb rho = m.reflectance * (bilinear ? images.lookup(m.texture, uv.x, uv.y) : images.texel(m.texture, uv.x, uv.y));
+/// The material's multiplier times a texture value, each channel clamped to kMaxFileReflectance.
+Rgb clampedProduct(const Rgb& reflectance, const Rgb& texture) {
+    Rgb rho = reflectance * texture;
     for (int c = 0; c < 3; ++c) rho[c] = std::clamp(rho[c], 0.0, scene::kMaxFileReflectance);
     return rho;
 }
 
+glm::dvec2 uvAt(const PatchMesh& mesh, size_t i, double u, double v) {
+    return (1 - u - v) * glm::dvec2(mesh.cornerUv[3 * i]) + u * glm::dvec2(mesh.cornerUv[3 * i + 1]) +
+           v * glm::dvec2(mesh.cornerUv[3 * i + 2]);
+}
+
+/// ρ at (u, v) of a textured patch from the texel there (no interpolation).
+Rgb texelAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v) {
+    const scene::Material& m = scene.materials[mesh.patches[i].material];
+    const glm::dvec2 uv = uvAt(mesh, i, u, v);
+    return clampedProduct(m.reflectance, scene.textureImages->texel(m.texture, uv.x, uv.y));
+}
+
 }  // namespace
 
-Rgb reflectanceAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v) {
+glm::dvec2 textureChange(const PatchMesh& mesh, size_t i, const Vec3& d) {
+    const Patch& p = mesh.patches[i];
+    const Vec3 e1 = mesh.corner(p, 1) - mesh.corner(p, 0), e2 = mesh.corner(p, 2) - mesh.corner(p, 0);
+    const glm::dvec2 t1 = glm::dvec2(mesh.cornerUv[3 * i + 1]) - glm::dvec2(mesh.cornerUv[3 * i]);
+    const glm::dvec2 t2 = glm::dvec2(mesh.cornerUv[3 * i + 2]) - glm::dvec2(mesh.cornerUv[3 * i]);
+    // [e1·e1 e1·e2; e1·e2 e2·e2] (α, β) = (e1·d, e2·d).
+    const double a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2);
+    const double det = a * c - b * b;
+    if (!(det > 0)) return glm::dvec2(0.0);  // a degenerate patch: no footprint
+    const double r1 = glm::dot(e1, d), r2 = glm::dot(e2, d);
+    const double alpha = (c * r1 - b * r2) / det, beta = (a * r2 - b * r1) / det;
+    return alpha * t1 + beta * t2;
+}
+
+Rgb reflectanceAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v, const Vec3& footprintA,
+                  const Vec3& footprintB) {
     const scene::Material& m = scene.materials[mesh.patches[i].material];
     if (m.texture < 0 || mesh.cornerUv.empty() || !scene.textureImages) return m.reflectance;
-    return texturedAt(scene, mesh, i, u, v, true);
+    const glm::dvec2 uv = uvAt(mesh, i, u, v);
+    return clampedProduct(m.reflectance, scene.textureImages->lookup(m.texture, uv.x, uv.y, textureChange(mesh, i, footprintA),
+                                                                     textureChange(mesh, i, footprintB)));
 }
 
 void computeTexturedReflectance(const scene::Scene& scene, PatchMesh& mesh) {
@@ -53,8 +77,8 @@ void computeTexturedReflectance(const scene::Scene& scene, PatchMesh& mesh) {
         Rgb sum(0.0);
         for (int b = 0; b < n; ++b)
             for (int a = 0; a + b < n; ++a) {
-                sum += texturedAt(scene, mesh, i, (a + 1.0 / 3) / n, (b + 1.0 / 3) / n, false);
-                if (a + b + 1 < n) sum += texturedAt(scene, mesh, i, (a + 2.0 / 3) / n, (b + 2.0 / 3) / n, false);
+                sum += texelAt(scene, mesh, i, (a + 1.0 / 3) / n, (b + 1.0 / 3) / n);
+                if (a + b + 1 < n) sum += texelAt(scene, mesh, i, (a + 2.0 / 3) / n, (b + 2.0 / 3) / n);
             }
         mesh.texturedReflectance[i] = RgbF(sum / static_cast<double>(n * n));
     });

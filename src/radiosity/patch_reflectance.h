@@ -14,8 +14,17 @@ inline Rgb patchReflectance(const scene::Scene& scene, const PatchMesh& mesh, si
 }
 
 /// ρ at barycentric (u, v) of patch i (the point (1−u−v) c0 + u c1 + v c2): the material's
-/// reflectance times its texture there, each channel clamped to kMaxFileReflectance.
-Rgb reflectanceAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v);
+/// reflectance times its texture there, each channel clamped to kMaxFileReflectance. The
+/// texture is filtered over the footprint whose two axes are `footprintA` and `footprintB`
+/// (world-space vectors in the patch's plane, m; zero: a point).
+Rgb reflectanceAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v,
+                  const Vec3& footprintA = Vec3(0.0), const Vec3& footprintB = Vec3(0.0));
+
+/// A world-space displacement d in patch i's plane as the change of its texture
+/// coordinates: with the corners' edges e1 = c1 − c0, e2 = c2 − c0 and texture edges
+/// t1 = uv1 − uv0, t2 = uv2 − uv0, d = α e1 + β e2 solved in the least-squares sense
+/// (the Gram matrix of e1, e2), and Δuv = α t1 + β t2.
+glm::dvec2 textureChange(const PatchMesh& mesh, size_t i, const Vec3& d);
 
 /// Fills mesh.texturedReflectance when the scene has textures: each textured patch's mean
 /// of ρ over its triangle, from the texels (decoded, not interpolated) at the centroids of

@@ -40,4 +40,13 @@ CameraRay ImageCamera::ray(double px, double py) const {
     return {m_position, m_forward, false};
 }
 
+RayCone ImageCamera::pixelCone() const {
+    switch (m_projection) {
+    case scene::Projection::Perspective: return {0.0, 2 * m_tanHalfFov / m_height};
+    case scene::Projection::Orthographic: return {m_orthoHeight / m_height, 0.0};
+    case scene::Projection::Fisheye: return {0.0, (kPi / 2) / (std::min(m_width, m_height) / 2.0)};
+    }
+    return {};
+}
+
 }  // namespace rayrad::raytrace

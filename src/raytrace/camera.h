@@ -3,6 +3,7 @@
 #pragma once
 
 #include <core/math.h>
+#include <raytrace/ray_cone.h>
 #include <scene/scene.h>
 
 namespace rayrad::raytrace {
@@ -19,6 +20,9 @@ class ImageCamera {
     /// The ray through image position (px, py) in pixels, (0, 0) the top-left corner of
     /// the image, y down.
     CameraRay ray(double px, double py) const;
+    /// The cone of one pixel: perspective γ = 2 tan(fov/2) / height (its angle at the image
+    /// centre), fisheye γ = 90° / R, orthographic w0 = the view height / height and γ = 0.
+    RayCone pixelCone() const;
     int width() const { return m_width; }
     int height() const { return m_height; }
 

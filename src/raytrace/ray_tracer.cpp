@@ -31,10 +31,11 @@ double fresnelDielectric(double cosI, double eta, double& cosT) {
 
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
-             int areaLightSamples, Random& rng, int depth) {
+             int areaLightSamples, Random& rng, const RayCone& cone, int depth) {
     Hit h = embree.intersect(origin, dir, 0.0, std::numeric_limits<double>::infinity());
     if (!h.found) return Rgb(0.0);
     const Vec3 unit = glm::normalize(dir);
+    const RayCone onward = cone.continuedAt(h.t * glm::length(dir));  // the footprint at the hit
     if (h.specular) {
         // Whitted recursion: mirrors reflect (front side only), glass reflects and refracts.
         const SpecularTriangle& t = embree.specular(h.patch);
@@ -47,7 +48,7 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
         if (m.kind == scene::SurfaceKind::Mirror) {
             if (cosI <= 0) return Rgb(0.0);  // the back of a mirror is black
             return m.specular * shadeRay(scene, mesh, solution, lights, embree, x + offset * t.normal, reflected,
-                                         areaLightSamples, rng, depth + 1);
+                                         areaLightSamples, rng, onward, depth + 1);
         }
         // Glass: entering from the front (cosI > 0) or leaving through the back.
         bool entering = cosI > 0;
@@ -57,11 +58,11 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
         double cosT = 0;
         double R = fresnelDielectric(c, eta, cosT);
         Rgb L = R * shadeRay(scene, mesh, solution, lights, embree, x + offset * n, reflected, areaLightSamples, rng,
-                             depth + 1);
+                             onward, depth + 1);
         if (R < 1) {
             Vec3 refracted = eta * unit + (eta * c - cosT) * n;  // Snell's law
             L += (1 - R) * shadeRay(scene, mesh, solution, lights, embree, x - offset * n, refracted,
-                                    areaLightSamples, rng, depth + 1);
+                                    areaLightSamples, rng, onward, depth + 1);
         }
         return L;
     }
@@ -77,8 +78,10 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     const scene::Material& m = scene.materials[p.material];
     Rgb L = m.emission;
     if (m.reflectance == Rgb(0.0)) return L;
-    // ρ at the hit: the texture's value here, whose mean over the patch the radiosity used.
-    const Rgb rho = radiosity::reflectanceAt(scene, mesh, h.patch, h.u, h.v);
+    // ρ at the hit: the texture filtered over the sample's footprint here (its mean over
+    // the patch is what the radiosity used).
+    const auto [footprintA, footprintB] = surfaceFootprint(onward.width, unit, p.normal);
+    const Rgb rho = radiosity::reflectanceAt(scene, mesh, h.patch, h.u, h.v, footprintA, footprintB);
     // With virtual lights; the weakest real lights shadow-tested only while they matter. The
     // hit point is recomputed in double from the barycentrics (more precise than o + t d);
     // on curved meshes it is lifted toward the smooth surface and shaded with the
@@ -116,6 +119,10 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
     // area_light_samples is a pixel's budget of shadow rays per area light: its samples
     // share it (⌈n / spp⌉ each), so a pixel averages about n rays per light at any spp.
     const int raysPerHit = std::max(1, (options.areaLightSamples + spp - 1) / spp);
+    // A sample's footprint: its stratum of the pixel (textures are filtered over it, and the
+    // samples average the strata).
+    const RayCone pixel = camera.pixelCone();
+    const RayCone sampleCone{pixel.width / strata, pixel.spread / strata};
     std::atomic<int> rowsDone{0};
     const int first = std::clamp(rowBegin, 0, image.height), last = rowEnd < 0 ? image.height : std::clamp(rowEnd, first, image.height);
     tbb::parallel_for(tbb::blocked_range<int>(first, last, 1), [&](const tbb::blocked_range<int>& rows) {
@@ -136,7 +143,7 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                     }
                     const CameraRay r = camera.ray(x + jx, y + jy);
                     const Rgb sample =
-                        r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction, raysPerHit, rng, 0) : Rgb(0.0);
+                        r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction, raysPerHit, rng, sampleCone) : Rgb(0.0);
                     sum += sample;
                     if (Lc > 0) {
                         const double w = 1 / (1 + std::max(0.0, luminance(sample)) / Lc);

@@ -6,6 +6,7 @@
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
 #include <raytrace/camera.h>
+#include <raytrace/ray_cone.h>
 #include <raytrace/embree_scene.h>
 #include <scene/scene.h>
 
@@ -43,9 +44,10 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
 
 /// Luminance (cd/m², RGB) seen along one ray; used by render() and by tests. Mirrors
 /// (Ks × the reflected ray) and glass (Fresnel reflection + refraction) recurse up to
-/// render.max_depth; beyond it a ray returns black.
+/// render.max_depth; beyond it a ray returns black. `cone` is the ray's footprint, which
+/// filters textures at the hit (zero: a point).
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
-             int areaLightSamples, Random& rng, int depth = 0);
+             int areaLightSamples, Random& rng, const RayCone& cone = {}, int depth = 0);
 
 }  // namespace rayrad::raytrace

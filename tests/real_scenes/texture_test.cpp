@@ -186,3 +186,46 @@ TEST_CASE("a glTF file's base colour texture and TEXCOORD_0 are used", "[texture
     CHECK(sum / area == Approx(expected).epsilon(0.005));
     CHECK(hi - lo < 0.1 * expected);  // 0.1 m patches, 3.1 cm checks: every patch near the mean
 }
+
+TEST_CASE("a fine checker far away is averaged in linear light (MIP-mapped lookups), not aliased", "[textures]") {
+    // An 80 × 40 m floor tiled with 2.5 cm checks of black and white as an 8-bit sRGB PNG
+    // (texels 0 and 255: mean 0.5 linear, but 0.21 if the encoded values were averaged),
+    // seen from eye height along the floor; a light far above keeps the lighting smooth.
+    // Rows where the checks are far smaller than a pixel must show their mean: the same
+    // luminance as an untextured floor at ρ = 0.5 × 0.8, and no pixel-to-pixel pattern.
+    std::vector<uint8_t> rgb;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int k = 0; k < 3; ++k) rgb.push_back((x / 8 + y / 8) % 2 ? 255 : 0);
+    const std::string checks = "/tmp/rayrad_test_fine_checks.png";
+    tonemap::writeDisplayImage(checks, 64, 64, rgb);
+    const auto floor = [](const std::string& material) {
+        return fmt::format(R"({{"materials": {{"floor": {}}},
+            "objects": [{{"type": "quad", "vertices": [[-40, 0, 0], [40, 0, 0], [40, 0, -40], [-40, 0, -40]], "material": "floor"}}],
+            "lights": [{{"type": "point", "position": [0, 200, -20], "intensity_cd": 1e6}}],
+            "camera": {{"position": [0, 1.6, 0], "look_at": [0, 0.8, -20], "vfov_deg": 40, "resolution": [160, 120]}},
+            "radiosity": {{"max_edge": 4}}, "render": {{"spp": 4}}}})",
+                           material);
+    };
+    // 80 m / 400 repeats of 8 checks: 2.5 cm checks.
+    const std::string textured = floor(fmt::format(R"({{"reflectance": 0.8, "texture": {{"file": "{}", "repeat": [400, 200]}}}})", checks));
+    app::PipelineOptions options = test::quiet();
+    options.wantImage = true;
+    const auto a = app::runPipeline(test::writeTempScene("fine_checks", textured), options);
+    const auto b = app::runPipeline(test::writeTempScene("fine_checks_plain", floor(R"({"reflectance": 0.4})")), options);
+    // The far floor: rows 62–72 (the floor's far edge is at the image centre, row 60: 14 to
+    // 30 m away, where a pixel spans 3 to 7 checks across and far more along), columns 40–120.
+    double sumA = 0, sumB = 0, steps = 0;
+    int count = 0;
+    for (int y = 62; y <= 72; ++y)
+        for (int x = 40; x < 120; ++x) {
+            const double la = luminance(a.image->at(x, y)), lb = luminance(b.image->at(x, y));
+            REQUIRE(lb > 0);
+            sumA += la, sumB += lb, ++count;
+            steps += std::abs(la - luminance(a.image->at(x + 1, y))) / lb;  // neighbour to neighbour
+        }
+    INFO("far floor: textured " << sumA / count << " cd/m², plain " << sumB / count << " cd/m², mean |step| "
+                                << 100 * steps / count << " % of the plain floor");
+    CHECK(sumA / count == Approx(sumB / count).epsilon(0.03));
+    CHECK(steps / count < 0.05);
+}
