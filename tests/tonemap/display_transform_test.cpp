@@ -67,7 +67,7 @@ TEST_CASE("the embedded ACES 1.0 view: mid grey at 10 % of display white, neutra
     CHECK(tonemap::viewToneCurve(standard).empty());
 }
 
-TEST_CASE("a view with its own tone curve gets scene-referred values; a second tone curve is a warning", "[tonemap]") {
+TEST_CASE("a view with its own tone curve gets scene-referred values, and a second tone curve is a warning", "[tonemap]") {
     HdrImage img(2, 1);
     img.at(0, 0) = Rgb(100.0);
     img.at(1, 0) = Rgb(6400.0);  // 8 × the log-average 800: 1.44 after auto exposure, above display white
