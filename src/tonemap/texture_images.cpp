@@ -32,7 +32,10 @@ namespace {
 
 /// A directory of our own under $TMPDIR (or /tmp), for the linear texture copies.
 std::string makeTemporaryDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "rayrad-textures-XXXXXX").string();
+    std::error_code error;
+    const std::filesystem::path base = std::filesystem::temp_directory_path(error);
+    if (error) throw InputError(std::string("$TMPDIR: no directory for the decoded textures (") + error.message() + ")");
+    std::string pattern = (base / "rayrad-textures-XXXXXX").string();
     if (!mkdtemp(pattern.data()))
         throw InputError(pattern + ": cannot make a directory for the decoded textures (" + std::strerror(errno) + ")");
     return pattern;
