@@ -80,8 +80,9 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     if (m.reflectance == Rgb(0.0)) return L;
     // ρ at the hit: the texture filtered over the sample's footprint here (its mean over
     // the patch is what the radiosity used).
-    const auto [footprintA, footprintB] = surfaceFootprint(onward.width, unit, p.normal);
-    const Rgb rho = radiosity::reflectanceAt(scene, mesh, h.patch, h.u, h.v, footprintA, footprintB);
+    std::pair<Vec3, Vec3> footprint{Vec3(0.0), Vec3(0.0)};
+    if (m.texture >= 0) footprint = surfaceFootprint(onward.width, unit, p.normal);
+    const Rgb rho = radiosity::reflectanceAt(scene, mesh, h.patch, h.u, h.v, footprint.first, footprint.second);
     // With virtual lights; the weakest real lights shadow-tested only while they matter. The
     // hit point is recomputed in double from the barycentrics (more precise than o + t d);
     // on curved meshes it is lifted toward the smooth surface and shaded with the
