@@ -141,8 +141,13 @@ DisplayView resolveDisplayView(const DisplayOptions& o) {
     return dv;
 }
 
-OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
-    const DisplayView dv = resolveDisplayView(o);
+/// The view transform's name ("" for a view that only encodes).
+std::string viewTransformOf(const DisplayView& dv) {
+    const char* name = dv.config->getDisplayViewTransformName(dv.display.c_str(), dv.view.c_str());
+    return name ? name : "";
+}
+
+OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayView& dv) {
     try {
         auto processor = dv.config->getProcessor(OCIO::ROLE_SCENE_LINEAR, dv.display.c_str(), dv.view.c_str(),
                                                  OCIO::TRANSFORM_DIR_FORWARD);
@@ -155,18 +160,15 @@ OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayOptions& o) {
 }  // namespace
 
 std::optional<std::string> checkDisplayOptions(const DisplayOptions& options) {
-    makeProcessor(options);
-    const std::string curve = viewToneCurve(options);
+    const DisplayView dv = resolveDisplayView(options);
+    makeProcessor(dv);
+    const std::string curve = viewTransformOf(dv);
     if (curve.empty() || options.tone.op == ToneOperator::Exposure) return std::nullopt;
     return "--view: the view's transform \"" + curve + "\" has its own tone curve, and --tonemap " +
            toneOperatorName(options.tone.op) + " maps the luminance before it: two tone curves (use --tonemap exposure)";
 }
 
-std::string viewToneCurve(const DisplayOptions& options) {
-    const DisplayView dv = resolveDisplayView(options);
-    const char* name = dv.config->getDisplayViewTransformName(dv.display.c_str(), dv.view.c_str());
-    return name ? name : "";
-}
+std::string viewToneCurve(const DisplayOptions& options) { return viewTransformOf(resolveDisplayView(options)); }
 
 DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display) {
     constexpr double kMaxExposureStops = 64;
@@ -242,15 +244,16 @@ std::string describeDisplay(const HdrImage& image, const DisplayOptions& options
 }
 
 std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOptions& options) {
-    auto cpu = makeProcessor(options);
+    auto cpu = makeProcessor(resolveDisplayView(options));
     std::vector<float> out = rgb;
     for (size_t i = 0; i + 2 < out.size(); i += 3) cpu->applyRGB(&out[i]);
     return out;
 }
 
 std::vector<uint8_t> toDisplay(const HdrImage& image, const DisplayOptions& options) {
-    auto cpu = makeProcessor(options);
-    const std::vector<Rgb> linear = toneMapped(image, options, viewToneCurve(options).empty());
+    const DisplayView dv = resolveDisplayView(options);
+    auto cpu = makeProcessor(dv);
+    const std::vector<Rgb> linear = toneMapped(image, options, viewTransformOf(dv).empty());
     std::vector<float> buf(linear.size() * 3);
     for (size_t i = 0; i < linear.size(); ++i)
         for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(linear[i][c]);
