@@ -46,10 +46,9 @@ std::string makeTemporaryDirectory() {
 /// values), as the radiosity's mean reflectance does. Filtering the encoded values would
 /// darken a fine pattern seen from afar (black and white checks: 0.21 instead of 0.5).
 void writeLinearCopy(const std::string& file, int channels, const std::string& copy) {
-    OIIO::ImageBuf source(file);
-    if (!source.read(0, 0, 0, channels, /*force=*/true, OIIO::TypeDesc::FLOAT))
-        throw InputError(file + ": cannot read the texture image (" + source.geterror() + ")");
-    OIIO::ImageBuf linear = OIIO::ImageBufAlgo::channels(source, channels, {});
+    OIIO::ImageBuf linear(file);  // decoded in place once read: channels [0, channels) as float
+    if (!linear.read(0, 0, 0, channels, /*force=*/true, OIIO::TypeDesc::FLOAT))
+        throw InputError(file + ": cannot read the texture image (" + linear.geterror() + ")");
     for (OIIO::ImageBuf::Iterator<float> it(linear); !it.done(); ++it)
         for (int c = 0; c < channels; ++c) it[c] = static_cast<float>(srgbDecode(std::clamp<double>(it[c], 0.0, 1.0)));
     OIIO::ImageSpec config;
