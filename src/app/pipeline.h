@@ -7,6 +7,7 @@
 #include <core/stage_report.h>
 #include <radiosity/clusters.h>
 #include <radiosity/direct_light.h>
+#include <radiosity/edge_vertices.h>
 #include <radiosity/shooting_solver.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
@@ -70,7 +71,7 @@ struct PipelineRun {
     radiosity::ShootingStatistics shooting;
     double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
     size_t mirrorImages = 0;        ///< image chains used by the image method
-    size_t edgeVertices = 0;        ///< vertices whose value came from a point gather
+    radiosity::GatheredVertices edgeVertices;  ///< vertices whose value came from a point gather
     size_t sensorGathers = 0;       ///< point gathers the sensors took (their own and every re-gather)
     bool singleChannel = false;     ///< the scene is grey: one channel was solved
     bool shadingNormals = false;    ///< mesh.cornerNormal computed (before the first ray trace)

@@ -25,6 +25,10 @@ class Visibility {
     /// and faces the other way, −n: back-to-back surfaces (a zero-thickness wall), where
     /// nothing reaches x's back — the light there lands on the other surface's front.
     virtual bool backCovered(const Vec3& /*x*/, const Vec3& /*n*/) const { return false; }
+    /// True when the first surface the ray from `from` along `direction` meets is seen
+    /// from behind (a point inside a closed solid sees only backs). False when it meets
+    /// nothing, a front, or this visibility cannot tell.
+    virtual bool hitsBackFace(const Vec3& /*from*/, const Vec3& /*direction*/) const { return false; }
     /// Calls visit(i) for every radiosity patch i whose bounds come within `radius` (m) of
     /// x, and maybe a few more, in no particular order. False when this visibility has no
     /// spatial index: the caller must then look at every patch.

@@ -1,4 +1,5 @@
-// Vertex values along concave edges and corners from a point gather, not extrapolation.
+// Vertex values from a point gather, not extrapolation: along concave edges and corners, and
+// beside outlines where another surface stands on a surface off its mesh lines.
 #pragma once
 
 #include <core/visibility.h>
@@ -17,10 +18,16 @@ namespace rayrad::radiosity {
 /// replaced by a final gather at the vertex, iterated `levels` rounds (each round uses
 /// the previous round's values at the corners of near patches, as the sensor gather's
 /// levels do). Surfaces that touch without a shared mesh line are not seams: their
-/// vertices keep the reconstruction. Returns the number of vertices refined.
-/// `onProgress` (optional, called from worker threads) gets the fraction done.
-size_t gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                          RadiositySolution& solution, const Visibility& vis, int levels,
-                          const std::function<void(double)>& onProgress = {});
+/// vertices keep the reconstruction — unless the outline where they touch crosses a
+/// patch's interior (a rotated box on a floor): then the vertices around it are gathered
+/// too (contact_vertices.h). `onProgress` (optional, called from worker threads) gets the
+/// fraction done.
+struct GatheredVertices {
+    size_t seams = 0;     ///< vertices on concave edges and corners
+    size_t contacts = 0;  ///< vertices beside an outline that crosses their patches
+};
+GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+                                    RadiositySolution& solution, const Visibility& vis, int levels,
+                                    const std::function<void(double)>& onProgress = {});
 
 }  // namespace rayrad::radiosity

@@ -163,6 +163,11 @@ bool EmbreeScene::backCovered(const Vec3& x, const Vec3& n) const {
     return h.found && !h.specular;
 }
 
+bool EmbreeScene::hitsBackFace(const Vec3& from, const Vec3& direction) const {
+    const Hit h = intersect(from, direction, 0.0, std::numeric_limits<double>::infinity());
+    return h.found && !h.specular && glm::dot(direction, Vec3(m_impl->normals[h.patch])) > 0;
+}
+
 bool EmbreeScene::patchesNear(const Vec3& x, double radius, const std::function<void(uint32_t)>& visit) const {
     struct Visit {
         unsigned patchGeometry;

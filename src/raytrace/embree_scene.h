@@ -49,6 +49,7 @@ class EmbreeScene : public Visibility {
     bool visible(const Vec3& from, const Vec3& to) const override;
     bool visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to) const override;
     bool backCovered(const Vec3& x, const Vec3& n) const override;
+    bool hitsBackFace(const Vec3& from, const Vec3& direction) const override;
     bool patchesNear(const Vec3& x, double radius, const std::function<void(uint32_t)>& visit) const override;
     /// Nearest hit along origin + t·dir for t in (tnear, tfar); dir need not be unit.
     /// `frontOnly`: patches' back faces are passed (to find a coincident front face).

@@ -195,7 +195,7 @@ TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]
     }
     for (size_t k = 0; k < a.sensors.size(); ++k)
         CHECK(luminance(one->sensors[k].value.indirect) == Approx(luminance(a.sensors[k].value.indirect)).epsilon(1e-9));
-    REQUIRE(a.edgeVertices > 0);
+    REQUIRE(a.edgeVertices.seams > 0);
     for (size_t v = 0; v < a.solution.vertexIndirect.size(); ++v) {
         REQUIRE(a.solution.vertexIndirect[v] == b.solution.vertexIndirect[v]);
         REQUIRE(luminance(one->solution.vertexIndirect[v]) ==
