@@ -1,5 +1,6 @@
 #include <app/pipeline.h>
 
+#include <radiosity/contact_outlines.h>
 #include <radiosity/patch_reflectance.h>
 #include <radiosity/shading_normals.h>
 #include <tonemap/texture_images.h>
@@ -292,6 +293,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
+    radiosity::findContactOutlines(run.mesh, *run.embree, radiosity::kContactTolerance * run.scene.diagonal(),
+                                   1e-6 * run.scene.diagonal());
     for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors)) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
         run.warnings.push_back(std::move(w));

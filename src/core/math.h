@@ -33,6 +33,13 @@ inline bool isFinite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+/// The point of the segment ab nearest to x.
+inline Vec3 closestOnSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
+    const Vec3 ab = b - a;
+    const double t = glm::clamp(glm::dot(x - a, ab) / glm::max(glm::dot(ab, ab), 1e-300), 0.0, 1.0);
+    return a + t * ab;
+}
+
 std::string toString(const Vec3& v);
 
 }  // namespace rayrad

@@ -20,9 +20,6 @@ namespace rayrad::radiosity {
 namespace {
 /// Clusters beyond this many of their diameters count as one source in vertex gathers.
 constexpr double kFarClusterDiameters = 3.0;
-/// Surfaces within this fraction of the scene's diagonal of a plane lie on it (as the
-/// premesher's contact lines).
-constexpr double kContactTolerance = 1e-6;
 /// Patches crossed by an outline are gathered around when at least this fraction of the
 /// premesher's edge length across: the patches it made. Smaller ones are an input mesh's
 /// own detail (a sofa's cushions pressed into its frame), their band narrower than half a
@@ -33,12 +30,6 @@ constexpr double kContactMinEdges = 0.5;
 /// Cornell box's floor vertices along the red wall came out 40 % low).
 constexpr int kMaxSplitDepth = 12;
 
-/// Distance (m) from point p to the segment ab.
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-    Vec3 ab = b - a;
-    double t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-300), 0.0, 1.0);
-    return glm::length(p - (a + t * ab));
-}
 /// The seam vertices (see gatherEdgeVertices) and, per mesh vertex, the patch whose
 /// surface it is gathered on (−1 for a vertex of no patch). Its cell index lives only here.
 std::vector<size_t> seamVertices(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
@@ -97,7 +88,8 @@ std::vector<size_t> seamVertices(const scene::Scene& scene, const PatchMesh& mes
             Vec3 tri[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
             bool onSeam = false;
             for (int e = 0; e < 3; ++e)
-                onSeam |= distanceToSegment(mesh.vertices[v], tri[e], tri[(e + 1) % 3]) <= seamTolerance;
+                onSeam |= glm::length(mesh.vertices[v] - closestOnSegment(mesh.vertices[v], tri[e], tri[(e + 1) % 3])) <=
+                          seamTolerance;
             return onSeam && formFactorToPolygon(x, own.normal, tri, 3, p.normal) > 0;
         };
         bool isEdge = false;
@@ -134,8 +126,7 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
     }
     const size_t seams = points.size();
     const double minDiameter = kContactMinEdges * targetEdge(scene, scene.meshing);
-    for (const GatherPoint& g :
-         contactVertices(mesh, vis, patchOf, minDiameter, kContactTolerance * scene.diagonal(), nudge))
+    for (const GatherPoint& g : contactVertices(mesh, patchOf, minDiameter, nudge))
         if (!taken[g.vertex]) points.push_back(g);
 
     // A local fixed-point iteration, bottom-up: each round gathers at every seam vertex

@@ -22,6 +22,14 @@ struct Patch {
     int group = 0;                ///< index of the scene's SurfaceGroup
 };
 
+/// Where another surface stands on (or passes through) a patch off the patch's mesh
+/// lines: the segment along which it meets the patch's plane (all of it, also beyond the
+/// patch), and that surface's front normal.
+struct ContactOutline {
+    Vec3 a{0.0}, b{0.0};
+    Vec3 normal{0.0};
+};
+
 struct PatchMesh {
     std::vector<Vec3> vertices;
     std::vector<Patch> patches;
@@ -35,6 +43,15 @@ struct PatchMesh {
     /// Shading normals of each patch's corners, 3·i + k (computeShadingNormals); empty when
     /// no corner's differs from its patch's normal (flat surfaces only) or smoothing is off.
     std::vector<glm::vec3> cornerNormal;
+    /// The contact outlines crossing each patch's interior (findContactOutlines): patch i's
+    /// are outlines[outlineBegin[i] .. outlineBegin[i + 1]); outlineBegin is empty when
+    /// they were not looked for.
+    std::vector<uint32_t> outlineBegin;
+    std::vector<ContactOutline> outlines;
+    /// Per vertex: 1 when it lies under a surface standing on its patch, inside a closed
+    /// solid (under a box: behind every outline crossing its patches, and rays from it
+    /// meet only backs). Its value is then meant for the other side of the outline.
+    std::vector<char> underSolid;
 
     const Vec3& corner(const Patch& p, int k) const { return vertices[p.v[k]]; }
     /// The point with barycentric coordinates (1-u-v, u, v) on patch p.

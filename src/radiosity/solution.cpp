@@ -1,5 +1,7 @@
 #include <radiosity/solution.h>
 
+#include <radiosity/contact_outlines.h>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -74,8 +76,10 @@ void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, boo
 
 Rgb interpolateIndirect(const PatchMesh& mesh, const RadiositySolution& solution, size_t patch, double u, double v) {
     const Patch& p = mesh.patches[patch];
-    return (1 - u - v) * solution.vertexIndirect[p.v[0]] + u * solution.vertexIndirect[p.v[1]] +
-           v * solution.vertexIndirect[p.v[2]];
+    // Inside a patch that a contact outline crosses, only the corners on the point's side.
+    const std::array<double, 3> w = sameSideWeights(mesh, patch, u, v);
+    return w[0] * solution.vertexIndirect[p.v[0]] + w[1] * solution.vertexIndirect[p.v[1]] +
+           w[2] * solution.vertexIndirect[p.v[2]];
 }
 
 }  // namespace rayrad::radiosity

@@ -47,7 +47,8 @@ struct RadiositySolution {
 /// vertex; falls back to the average where the points do not span a plane.
 void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, bool linear = false);
 
-/// Indirect at barycentric (u, v) of patch p, interpolated from the vertex values.
+/// Indirect at barycentric (u, v) of patch p, interpolated from the vertex values (inside a
+/// patch a contact outline crosses, from the corners on the point's side: sameSideWeights).
 Rgb interpolateIndirect(const PatchMesh& mesh, const RadiositySolution& solution, size_t patch, double u, double v);
 
 }  // namespace rayrad::radiosity
