@@ -154,8 +154,9 @@ std::array<double, 3> sameSideWeights(const PatchMesh& mesh, size_t i, double u,
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
         // A corner under a solid keeps its weight: its value is the light at the outline.
-        for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1] && w[k] != 0 && !mesh.underSolid[p.v[k]]; ++o)
-            if (segmentsCross(p.normal, x, mesh.corner(p, k), mesh.outlines[o].a, mesh.outlines[o].b)) w[k] = 0;
+        if (!mesh.underSolid[p.v[k]])
+            for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1] && w[k] != 0; ++o)
+                if (segmentsCross(p.normal, x, mesh.corner(p, k), mesh.outlines[o].a, mesh.outlines[o].b)) w[k] = 0;
         sum += w[k];
     }
     if (!(sum > 1e-9)) return plain;

@@ -29,20 +29,20 @@ std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vecto
         if (crossed[v].empty() || patchOf[v] < 0) continue;
         const Vec3& x = mesh.vertices[v];
         const Patch& own = mesh.patches[patchOf[v]];
-        const bool hidden = mesh.underSolid[v];  // under the box
+        if (!mesh.underSolid[v]) {
+            points.push_back({v, nudgeInside(mesh, static_cast<size_t>(patchOf[v]), x, nudge), own.normal});
+            continue;
+        }
+        // Under the box: from the nearest point of the outlines, `nudge` in front of the
+        // crossing surface there, in the surface's plane.
         const ContactOutline* nearest = nullptr;
-        Vec3 foot = x;  // the nearest point of the outlines
+        Vec3 foot = x;
         double best = std::numeric_limits<double>::infinity();
         for (uint32_t i : crossed[v])
             for (auto [c, end] = crossings(i); c != end; ++c) {
                 const Vec3 y = closestOnSegment(x, c->a, c->b);
                 if (glm::length(y - x) < best) best = glm::length(y - x), foot = y, nearest = c;
             }
-        if (!hidden) {
-            points.push_back({v, nudgeInside(mesh, static_cast<size_t>(patchOf[v]), x, nudge), own.normal});
-            continue;
-        }
-        // Out from under: `nudge` in front of the nearest crossing surface, in the surface's plane.
         Vec3 at = foot + nudge * nearest->normal;
         at -= glm::dot(own.normal, at - x) * own.normal;
         points.push_back({v, at, own.normal});
