@@ -11,6 +11,10 @@
 
 namespace rayrad::radiosity {
 
+/// Surfaces closer than this (× the scene's diagonal) to a surface's plane touch it: for
+/// the premesher's contact lines and for contact outlines alike.
+constexpr double kContactTolerance = 1e-6;
+
 /// A line of constant parameter on a quad q(s, t) = q0 + s (q1 − q0) + t (q3 − q0).
 struct ContactLine {
     double at = 0;                               ///< the constant parameter, in (0, 1)

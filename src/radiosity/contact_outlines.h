@@ -7,15 +7,12 @@
 #pragma once
 
 #include <core/visibility.h>
+#include <radiosity/contact_lines.h>  // kContactTolerance
 #include <radiosity/patch_mesh.h>
 
 #include <array>
 
 namespace rayrad::radiosity {
-
-/// Surfaces within this fraction of the scene's diagonal of a patch's plane lie on it (as
-/// the premesher's contact lines).
-constexpr double kContactTolerance = 1e-6;
 
 /// Fills mesh.outlineBegin / mesh.outlines: for each patch, the triangles of other
 /// surface groups that meet its plane (within `tolerance` m), rise in front of it, and

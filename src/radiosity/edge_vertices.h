@@ -12,6 +12,12 @@
 
 namespace rayrad::radiosity {
 
+/// How many vertices gatherEdgeVertices gathered, by kind.
+struct GatheredVertices {
+    size_t seams = 0;     ///< vertices on concave edges and corners
+    size_t contacts = 0;  ///< vertices beside an outline that crosses their patches
+};
+
 /// Vertices on a concave seam: the vertex lies on an edge of a patch of another surface
 /// that faces it (the edges and corners of a room). The indirect light falls steeply
 /// there, and no reconstruction from centroid values follows it. Their vertex values are
@@ -22,10 +28,6 @@ namespace rayrad::radiosity {
 /// patch's interior (a rotated box on a floor): then the vertices around it are gathered
 /// too (contact_vertices.h). `onProgress` (optional, called from worker threads) gets the
 /// fraction done.
-struct GatheredVertices {
-    size_t seams = 0;     ///< vertices on concave edges and corners
-    size_t contacts = 0;  ///< vertices beside an outline that crosses their patches
-};
 GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                     RadiositySolution& solution, const Visibility& vis, int levels,
                                     const std::function<void(double)>& onProgress = {});

@@ -20,9 +20,6 @@ double targetEdge(const scene::Scene& scene, const scene::MeshingOptions& option
 
 namespace {
 
-/// Surfaces closer than this (× scene diagonal) to a quad's plane touch it.
-constexpr double kContactTolerance = 1e-6;
-
 int cellsFor(double length, double edge) { return std::max(1, static_cast<int>(std::ceil(length / edge - 1e-9))); }
 
 /// The longer of each pair of opposite sides of a quad v0 v1 v2 v3, m: (u, v).

@@ -50,7 +50,8 @@ struct PatchMesh {
     std::vector<ContactOutline> outlines;
     /// Per vertex: 1 when it lies under a surface standing on its patch, inside a closed
     /// solid (under a box: behind every outline crossing its patches, and rays from it
-    /// meet only backs). Its value is then meant for the other side of the outline.
+    /// meet only backs). Its value is then gathered at the outline, on the open side, for
+    /// the visible part of its triangles (contact_vertices.h).
     std::vector<char> underSolid;
 
     const Vec3& corner(const Patch& p, int k) const { return vertices[p.v[k]]; }
