@@ -143,20 +143,51 @@ void findContactOutlines(PatchMesh& mesh, const Visibility& vis, double toleranc
     tbb::parallel_for(size_t(0), mesh.vertices.size(), [&](size_t v) {
         if (behind[v] == 1 && insideSolid(vis, mesh.vertices[v], normalOf[v], lift)) mesh.underSolid[v] = 1;
     });
+
+    // The vertices an outline runs through (within `tolerance`), with its front normal.
+    std::vector<std::vector<Vec3>> through(mesh.vertices.size());
+    for (size_t i = 0; i < mesh.patches.size(); ++i)
+        for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1]; ++o)
+            for (uint32_t v : mesh.patches[i].v) {
+                const ContactOutline& c = mesh.outlines[o];
+                const Vec3& x = mesh.vertices[v];
+                if (glm::length(x - closestOnSegment(x, c.a, c.b)) > tolerance) continue;
+                auto& normals = through[v];
+                if (std::none_of(normals.begin(), normals.end(), [&](const Vec3& m) { return glm::dot(m, c.normal) > 1 - 1e-9; }))
+                    normals.push_back(c.normal);
+            }
+    mesh.throughBegin.assign(mesh.vertices.size() + 1, 0);
+    mesh.throughNormals.clear();
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        mesh.throughNormals.insert(mesh.throughNormals.end(), through[v].begin(), through[v].end());
+        mesh.throughBegin[v + 1] = static_cast<uint32_t>(mesh.throughNormals.size());
+    }
 }
 
 std::array<double, 3> sameSideWeights(const PatchMesh& mesh, size_t i, double u, double v) {
     const std::array<double, 3> plain{1 - u - v, u, v};
-    if (mesh.outlineBegin.empty() || mesh.outlineBegin[i] == mesh.outlineBegin[i + 1]) return plain;
+    if (mesh.outlineBegin.empty()) return plain;
     const Patch& p = mesh.patches[i];
+    auto hasThrough = [&](int k) { auto [first, last] = mesh.outlinesThrough(p.v[k]); return first != last; };
+    const bool crossed = mesh.outlineBegin[i] != mesh.outlineBegin[i + 1];
+    if (!crossed && !hasThrough(0) && !hasThrough(1) && !hasThrough(2)) return plain;
     const Vec3 x = mesh.pointAt(p, u, v);
     std::array<double, 3> w{std::max(0.0, plain[0]), std::max(0.0, plain[1]), std::max(0.0, plain[2])};
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
         // A corner under a solid keeps its weight: its value is the light at the outline.
-        if (!mesh.underSolid[p.v[k]])
-            for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1] && w[k] != 0; ++o)
-                if (segmentsCross(p.normal, x, mesh.corner(p, k), mesh.outlines[o].a, mesh.outlines[o].b)) w[k] = 0;
+        if (!mesh.underSolid[p.v[k]]) {
+            const Vec3 corner = mesh.corner(p, k);
+            auto [first, last] = mesh.outlinesThrough(p.v[k]);
+            if (first != last) {
+                // On an outline: its value is the light in front, for points in front of one.
+                if (std::none_of(first, last, [&](const Vec3& normal) { return glm::dot(normal, x - corner) >= 0; }))
+                    w[k] = 0;
+            } else {
+                for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1] && w[k] != 0; ++o)
+                    if (segmentsCross(p.normal, x, corner, mesh.outlines[o].a, mesh.outlines[o].b)) w[k] = 0;
+            }
+        }
         sum += w[k];
     }
     if (!(sum > 1e-9)) return plain;

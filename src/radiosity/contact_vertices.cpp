@@ -19,10 +19,19 @@ std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vecto
         return std::make_pair(first, counts ? first + (mesh.outlineBegin[i + 1] - mesh.outlineBegin[i]) : nullptr);
     };
 
-    // Per vertex, the crossings of the patches around it.
+    // An outline running through a corner splits the patches around it too, those it only
+    // touches there: their other corners on its far side must not take the light of its
+    // near side (the reconstruction averages both).
+    auto touched = [&](size_t i) {
+        if (mesh.patches[i].diameter < minDiameter) return false;
+        for (uint32_t v : mesh.patches[i].v)
+            if (auto [first, last] = mesh.outlinesThrough(v); first != last) return true;
+        return false;
+    };
+    // Per vertex, the crossed or touched patches around it.
     std::vector<std::vector<uint32_t>> crossed(mesh.vertices.size());
     for (uint32_t i = 0; i < mesh.patches.size(); ++i)
-        if (crossings(i).first != crossings(i).second)
+        if (crossings(i).first != crossings(i).second || touched(i))
             for (uint32_t v : mesh.patches[i].v) crossed[v].push_back(i);
     std::vector<GatherPoint> points;
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -30,7 +39,14 @@ std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vecto
         const Vec3& x = mesh.vertices[v];
         const Patch& own = mesh.patches[patchOf[v]];
         if (!mesh.underSolid[v]) {
-            points.push_back({v, nudgeInside(mesh, static_cast<size_t>(patchOf[v]), x, nudge), own.normal});
+            // On an outline: `nudge` in front of the surfaces through it, in the plane (the
+            // value serves the points in front: sameSideWeights). Elsewhere where it is.
+            Vec3 front(0.0);
+            for (auto [n, last] = mesh.outlinesThrough(static_cast<uint32_t>(v)); n != last; ++n)
+                front += *n - glm::dot(*n, own.normal) * own.normal;
+            const Vec3 at = glm::length(front) > 0 ? x + nudge * glm::normalize(front)
+                                                   : nudgeInside(mesh, static_cast<size_t>(patchOf[v]), x, nudge);
+            points.push_back({v, at, own.normal});
             continue;
         }
         // Under the box: from the nearest point of the outlines, `nudge` in front of the
@@ -43,6 +59,7 @@ std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vecto
                 const Vec3 y = closestOnSegment(x, c->a, c->b);
                 if (glm::length(y - x) < best) best = glm::length(y - x), foot = y, nearest = c;
             }
+        if (!nearest) continue;  // under a solid, among touched patches only: left as it is
         Vec3 at = foot + nudge * nearest->normal;
         at -= glm::dot(own.normal, at - x) * own.normal;
         points.push_back({v, at, own.normal});

@@ -23,7 +23,9 @@ struct GatherPoint {
 /// is gathered where it is (nudged into `patchOf[v]`, its brightest patch), unless it is
 /// under a solid (mesh.underSolid: under the box): then at the nearest point of the
 /// outlines, moved `nudge` m out in front of that surface, so the part of its triangles
-/// that is visible ends at the light beside the outline.
+/// that is visible ends at the light beside the outline. A vertex an outline runs through
+/// is gathered `nudge` m in front of the surfaces through it (its value serves the points
+/// in front: sameSideWeights).
 std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vector<int64_t>& patchOf,
                                          double minDiameter, double nudge);
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rayrad::radiosity {
@@ -53,6 +54,17 @@ struct PatchMesh {
     /// meet only backs). Its value is then gathered at the outline, on the open side, for
     /// the visible part of its triangles (contact_vertices.h).
     std::vector<char> underSolid;
+    /// Per vertex that an outline crossing one of its patches runs through: the front
+    /// normals of those outlines, vertex v's at throughNormals[throughBegin[v] ..
+    /// throughBegin[v + 1]). Such a vertex lies on both sides; its value is the light in
+    /// front (contact_vertices.h), which no point behind takes (sameSideWeights).
+    std::vector<uint32_t> throughBegin;
+    std::vector<Vec3> throughNormals;
+    /// The front normals of the outlines running through vertex v (none when none does).
+    std::pair<const Vec3*, const Vec3*> outlinesThrough(uint32_t v) const {
+        if (throughBegin.empty()) return {nullptr, nullptr};
+        return {throughNormals.data() + throughBegin[v], throughNormals.data() + throughBegin[v + 1]};
+    }
 
     const Vec3& corner(const Patch& p, int k) const { return vertices[p.v[k]]; }
     /// The point with barycentric coordinates (1-u-v, u, v) on patch p.
