@@ -31,6 +31,7 @@
 
 #include <cmath>
 #include <mutex>
+#include <optional>
 
 namespace rayrad::app {
 
@@ -178,12 +179,20 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
     Progress progress(label, options.quiet);
     std::mutex m;
     raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, run.solution), {}};
+    // render.indirect "gather": a final gather at each hit, as at a sensor.
+    std::optional<radiosity::Gatherer> gatherer;
+    if (run.scene.render.gatherIndirect && run.scene.hasReflectance()) {
+        if (run.clustering.clusters.empty())  // a saved solution without sensors: not built yet
+            run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
+        gatherer.emplace(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
+                         radiosity::GatherOptions::from(run.scene.solver));
+    }
     HdrImage image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera, run.scene.render,
                                       [&](double f) {
                                           std::lock_guard<std::mutex> lock(m);
                                           progress.update(f);
                                       },
-                                      &forDisplay, options.rowBegin, options.rowEnd);
+                                      &forDisplay, options.rowBegin, options.rowEnd, gatherer ? &*gatherer : nullptr);
     return {std::move(image), std::move(forDisplay.image)};
 }
 
@@ -327,7 +336,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     }
 
     if (options.wantImage) {
-        run.report.begin("ray trace");
+        run.report.begin(run.scene.render.gatherIndirect ? "ray trace (indirect: a final gather at each hit)" : "ray trace");
         auto [image, display] = traceImage(run, *run.scene.camera, "ray trace", options);
         run.image = std::move(image);
         run.displayImage = std::move(display);

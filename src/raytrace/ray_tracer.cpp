@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace rayrad::raytrace {
 
@@ -31,7 +32,7 @@ double fresnelDielectric(double cosI, double eta, double& cosT) {
 
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
-             int areaLightSamples, Random& rng, const RayCone& cone, int depth) {
+             int areaLightSamples, Random& rng, const RayCone& cone, int depth, const HitGather* gather) {
     Hit h = embree.intersect(origin, dir, 0.0, std::numeric_limits<double>::infinity());
     if (!h.found) return Rgb(0.0);
     const Vec3 unit = glm::normalize(dir);
@@ -48,7 +49,7 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
         if (m.kind == scene::SurfaceKind::Mirror) {
             if (cosI <= 0) return Rgb(0.0);  // the back of a mirror is black
             return m.specular * shadeRay(scene, mesh, solution, lights, embree, x + offset * t.normal, reflected,
-                                         areaLightSamples, rng, onward, depth + 1);
+                                         areaLightSamples, rng, onward, depth + 1, gather);
         }
         // Glass: entering from the front (cosI > 0) or leaving through the back.
         bool entering = cosI > 0;
@@ -58,11 +59,11 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
         double cosT = 0;
         double R = fresnelDielectric(c, eta, cosT);
         Rgb L = R * shadeRay(scene, mesh, solution, lights, embree, x + offset * n, reflected, areaLightSamples, rng,
-                             onward, depth + 1);
+                             onward, depth + 1, gather);
         if (R < 1) {
             Vec3 refracted = eta * unit + (eta * c - cosT) * n;  // Snell's law
             L += (1 - R) * shadeRay(scene, mesh, solution, lights, embree, x - offset * n, refracted,
-                                    areaLightSamples, rng, onward, depth + 1);
+                                    areaLightSamples, rng, onward, depth + 1, gather);
         }
         return L;
     }
@@ -90,9 +91,12 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     const Vec3 x = radiosity::shadingPoint(mesh, h.patch, h.u, h.v);
     const Vec3 n = radiosity::shadingNormal(mesh, h.patch, h.u, h.v);
     Rgb direct = lights.illuminanceForDisplay(x, n, embree, areaLightSamples, &rng, scene.render.directThreshold);
-    Rgb indirect = solution.vertexIndirect.empty()
-                       ? Rgb(0.0)
-                       : radiosity::interpolateIndirect(mesh, solution, h.patch, h.u, h.v);
+    Rgb indirect(0.0);
+    if (gather) {
+        indirect = gather->gatherer.indirectAt(mesh.pointAt(p, h.u, h.v), p.normal, gather->memo);  // on its own plane
+    } else if (!solution.vertexIndirect.empty()) {
+        indirect = radiosity::interpolateIndirect(mesh, solution, h.patch, h.u, h.v);
+    }
     return L + rho * (direct + indirect) / kPi;  // L = ρ E / π
 }
 
@@ -111,7 +115,7 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
                 const radiosity::DirectLight& lights, const EmbreeScene& embree, const ImageCamera& camera,
                 const scene::RenderOptions& options, const std::function<void(double)>& onProgress, DisplayAverage* display,
-                int rowBegin, int rowEnd) {
+                int rowBegin, int rowEnd, const radiosity::Gatherer* gatherer) {
     HdrImage image(camera.width(), camera.height());
     const double Lc = display ? display->compressionLuminance : 0.0;
     if (display) display->image = HdrImage(camera.width(), camera.height());
@@ -128,6 +132,9 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
     const int first = std::clamp(rowBegin, 0, image.height), last = rowEnd < 0 ? image.height : std::clamp(rowEnd, first, image.height);
     tbb::parallel_for(tbb::blocked_range<int>(first, last, 1), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
+            radiosity::GatherMemo memo;  // the row's re-gathered corners (render.indirect "gather")
+            std::optional<HitGather> gather;
+            if (gatherer) gather.emplace(HitGather{*gatherer, memo});
             for (int x = 0; x < image.width; ++x) {
                 Random rng(options.seed, static_cast<uint64_t>(y) * image.width + x);
                 Rgb sum(0.0), weighted(0.0);
@@ -144,7 +151,9 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                     }
                     const CameraRay r = camera.ray(x + jx, y + jy);
                     const Rgb sample =
-                        r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction, raysPerHit, rng, sampleCone) : Rgb(0.0);
+                        r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction, raysPerHit, rng,
+                                           sampleCone, 0, gather ? &*gather : nullptr)
+                                : Rgb(0.0);
                     sum += sample;
                     if (Lc > 0) {
                         const double w = 1 / (1 + std::max(0.0, luminance(sample)) / Lc);

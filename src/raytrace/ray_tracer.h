@@ -3,6 +3,7 @@
 
 #include <core/hdr_image.h>
 #include <radiosity/direct_light.h>
+#include <radiosity/gather.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/solution.h>
 #include <raytrace/camera.h>
@@ -36,18 +37,30 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
 /// that hit mirrors or glass recurse (Whitted). Back faces are black. Each pixel has its
 /// own random stream seeded by (seed, pixel), so the image does not depend on threads.
 /// Only rows [rowBegin, rowEnd) are traced (the rest stay black; rowEnd −1: to the last):
-/// a tile of a render has the same pixels as the whole.
+/// a tile of a render has the same pixels as the whole. `gatherer` (or null): E_indirect
+/// is a final gather at each hit instead (render.indirect "gather").
 HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
                 const radiosity::DirectLight& lights, const EmbreeScene& embree, const ImageCamera& camera,
                 const scene::RenderOptions& options, const std::function<void(double)>& onProgress = {},
-                DisplayAverage* display = nullptr, int rowBegin = 0, int rowEnd = -1);
+                DisplayAverage* display = nullptr, int rowBegin = 0, int rowEnd = -1,
+                const radiosity::Gatherer* gatherer = nullptr);
+
+/// A final gather at each hit (render.indirect "gather") and the memo of the corner
+/// values it re-gathers: render() keeps one per image row, so a row's pixels share them
+/// and the image does not depend on the threads.
+struct HitGather {
+    const radiosity::Gatherer& gatherer;
+    radiosity::GatherMemo& memo;
+};
 
 /// Luminance (cd/m², RGB) seen along one ray; used by render() and by tests. Mirrors
 /// (Ks × the reflected ray) and glass (Fresnel reflection + refraction) recurse up to
 /// render.max_depth; beyond it a ray returns black. `cone` is the ray's footprint, which
-/// filters textures at the hit (zero: a point).
+/// filters textures at the hit (zero: a point). `gather` (or null): E_indirect from a
+/// final gather at the hit instead of the mesh.
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
-             int areaLightSamples, Random& rng, const RayCone& cone = {}, int depth = 0);
+             int areaLightSamples, Random& rng, const RayCone& cone = {}, int depth = 0,
+             const HitGather* gather = nullptr);
 
 }  // namespace rayrad::raytrace

@@ -539,6 +539,11 @@ void parseRender(JsonObject r, SceneDesc& d) {
     d.render.smoothingAngleDeg = r.number("smoothing_angle_deg", d.render.smoothingAngleDeg);
     if (!(d.render.smoothingAngleDeg >= 0 && d.render.smoothingAngleDeg < 90))
         r.error("smoothing_angle_deg", fmt::format("expected an angle in [0, 90) (0: flat shading), got {}", d.render.smoothingAngleDeg));
+    if (auto indirect = r.string("indirect")) {
+        if (*indirect == "mesh") d.render.gatherIndirect = false;
+        else if (*indirect == "gather") d.render.gatherIndirect = true;
+        else r.error("indirect", fmt::format("expected \"mesh\" or \"gather\", got \"{}\"", *indirect));
+    }
     r.finish();
 }
 

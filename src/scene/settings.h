@@ -150,6 +150,10 @@ struct RenderOptions {
     /// vertices (the mean normal of the triangles around a corner that meet it within this
     /// angle), so their facets do not show; 0 shades every triangle flat. Images only.
     double smoothingAngleDeg = 30;
+    /// Where a hit's indirect light comes from: the radiosity mesh's vertex values, or a
+    /// final gather at the hit itself (as at a sensor: no mesh can show, and it is slow — a
+    /// reference for judging the mesh's interpolation, `render.indirect` "gather").
+    bool gatherIndirect = false;
 };
 
 }  // namespace rayrad::scene
