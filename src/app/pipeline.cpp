@@ -18,6 +18,7 @@
 #include <radiosity/gather.h>
 #include <radiosity/sensors.h>
 #include <radiosity/solution_file.h>
+#include <radiosity/covered_patches.h>
 #include <radiosity/mesher.h>
 #include <radiosity/shooting_solver.h>
 #include <raytrace/camera.h>
@@ -304,6 +305,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
     radiosity::findContactOutlines(run.mesh, *run.embree, radiosity::kContactTolerance * run.scene.diagonal(),
                                    1e-6 * run.scene.diagonal());
+    run.mesh.covered = radiosity::coveredPatches(run.mesh, *run.embree, radiosity::kCoverLift * run.scene.diagonal());
     for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors)) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
         run.warnings.push_back(std::move(w));

@@ -1,11 +1,12 @@
 #include <radiosity/clusters.h>
+
+#include <radiosity/covered_patches.h>
 #include <radiosity/patch_reflectance.h>
 
 #include <core/check.h>
 #include <scene/polygon.h>
 
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -157,12 +158,9 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
     // joined them: then a cluster sample under the cover darkened the whole cluster's
     // cluster→cluster light (blotches of the cluster's size on the hall's ceiling).
     // Covered and open patches are never one cluster.
-    std::vector<char> covered(mesh.patches.size(), 0);
-    if (vis)
-        tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
-            const Patch& p = mesh.patches[i];
-            covered[i] = !vis->visible(p.centroid + lift * p.normal, p.centroid + (lift + 0.25 * p.diameter) * p.normal);
-        });
+    const std::vector<char> covered = !mesh.covered.empty() ? mesh.covered
+                                      : vis ? coveredPatches(mesh, *vis, kCoverLift * scene.diagonal())
+                                            : std::vector<char>(mesh.patches.size(), 0);
     std::map<std::array<int, 3>, std::vector<uint32_t>> voxelClusters;  // voxel → cluster ids
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];

@@ -16,6 +16,7 @@ namespace rayrad::radiosity {
 struct GatheredVertices {
     size_t seams = 0;     ///< vertices on concave edges and corners
     size_t contacts = 0;  ///< vertices beside an outline that crosses their patches
+    size_t rims = 0;      ///< vertices on the rim of a covered part (covered_patches.h)
 };
 
 /// Vertices on a concave seam: the vertex lies on an edge of a patch of another surface
@@ -26,7 +27,9 @@ struct GatheredVertices {
 /// levels do). Surfaces that touch without a shared mesh line are not seams: their
 /// vertices keep the reconstruction — unless the outline where they touch crosses a
 /// patch's interior (a rotated box on a floor): then the vertices around it are gathered
-/// too (contact_vertices.h). `onProgress` (optional, called from worker threads) gets the
+/// too (contact_vertices.h). So are the vertices on the rim of a covered part (a lamp
+/// hung just below a ceiling: mesh.covered), whose reconstruction sees one side only.
+/// `onProgress` (optional, called from worker threads) gets the
 /// fraction done.
 GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                     RadiositySolution& solution, const Visibility& vis, int levels,

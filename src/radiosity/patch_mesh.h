@@ -54,6 +54,9 @@ struct PatchMesh {
     /// meet only backs). Its value is then gathered at the outline, on the open side, for
     /// the visible part of its triangles (contact_vertices.h).
     std::vector<char> underSolid;
+    /// Per patch: 1 when a surface lies just in front of it (covered_patches.h); empty when
+    /// not looked for.
+    std::vector<char> covered;
     /// Per vertex that an outline crossing one of its patches runs through: the front
     /// normals of those outlines, vertex v's at throughNormals[throughBegin[v] ..
     /// throughBegin[v + 1]). Such a vertex lies on both sides; its value is the light in

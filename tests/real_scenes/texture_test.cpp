@@ -99,16 +99,17 @@ TEST_CASE("a textured room lights as the same room at the textures' mean reflect
     }
 
     // The image: on average the same light, but with the checks in it.
-    double sumA = 0, sumB = 0, sumSqA = 0, sumSqB = 0;
+    double sumA = 0, sumB = 0, sumDiff = 0;
     const size_t n = a.image->pixels.size();
     for (size_t p = 0; p < n; ++p) {
         const double la = luminance(a.image->pixels[p]), lb = luminance(b.image->pixels[p]);
-        sumA += la, sumB += lb, sumSqA += la * la, sumSqB += lb * lb;
+        sumA += la, sumB += lb, sumDiff += std::abs(la - lb);
     }
-    INFO("mean luminance textured " << sumA / n << ", plain " << sumB / n << " cd/m²");
+    INFO("mean luminance textured " << sumA / n << ", plain " << sumB / n << " cd/m², mean |difference| " << sumDiff / n);
     CHECK(sumA / n == Approx(sumB / n).epsilon(0.02));
-    const double varA = sumSqA / n - std::pow(sumA / n, 2), varB = sumSqB / n - std::pow(sumB / n, 2);
-    CHECK(varA > 1.5 * varB);  // the checks and the picture show
+    // The checks and the picture show: the pixels differ from the plain room's by 7 % of
+    // the mean on average (0 without textures: the same seed), filtered over the pixels.
+    CHECK(sumDiff / n > 0.03 * sumB / n);
 }
 
 TEST_CASE("a mesh file brings its texture coordinates and image, a missing image is a warning", "[textures]") {

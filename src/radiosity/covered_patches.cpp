@@ -1,0 +1,84 @@
+#include <radiosity/covered_patches.h>
+
+#include <radiosity/gather.h>  // nudgeInside
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace rayrad::radiosity {
+
+std::vector<char> coveredPatches(const PatchMesh& mesh, const Visibility& vis, double lift) {
+    std::vector<char> covered(mesh.patches.size(), 0);
+    tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
+        const Patch& p = mesh.patches[i];
+        covered[i] = !vis.visible(p.centroid + lift * p.normal, p.centroid + (lift + 0.25 * p.diameter) * p.normal);
+    });
+    return covered;
+}
+
+namespace {
+/// True when a surface lies in front of x (normal n) nearer than `reach`, looking from
+/// `lift` above it.
+bool coveredAt(const Visibility& vis, const Vec3& x, const Vec3& n, double reach, double lift) {
+    return !vis.visible(x + lift * n, x + (lift + reach) * n);
+}
+
+/// True when x (in patch p's plane) lies inside patch p.
+bool insidePatch(const PatchMesh& mesh, const Patch& p, const Vec3& x) {
+    const Vec3 a = mesh.corner(p, 0), b = mesh.corner(p, 1), c = mesh.corner(p, 2);
+    return glm::dot(glm::cross(b - a, x - a), p.normal) >= 0 && glm::dot(glm::cross(c - b, x - b), p.normal) >= 0 &&
+           glm::dot(glm::cross(a - c, x - c), p.normal) >= 0;
+}
+}  // namespace
+
+std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vis, const std::vector<int64_t>& patchOf,
+                                     const std::vector<char>& taken, double nudge, double lift) {
+    std::vector<GatherPoint> points;
+    if (mesh.covered.empty()) return points;
+    std::vector<std::vector<uint32_t>> around(mesh.vertices.size());
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
+        for (uint32_t v : mesh.patches[i].v) around[v].push_back(i);
+    // The covered patches at the rim (a corner shared with an open patch): their corners'
+    // values reach the visible part of the patches around the rim.
+    std::vector<char> hasOpen(mesh.vertices.size(), 0), atRim(mesh.vertices.size(), 0);
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
+        if (!mesh.covered[i])
+            for (uint32_t v : mesh.patches[i].v) hasOpen[v] = 1;
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
+        const Patch& p = mesh.patches[i];
+        if (mesh.covered[i] && (hasOpen[p.v[0]] || hasOpen[p.v[1]] || hasOpen[p.v[2]]))
+            for (uint32_t v : p.v) atRim[v] = 1;
+    }
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const auto& ps = around[v];
+        if (!atRim[v] || taken[v] || patchOf[v] < 0) continue;
+        const Patch& own = mesh.patches[patchOf[v]];
+        const Vec3& x = mesh.vertices[v];
+        const double reach = 0.25 * own.diameter;  // as coveredPatches looks
+        if (!coveredAt(vis, x, own.normal, reach, lift)) {
+            points.push_back({v, nudgeInside(mesh, static_cast<size_t>(patchOf[v]), x, nudge), own.normal});
+            continue;
+        }
+        // Under the cover: the nearest open point of its patches on the same plane.
+        const Vec3 t1 = glm::normalize(glm::cross(own.normal, std::abs(own.normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+        const Vec3 t2 = glm::cross(own.normal, t1);
+        std::optional<Vec3> open;
+        for (int ring = 1; ring <= 8 && !open; ++ring)
+            for (int k = 0; k < 16 && !open; ++k) {
+                const double phi = 2 * kPi * k / 16;
+                const Vec3 y = x + ring * own.diameter / 8 * (std::cos(phi) * t1 + std::sin(phi) * t2);
+                const bool onSurface = std::any_of(ps.begin(), ps.end(), [&](uint32_t i) {
+                    const Patch& p = mesh.patches[i];
+                    return glm::dot(p.normal, own.normal) > 1 - 1e-9 && insidePatch(mesh, p, y);
+                });
+                if (onSurface && !coveredAt(vis, y, own.normal, reach, lift)) open = y;
+            }
+        if (open) points.push_back({v, *open, own.normal});
+    }
+    return points;
+}
+
+}  // namespace rayrad::radiosity
