@@ -35,7 +35,7 @@ bool insidePatch(const PatchMesh& mesh, const Patch& p, const Vec3& x) {
 }  // namespace
 
 std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vis, const std::vector<int64_t>& patchOf,
-                                     const std::vector<char>& taken, double nudge, double lift) {
+                                     const std::vector<char>& taken, double minDiameter, double nudge, double lift) {
     std::vector<GatherPoint> points;
     if (mesh.covered.empty()) return points;
     std::vector<std::vector<uint32_t>> around(mesh.vertices.size());
@@ -49,7 +49,7 @@ std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vi
             for (uint32_t v : mesh.patches[i].v) hasOpen[v] = 1;
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];
-        if (mesh.covered[i] && (hasOpen[p.v[0]] || hasOpen[p.v[1]] || hasOpen[p.v[2]]))
+        if (mesh.covered[i] && p.diameter >= minDiameter && (hasOpen[p.v[0]] || hasOpen[p.v[1]] || hasOpen[p.v[2]]))
             for (uint32_t v : p.v) atRim[v] = 1;
     }
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {

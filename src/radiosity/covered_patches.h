@@ -21,13 +21,14 @@ constexpr double kCoverLift = 2e-5;
 std::vector<char> coveredPatches(const PatchMesh& mesh, const Visibility& vis, double lift);
 
 /// The vertices on the rim of a covered part (mesh.covered: the corners of covered patches
-/// that share a corner with an open patch) that `taken` does not hold yet, with where to
-/// gather their value: at the
+/// at least `minDiameter` m across that share a corner with an open patch; smaller ones
+/// are an imported mesh's own detail, a cushion pressed on a sofa) that `taken` does not
+/// hold yet, with where to gather their value: at the
 /// vertex (nudged `nudge` m into patchOf[v], its brightest patch) when the vertex itself
 /// is open, else at the nearest open point of its patches (looked for on rings of an
 /// eighth of its patch's diameter, up to one diameter out), since the part of its
 /// triangles one sees lies beside the cover, in the open. `lift`: as for coveredPatches.
 std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vis, const std::vector<int64_t>& patchOf,
-                                     const std::vector<char>& taken, double nudge, double lift);
+                                     const std::vector<char>& taken, double minDiameter, double nudge, double lift);
 
 }  // namespace rayrad::radiosity
