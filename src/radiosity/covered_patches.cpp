@@ -10,16 +10,10 @@
 
 namespace rayrad::radiosity {
 
-std::vector<char> coveredPatches(const PatchMesh& mesh, const Visibility& vis, double lift) {
-    std::vector<char> covered(mesh.patches.size(), 0);
-    tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
-        const Patch& p = mesh.patches[i];
-        covered[i] = !vis.visible(p.centroid + lift * p.normal, p.centroid + (lift + 0.25 * p.diameter) * p.normal);
-    });
-    return covered;
-}
-
 namespace {
+/// A patch is covered when a surface lies in front of it nearer than this many diameters.
+constexpr double kCoverDiameters = 0.25;
+
 /// True when a surface lies in front of x (normal n) nearer than `reach`, looking from
 /// `lift` above it.
 bool coveredAt(const Visibility& vis, const Vec3& x, const Vec3& n, double reach, double lift) {
@@ -33,6 +27,15 @@ bool insidePatch(const PatchMesh& mesh, const Patch& p, const Vec3& x) {
            glm::dot(glm::cross(a - c, x - c), p.normal) >= 0;
 }
 }  // namespace
+
+std::vector<char> coveredPatches(const PatchMesh& mesh, const Visibility& vis, double lift) {
+    std::vector<char> covered(mesh.patches.size(), 0);
+    tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
+        const Patch& p = mesh.patches[i];
+        covered[i] = coveredAt(vis, p.centroid, p.normal, kCoverDiameters * p.diameter, lift);
+    });
+    return covered;
+}
 
 std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vis, const std::vector<int64_t>& patchOf,
                                      const std::vector<char>& taken, double minDiameter, double nudge, double lift) {
@@ -57,7 +60,7 @@ std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vi
         if (!atRim[v] || taken[v] || patchOf[v] < 0) continue;
         const Patch& own = mesh.patches[patchOf[v]];
         const Vec3& x = mesh.vertices[v];
-        const double reach = 0.25 * own.diameter;  // as coveredPatches looks
+        const double reach = kCoverDiameters * own.diameter;  // as coveredPatches looks
         if (!coveredAt(vis, x, own.normal, reach, lift)) {
             points.push_back({v, nudgeInside(mesh, static_cast<size_t>(patchOf[v]), x, nudge), own.normal});
             continue;
