@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace rayrad {
 
@@ -38,6 +39,12 @@ inline Vec3 closestOnSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
     const Vec3 ab = b - a;
     const double t = glm::clamp(glm::dot(x - a, ab) / glm::max(glm::dot(ab, ab), 1e-300), 0.0, 1.0);
     return a + t * ab;
+}
+
+/// Two unit vectors t1, t2 with (t1, t2, n) a right-handed orthonormal frame, for a unit n.
+inline std::pair<Vec3, Vec3> tangentFrame(const Vec3& n) {
+    const Vec3 t1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+    return {t1, glm::cross(n, t1)};
 }
 
 std::string toString(const Vec3& v);

@@ -78,8 +78,7 @@ bool crossesInterior(const std::array<Vec3, 3>& p, const Segment& ab) {
 /// lone panel standing on the floor — a screen, a wall drawn as one quad — the rays that
 /// leave away from the panel reach the room.)
 bool insideSolid(const Visibility& vis, const Vec3& x, const Vec3& n, double lift) {
-    const Vec3 t1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
-    const Vec3 t2 = glm::cross(n, t1);
+    const auto [t1, t2] = tangentFrame(n);
     const Vec3 from = x + lift * n;
     for (int k = 0; k < 8; ++k) {
         const double phi = kPi / 4 * k, elevation = k % 2 == 0 ? 0.3 : 1.0;  // rad above the surface

@@ -66,8 +66,7 @@ std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vi
             continue;
         }
         // Under the cover: the nearest open point of its patches on the same plane.
-        const Vec3 t1 = glm::normalize(glm::cross(own.normal, std::abs(own.normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
-        const Vec3 t2 = glm::cross(own.normal, t1);
+        const auto [t1, t2] = tangentFrame(own.normal);
         std::optional<Vec3> open;
         for (int ring = 1; ring <= 8 && !open; ++ring)
             for (int k = 0; k < 16 && !open; ++k) {

@@ -68,8 +68,7 @@ void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, boo
         for (uint32_t i : around[v]) n += mesh.patches[i].normal * mesh.patches[i].area;
         if (glm::length(n) == 0) continue;
         n = glm::normalize(n);
-        Vec3 t1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
-        Vec3 t2 = glm::cross(n, t1);
+        const auto [t1, t2] = tangentFrame(n);
         std::vector<Vec2> uv;
         std::vector<Rgb> values;
         for (uint32_t i : ring) {
