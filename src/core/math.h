@@ -41,6 +41,17 @@ inline Vec3 closestOnSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
     return a + t * ab;
 }
 
+/// Barycentric coordinates (of a, b, c) of x, taken in the triangle's plane; x inside the
+/// triangle when none is negative. The triangle must not be degenerate.
+inline Vec3 barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
+    const Vec3 e1 = b - a, e2 = c - a, d = x - a;
+    const double p = glm::dot(e1, e1), q = glm::dot(e1, e2), r = glm::dot(e2, e2);
+    const double d1 = glm::dot(d, e1), d2 = glm::dot(d, e2);
+    const double den = p * r - q * q;
+    const double u = (r * d1 - q * d2) / den, v = (p * d2 - q * d1) / den;
+    return {1 - u - v, u, v};
+}
+
 /// Two unit vectors t1, t2 with (t1, t2, n) a right-handed orthonormal frame, for a unit n.
 inline std::pair<Vec3, Vec3> tangentFrame(const Vec3& n) {
     const Vec3 t1 = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));

@@ -15,16 +15,6 @@ constexpr double kInteriorMargin = 1e-3;
 
 using Segment = std::pair<Vec3, Vec3>;
 
-/// Barycentric coordinates of x (in the triangle's plane) on the triangle p.
-Vec3 barycentric(const std::array<Vec3, 3>& p, const Vec3& x) {
-    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0], d = x - p[0];
-    const double a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2);
-    const double d1 = glm::dot(d, e1), d2 = glm::dot(d, e2);
-    const double den = a * c - b * b;
-    const double u = (c * d1 - b * d2) / den, v = (a * d2 - b * d1) / den;
-    return {1 - u - v, u, v};
-}
-
 /// The segment along which triangle t meets the plane through c with unit normal n, when
 /// t also rises in front of the plane (a corner more than `tol` in front): corners within
 /// `tol` of the plane and the points where t's edges cross it, projected onto it.
@@ -57,7 +47,7 @@ std::optional<Segment> meetsPlane(const std::array<Vec3, 3>& t, const Vec3& c, c
 /// True when the segment ab (in the triangle's plane) runs through triangle p's interior,
 /// not only along an edge or through a corner.
 bool crossesInterior(const std::array<Vec3, 3>& p, const Segment& ab) {
-    const Vec3 la = barycentric(p, ab.first), lb = barycentric(p, ab.second);
+    const Vec3 la = barycentric(p[0], p[1], p[2], ab.first), lb = barycentric(p[0], p[1], p[2], ab.second);
     double t0 = 0, t1 = 1;  // the part of a + t (b − a) where every coordinate is ≥ 0
     for (int k = 0; k < 3; ++k) {
         const double s = la[k], e = lb[k] - la[k];

@@ -19,13 +19,6 @@ constexpr double kCoverDiameters = 0.25;
 bool coveredAt(const Visibility& vis, const Vec3& x, const Vec3& n, double reach, double lift) {
     return !vis.visible(x + lift * n, x + (lift + reach) * n);
 }
-
-/// True when x (in patch p's plane) lies inside patch p.
-bool insidePatch(const PatchMesh& mesh, const Patch& p, const Vec3& x) {
-    const Vec3 a = mesh.corner(p, 0), b = mesh.corner(p, 1), c = mesh.corner(p, 2);
-    return glm::dot(glm::cross(b - a, x - a), p.normal) >= 0 && glm::dot(glm::cross(c - b, x - b), p.normal) >= 0 &&
-           glm::dot(glm::cross(a - c, x - c), p.normal) >= 0;
-}
 }  // namespace
 
 std::vector<char> coveredPatches(const PatchMesh& mesh, const Visibility& vis, double lift) {
@@ -74,7 +67,9 @@ std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vi
                 const Vec3 y = x + ring * own.diameter / 8 * (std::cos(phi) * t1 + std::sin(phi) * t2);
                 const bool onSurface = std::any_of(ps.begin(), ps.end(), [&](uint32_t i) {
                     const Patch& p = mesh.patches[i];
-                    return glm::dot(p.normal, own.normal) > 1 - 1e-9 && insidePatch(mesh, p, y);
+                    if (!(p.area > 0) || glm::dot(p.normal, own.normal) <= 1 - 1e-9) return false;
+                    const Vec3 b = barycentric(mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2), y);
+                    return std::min({b[0], b[1], b[2]}) >= 0;
                 });
                 if (onSurface && !coveredAt(vis, y, own.normal, reach, lift)) open = y;
             }
