@@ -3,14 +3,19 @@
 #include <radiosity/form_factor.h>
 #include <radiosity/light_value.h>
 #include <radiosity/mesher.h>
+#include <radiosity/shared_corners.h>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <deque>
 #include <optional>
+#include <unordered_map>
 
 namespace rayrad::radiosity {
 
@@ -38,6 +43,10 @@ std::vector<std::array<double, 2>> shadowSamplePoints(int count) {
     return out;
 }
 
+/// Patches a thread takes at a time: their shared corners are evaluated once in it
+/// (CornerValues). A few rows of a large surface's grid.
+constexpr size_t kChunkPatches = 1024;
+
 /// Shadow rays per point source on a partly shadowed patch.
 constexpr int kShadowSamples = 64;
 /// Sample points for an area light whose shadow edge crosses a patch: kShadowSamples for
@@ -46,14 +55,47 @@ constexpr int kShadowSamples = 64;
 /// strongest one's; at least this many.
 constexpr int kMinAreaShadowSamples = 16;
 
-/// The four evaluation points of patch p: its corners pulled a hair toward the centroid
-/// (so shadow rays do not start inside a neighbouring wall), then the centroid.
-std::array<Vec3, 4> evaluationPoints(const PatchMesh& mesh, const Patch& p) {
-    std::array<Vec3, 4> points;
-    for (int k = 0; k < 3; ++k) points[k] = mesh.corner(p, k) + 1e-4 * (p.centroid - mesh.corner(p, k));
-    points[3] = p.centroid;
-    return points;
+/// The direct light at one evaluation point: where it is, the total E (lx) and each
+/// source's share and unshadowed value (DirectLight::illuminance's perSource/perSourceOpen).
+struct PointValues {
+    Vec3 x{0.0};
+    Rgb e{0.0};
+    std::vector<Rgb> share, open;
+};
+
+void evaluateAt(PointValues& out, const Vec3& x, const Vec3& normal, const DirectLight& lights, const Visibility& vis,
+                int areaSamples) {
+    out.x = x;
+    out.e = lights.illuminance(x, normal, vis, areaSamples, nullptr, &out.share, &out.open);
 }
+
+/// The corner values a run of patches shares (sharedCorners): each (vertex, side) is
+/// evaluated once at the vertex itself. A thread keeps one for a chunk of consecutive
+/// patches (the premesher makes a surface's patches row by row, so most of a chunk's
+/// corners are shared within it); a corner on a chunk's border is evaluated by both, alike.
+class CornerValues {
+  public:
+    void clear() {
+        m_slot.clear();
+        m_used = 0;
+    }
+    /// Vertex v's values for the side facing `normal` (back: the reverse side).
+    const PointValues& at(const PatchMesh& mesh, uint32_t v, bool back, const Vec3& normal, const DirectLight& lights,
+                          const Visibility& vis, int areaSamples) {
+        const uint64_t key = 2 * uint64_t(v) + (back ? 1 : 0);
+        auto [it, added] = m_slot.emplace(key, m_used);
+        if (!added) return m_values[it->second];
+        if (m_used == m_values.size()) m_values.emplace_back();
+        PointValues& out = m_values[m_used++];
+        evaluateAt(out, mesh.vertices[v], normal, lights, vis, areaSamples);
+        return out;
+    }
+
+  private:
+    std::unordered_map<uint64_t, size_t> m_slot;
+    std::deque<PointValues> m_values;  ///< stable references; kept between chunks (their vectors' capacity)
+    size_t m_used = 0;
+};
 
 /// Deepest split, and tolerance, of the solid-angle integral of a point source whose
 /// intensity varies with direction (a spot, a luminaire).
@@ -260,15 +302,27 @@ struct SideLight {
 
 /// The direct light on the side of patch p that faces `normal` (p.normal for its front,
 /// −p.normal for its back): the 4-point rule, with each point source's share made exact
-/// and near area lights integrated adaptively.
+/// and near area lights integrated adaptively. The rule's points: the centroid, and the
+/// corners — shared ones (`shared`) from `corners`, the others pulled a hair toward the
+/// centroid (so shadow rays do not start inside a neighbouring wall).
 SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
-                    const Visibility& vis, int areaSamples, const std::vector<std::array<double, 2>>& refined) {
-    const std::array<Vec3, 4> points = evaluationPoints(mesh, p);
-    thread_local std::vector<Rgb> share[4];  // per source s, its share of E at points[k]
-    thread_local std::vector<Rgb> open[4];   // per area source s, its unshadowed π L F at points[k]
-    Rgb e[4];
-    for (int k = 0; k < 4; ++k)
-        e[k] = lights.illuminance(points[k], normal, vis, areaSamples, nullptr, &share[k], &open[k]);
+                    const Visibility& vis, int areaSamples, const std::vector<std::array<double, 2>>& refined,
+                    const std::vector<char>& shared, CornerValues& corners) {
+    thread_local PointValues own[4];
+    const PointValues* at[4];
+    for (int k = 0; k < 3; ++k) {
+        const uint32_t v = p.v[k];
+        if (shared[v]) {
+            at[k] = &corners.at(mesh, v, glm::dot(normal, p.normal) < 0, normal, lights, vis, areaSamples);
+        } else {
+            evaluateAt(own[k], mesh.corner(p, k) + 1e-4 * (p.centroid - mesh.corner(p, k)), normal, lights, vis, areaSamples);
+            at[k] = &own[k];
+        }
+    }
+    evaluateAt(own[3], p.centroid, normal, lights, vis, areaSamples);
+    at[3] = &own[3];
+    const std::array<Vec3, 4> points{at[0]->x, at[1]->x, at[2]->x, at[3]->x};
+    const Rgb e[4] = {at[0]->e, at[1]->e, at[2]->e, at[3]->e};
     SideLight out;
     for (int k = 0; k < 3; ++k) out.corner[k] = e[k];
     out.mean = fourPointMean(e[3], e);
@@ -276,12 +330,12 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
     double strongest = 0;  // lx: the largest unshadowed 4-point mean of an area source
     for (size_t s = 0; s < lights.sourceCount(); ++s) {
         if (lights.isPointSource(s)) continue;
-        const Rgb opens[4] = {open[0][s], open[1][s], open[2][s], open[3][s]};
+        const Rgb opens[4] = {at[0]->open[s], at[1]->open[s], at[2]->open[s], at[3]->open[s]};
         strongest = std::max(strongest, luminance(fourPointMean(opens[3], opens)));
     }
     for (size_t s = 0; s < lights.sourceCount(); ++s) {
-        const Rgb values[4] = {share[0][s], share[1][s], share[2][s], share[3][s]};
-        const Rgb opens[4] = {open[0][s], open[1][s], open[2][s], open[3][s]};
+        const Rgb values[4] = {at[0]->share[s], at[1]->share[s], at[2]->share[s], at[3]->share[s]};
+        const Rgb opens[4] = {at[0]->open[s], at[1]->open[s], at[2]->open[s], at[3]->open[s]};
         const Rgb fourPoint = fourPointMean(values[3], values);
         Rgb sourceMean = fourPoint;
         if (lights.isPointSource(s)) {
@@ -319,33 +373,41 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     std::vector<double> mirrorAbsorbed(mesh.patches.size(), 0.0);  // lm, per patch
     std::vector<double> backReceived(mesh.patches.size(), 0.0);    // lm, per patch
     const auto refined = shadowSamplePoints(kShadowSamples);
+    const std::vector<char> shared = sharedCorners(mesh);
     std::atomic<size_t> done{0};
-    tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
-        if (onProgress && ++done % 1024 == 0) onProgress(static_cast<double>(done) / mesh.patches.size());
-        const Patch& p = mesh.patches[i];
-        const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined);
-        for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = RgbF(front.corner[k]);
-        solution.directMean[i] = front.mean;
-        mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
-        // The back of a one-sided surface is the inside of a solid: light that still
-        // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
-        // booked. A two-sided surface's back is a patch of its own, and a back covered by
-        // another surface's front (back-to-back quads) receives nothing: that surface does.
-        if (!scene.materials[p.material].twoSided && !vis.backCovered(p.centroid, p.normal)) {
-            const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined);
-            backReceived[i] = luminance(back.mean) * p.area;
-            mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
+    const size_t n = mesh.patches.size();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkPatches), [&](const tbb::blocked_range<size_t>& chunk) {
+        thread_local CornerValues corners;
+        corners.clear();
+        for (size_t i = chunk.begin(); i != chunk.end(); ++i) {
+            const Patch& p = mesh.patches[i];
+            const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined, shared, corners);
+            for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = RgbF(front.corner[k]);
+            solution.directMean[i] = front.mean;
+            mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
+            // The back of a one-sided surface is the inside of a solid: light that still
+            // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
+            // booked. A two-sided surface's back is a patch of its own, and a back covered by
+            // another surface's front (back-to-back quads) receives nothing: that surface does.
+            if (!scene.materials[p.material].twoSided && !vis.backCovered(p.centroid, p.normal)) {
+                const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, shared, corners);
+                backReceived[i] = luminance(back.mean) * p.area;
+                mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
+            }
         }
-    });
+        if (onProgress) onProgress(static_cast<double>(done += chunk.size()) / n);
+    }, tbb::simple_partitioner());
     // Mirrors have no patches (their front passes light on by the image method), but
     // their backs absorb what reaches them, e.g. through the gap between a mirror and
     // the wall it hangs on.
     const PatchMesh mirrorBacks = meshMirrorBacks(scene, scene.meshing);
     std::vector<double> mirrorBackReceived(mirrorBacks.patches.size(), 0.0);  // lm, per triangle
     std::vector<double> mirrorBackLoss(mirrorBacks.patches.size(), 0.0);      // lm, per triangle
+    const std::vector<char> noneShared(mirrorBacks.vertices.size(), 0);  // mirrors are few
     tbb::parallel_for(size_t(0), mirrorBacks.patches.size(), [&](size_t i) {
         const Patch& p = mirrorBacks.patches[i];
-        const SideLight back = sideLight(mirrorBacks, p, p.normal, lights, vis, areaSamples, refined);
+        CornerValues corners;  // unused
+        const SideLight back = sideLight(mirrorBacks, p, p.normal, lights, vis, areaSamples, refined, noneShared, corners);
         mirrorBackReceived[i] = luminance(back.mean) * p.area;
         mirrorBackLoss[i] = luminance(back.mirrorLoss) * p.area;
     });

@@ -15,8 +15,10 @@ namespace rayrad::radiosity {
 /// direct illuminance over each patch from its centroid and its three corners,
 /// (3/4) E(c) + (1/12) Σ E(v_k) — exact for quadratic variation — with each point
 /// source's share rescaled so that, unshadowed, it is exact (I Ω / A, Ω the solid angle
-/// of the patch). Evaluation points are pulled a hair toward the centroid so shadow rays
-/// from corners do not start inside a neighbouring wall. The backs of one-sided patches
+/// of the patch). A corner inside a flat part of a surface is evaluated once, at the
+/// vertex, for all the patches around it (sharedCorners); other corners are pulled a hair
+/// toward their patch's centroid so shadow rays do not start inside a neighbouring wall,
+/// and are evaluated per patch. The backs of one-sided patches
 /// are evaluated the same way and what they receive is booked as absorbed
 /// (solution.backAbsorbedDirect). Deterministic; parallel. `onProgress` gets the
 /// fraction of patches done, from any thread (the caller serialises it).
