@@ -35,6 +35,22 @@ int Clustering::voxelDistance(const Cluster& a, const Cluster& b) const {
                      std::abs(a.voxel[2] - b.voxel[2])});
 }
 
+VoxelRegions voxelRegions(const Clustering& clustering) {
+    VoxelRegions out;
+    std::map<std::array<int, 3>, uint32_t> index;
+    for (const Cluster& C : clustering.clusters) {
+        auto [at, added] = index.emplace(C.voxel, static_cast<uint32_t>(out.regions.size()));
+        if (added) {
+            const Vec3 corner = clustering.origin + Vec3(C.voxel[0], C.voxel[1], C.voxel[2]) * clustering.voxelSize;
+            out.regions.push_back({corner + Vec3(0.5 * clustering.voxelSize), 0.0});
+        }
+        out.regionOf.push_back(at->second);
+        VoxelRegions::Region& region = out.regions[at->second];
+        region.radius = std::max(region.radius, glm::length(C.centroid - region.centre) + 0.5 * C.diameter);
+    }
+    return out;
+}
+
 size_t Clustering::multiPatchClusters() const {
     return static_cast<size_t>(std::count_if(clusters.begin(), clusters.end(),
                                              [](const Cluster& c) { return c.patches.size() > 1; }));

@@ -48,6 +48,22 @@ struct Clustering {
     std::string statistics() const;
 };
 
+/// The occupied voxels as balls holding their clusters: a shot or a gather through a
+/// mirror tests these first (MirrorImage::mayPass) and skips every cluster of a voxel no
+/// light can pass through the chain to or from. A cluster's ball (centroid, half its
+/// diameter) lies inside its voxel's, so a voxel that fails the test leaves its clusters
+/// nothing to pass (the segments from any point of the ball stay within its radius of
+/// the centre's segment).
+struct VoxelRegions {
+    struct Region {
+        Vec3 centre{0.0};   ///< the voxel's centre
+        double radius = 0;  ///< m: reaches every member cluster's ball
+    };
+    std::vector<Region> regions;
+    std::vector<uint32_t> regionOf;  ///< per cluster, its voxel's index in `regions`
+};
+VoxelRegions voxelRegions(const Clustering& clustering);
+
 /// Visibility samples for a cluster sending light: four members stratified by their
 /// share of `power` (one value per member, e.g. the unshot flux ΔL_i A_i), so the rays
 /// leave from where the light is. A cluster on a wall partly hidden behind a mirror

@@ -130,9 +130,11 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         std::vector<Rgb> luminance(C.patches.size());
         for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = solution.reflectedLuminance(scene, mesh, C.patches[k]);
         m_far.push_back(farSources(mesh, C, tree, luminance));
+        m_rootFar.push_back(m_far.back().front());
         m_trees.push_back(std::move(tree));
     }
     m_mirrorViews = mirrorViewsFor(scene, vis);
+    m_regions = voxelRegions(clustering);
 }
 
 Rgb Gatherer::solutionCorner(size_t patch, int corner) const {
@@ -354,8 +356,20 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     // when close, far clusters with one shared ray (form factors still per member), and
     // far member-tree nodes as one source each (see the constructor's comment).
     // Source s = 0 is the real scene, s = i + 1 its image i in the mirrors.
+    // Per mirror image, which voxels' clusters may send x light through its chain (most do
+    // not: a cluster there adds nothing, so skipping it leaves every sum as it was).
+    const size_t regions = m_regions.regions.size();
+    std::vector<char> regionOpen(m_mirrorViews.size() * regions);  // not thread_local: a waiting thread may run another gather
+    for (size_t i = 0; i < m_mirrorViews.size(); ++i) {
+        const MirrorImage& image = m_mirrorViews[i]->image;
+        for (size_t r = 0; r < regions; ++r) {
+            const VoxelRegions::Region& region = m_regions.regions[r];
+            regionOpen[i * regions + r] = image.mayPass(image.point(region.centre), region.radius, x, 0);
+        }
+    }
     auto contribution = [&](size_t s, size_t c) {
         const bool real = s == 0;
+        if (!real && !regionOpen[(s - 1) * regions + m_regions.regionOf[c]]) return Rgb(0.0);
         const MirrorImage* image = real ? nullptr : &m_mirrorViews[s - 1]->image;
         const Cluster& C = m_clustering.clusters[c];  // members mirrored as they are used
         const Visibility& vis = real ? m_vis : *m_mirrorViews[s - 1]->path;
@@ -421,9 +435,21 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             return it != nearLast && it->position < node.end;
         };
         // Depth first through the member tree: a node far enough counts as one source.
+        // The root first, from the contiguous copy (most clusters end there; reading each
+        // cluster's own tree and far sources cost a cache miss each).
+        bool rootFar = false;
+        if (farDiameters > 0 && C.patches.size() > 1 && !hasNear) {
+            const FarSource& f = m_rootFar[c];
+            const Vec3 at = real ? f.at : image->point(f.at);
+            const double limit = farDiameters * f.reach;
+            if (glm::dot(at - x, at - x) > limit * limit) {
+                addFar(f);
+                rootFar = true;
+            }
+        }
         const MemberTree& tree = m_trees[c];
         const std::vector<FarSource>& farSources = m_far[c];
-        descend(tree, [&](uint32_t i, const MemberNode& node) {
+        if (!rootFar) descend(tree, [&](uint32_t i, const MemberNode& node) {
             const FarSource& f = farSources[i];
             if (farDiameters > 0 && node.size() > 1) {
                 const Vec3 at = real ? f.at : image->point(f.at);

@@ -206,8 +206,10 @@ class Gatherer {
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     std::vector<MemberTree> m_trees;                 ///< per cluster
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
+    std::vector<FarSource> m_rootFar;                ///< per cluster, its root's (m_far[c][0]), contiguous
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
+    VoxelRegions m_regions;  ///< a gather through a mirror skips the voxels no light passes from
 };
 
 /// True when the location lies within `tolerance` (m) of an edge where its surface ends:

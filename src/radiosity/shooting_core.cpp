@@ -49,17 +49,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_reached.assign(clustering.clusters.size(), 0);
     m_trees.reserve(clustering.clusters.size());
     for (const Cluster& C : clustering.clusters) m_trees.push_back(memberTree(mesh, C, kGroupSize));
-    std::map<std::array<int, 3>, uint32_t> regionIndex;
-    for (const Cluster& C : clustering.clusters) {
-        auto [at, added] = regionIndex.emplace(C.voxel, static_cast<uint32_t>(m_regions.size()));
-        if (added) {
-            const Vec3 corner = clustering.origin + Vec3(C.voxel[0], C.voxel[1], C.voxel[2]) * clustering.voxelSize;
-            m_regions.push_back({corner + Vec3(0.5 * clustering.voxelSize), 0.0});
-        }
-        m_regionOf.push_back(at->second);
-        Region& region = m_regions[at->second];
-        region.radius = std::max(region.radius, glm::length(C.centroid - region.centre) + 0.5 * C.diameter);
-    }
+    m_regions = voxelRegions(clustering);
     m_sources.push_back({&vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
@@ -376,9 +366,10 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         // account and the conservation (summed in order).
         std::vector<V> deliveredTo(throughMirrors ? n : 0, V(0.0));
         // Through a mirror chain, the voxels light can reach at all.
-        std::vector<char> regionOpen(s.image ? m_regions.size() : 0);
+        std::vector<char> regionOpen(s.image ? m_regions.regions.size() : 0);
         for (size_t k = 0; k < regionOpen.size(); ++k)
-            regionOpen[k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions[k].centre, m_regions[k].radius);
+            regionOpen[k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions.regions[k].centre,
+                                             m_regions.regions[k].radius);
         // Cluster→cluster now; the receivers within r_v are listed for patch→patch.
         std::vector<char> isNear(n, 0);
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
@@ -387,7 +378,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (corrected[si][d]) continue;
                 const Cluster& D = m_clustering.clusters[d];
                 bool self = d == c && !s.image;
-                if (s.image && !regionOpen[m_regionOf[d]]) continue;
+                if (s.image && !regionOpen[m_regions.regionOf[d]]) continue;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
                 if (self || m_clustering.voxelDistance(Cs, D) - imageMargin(s) < r) {

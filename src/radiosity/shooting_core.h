@@ -182,15 +182,8 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
     /// deliver() visits only the clusters a shot reached.
     std::vector<char> m_reached;
-    /// The occupied voxels as balls holding their clusters (m_regionOf: per cluster, its
-    /// voxel's index here): a shot through a mirror tests these first, and skips every
-    /// cluster of a voxel no light can reach through the chain.
-    struct Region {
-        Vec3 centre{0.0};
-        double radius = 0;  ///< m
-    };
-    std::vector<Region> m_regions;
-    std::vector<uint32_t> m_regionOf;
+    /// The occupied voxels (clusters.h): a shot through a mirror tests these first.
+    VoxelRegions m_regions;
     /// Per cluster, its member tree (member_tree.h) in real space; its leaves are the
     /// member groups that share a visibility ray; an image's tree is the same members,
     /// their centroids mirrored.
