@@ -16,11 +16,13 @@ void printSolveSummary(const PipelineRun& run) {
     if (run.shooting.overshootStalled)
         fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");
     fmt::print(stderr, "{}\n", run.clustering.statistics());
-    if (run.edgeVertices.seams + run.edgeVertices.contacts + run.edgeVertices.rims > 0)
+    const auto& g = run.edgeVertices;
+    if (g.seams + g.contacts + g.rims + g.extrapolated > 0)
         fmt::print(stderr, "vertices from a point gather: {} on seams (concave edges and corners), {} beside outlines "
                            "crossing patches (objects standing on a surface off its mesh lines), {} on the rims of "
-                           "covered parts (a lamp just below a ceiling)\n",
-                   run.edgeVertices.seams, run.edgeVertices.contacts, run.edgeVertices.rims);
+                           "covered parts (a lamp just below a ceiling), {} where the reconstruction extrapolated "
+                           "(a face a few patches wide)\n",
+                   g.seams, g.contacts, g.rims, g.extrapolated);
     if (run.sensorGathers > 0)
         fmt::print(stderr, "sensor gathers: {} for {} sensors (corner and midpoint re-gathers near edges)\n",
                    run.sensorGathers, run.sensors.size());

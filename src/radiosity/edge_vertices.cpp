@@ -2,6 +2,7 @@
 
 #include <radiosity/contact_vertices.h>
 #include <radiosity/covered_patches.h>
+#include <radiosity/extrapolated_vertices.h>
 #include <radiosity/form_factor.h>
 #include <radiosity/gather.h>
 #include <radiosity/mesher.h>
@@ -135,14 +136,19 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
     // and bounded alike (patches at least half the premesher's edge across: in the living
     // room 7 173 rim vertices without the bound).
     for (const GatherPoint& g : rimVertices(mesh, vis, patchOf, taken, minDiameter, nudge, kCoverLift * scene.diagonal()))
-        points.push_back(g);
+        points.push_back(g), taken[g.vertex] = 1;
+    const size_t rims = points.size() - seams - contacts;
+    // Where the reconstruction extrapolated far beyond the patches around a vertex (a
+    // face a few patches wide): gathered once, too.
+    for (const GatherPoint& g : extrapolatedVertices(mesh, solution, patchOf, taken, minDiameter, nudge)) points.push_back(g);
 
     // A local fixed-point iteration, bottom-up: each round gathers at every seam vertex
     // with the previous round's values at the corners of near patches (the reconstruction
     // to start with, and for corners outside the set). Only the near patches' part of a
     // gather depends on those values: the rest is gathered once, in the first round, and
     // kept. A vertex beside an outline or on a cover's rim is gathered in the first round
-    // only: its near patches are the standing surface's, whose corners the rounds do not change (on the
+    // only (and so is an extrapolated one): its near patches are the standing surface's,
+    // whose corners the rounds do not change (on the
     // Cornell floor three rounds and one give the same errors, within 0.1 %). Parallel
     // over vertices; each gather serial, so the result does not depend on the thread count.
     GatherOptions options;
@@ -178,7 +184,7 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
         std::swap(previous, current);
     }
     for (size_t k = 0; k < points.size(); ++k) solution.vertexIndirect[points[k].vertex] = previous[k];
-    return {seams, contacts, points.size() - seams - contacts};
+    return {seams, contacts, rims, points.size() - seams - contacts - rims};
 }
 
 }  // namespace rayrad::radiosity

@@ -17,6 +17,7 @@ struct GatheredVertices {
     size_t seams = 0;     ///< vertices on concave edges and corners
     size_t contacts = 0;  ///< vertices beside an outline that crosses their patches
     size_t rims = 0;      ///< vertices on the rim of a covered part (covered_patches.h)
+    size_t extrapolated = 0;  ///< vertices whose reconstruction left its patches' range (extrapolated_vertices.h)
 };
 
 /// Vertices on a concave seam: the vertex lies on an edge of a patch of another surface
@@ -28,7 +29,9 @@ struct GatheredVertices {
 /// vertices keep the reconstruction — unless the outline where they touch crosses a
 /// patch's interior (a rotated box on a floor): then the vertices around it are gathered
 /// too (contact_vertices.h). So are the vertices on the rim of a covered part (a lamp
-/// hung just below a ceiling: mesh.covered), whose reconstruction sees one side only.
+/// hung just below a ceiling: mesh.covered), whose reconstruction sees one side only, and
+/// the vertices whose reconstruction left the range of the patches around them
+/// (extrapolated_vertices.h: the corners of a face a few patches wide).
 /// `onProgress` (optional, called from worker threads) gets the
 /// fraction done.
 GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,

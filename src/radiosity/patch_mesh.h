@@ -77,6 +77,13 @@ struct PatchMesh {
     double totalArea() const;
 };
 
+/// Per vertex, the sum of its patches' corner angles there (rad): 2π inside a flat
+/// surface (its patches close the fan around it), less on a surface's rim, other on a
+/// curved mesh.
+std::vector<double> vertexAngleSums(const PatchMesh& mesh);
+/// True for an angle sum of 2π (within 10⁻⁶ rad): the vertex's patches close around it.
+bool isInnerVertex(double angleSum);
+
 /// Fills normal, centroid, area and diameter from the vertex positions.
 void computeGeometry(const PatchMesh& mesh, Patch& p);
 /// The same from the three corners, counter-clockwise seen from the front.
