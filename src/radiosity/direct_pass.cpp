@@ -75,10 +75,13 @@ void evaluateAt(PointValues& out, const Vec3& x, const Vec3& normal, const Direc
 /// corners are shared within it); a corner on a chunk's border is evaluated by both, alike.
 class CornerValues {
   public:
-    void clear() {
+    /// Starts a chunk; `shared` (sharedCorners) says which vertices are shared.
+    void start(const std::vector<char>& shared) {
+        m_shared = &shared;
         m_slot.clear();
         m_used = 0;
     }
+    bool shares(uint32_t v) const { return (*m_shared)[v] != 0; }
     /// Vertex v's values for the side facing `normal` (back: the reverse side).
     const PointValues& at(const PatchMesh& mesh, uint32_t v, bool back, const Vec3& normal, const DirectLight& lights,
                           const Visibility& vis, int areaSamples) {
@@ -92,6 +95,7 @@ class CornerValues {
     }
 
   private:
+    const std::vector<char>* m_shared = nullptr;
     std::unordered_map<uint64_t, size_t> m_slot;
     std::deque<PointValues> m_values;  ///< stable references; kept between chunks (their vectors' capacity)
     size_t m_used = 0;
@@ -303,17 +307,17 @@ struct SideLight {
 /// The direct light on the side of patch p that faces `normal` (p.normal for its front,
 /// −p.normal for its back): the 4-point rule, with each point source's share made exact
 /// and near area lights integrated adaptively. The rule's points: the centroid, and the
-/// corners — shared ones (`shared`) from `corners`, the others pulled a hair toward the
-/// centroid (so shadow rays do not start inside a neighbouring wall).
+/// corners — the ones `corners` shares from it (none when null), the others pulled a hair
+/// toward the centroid (so shadow rays do not start inside a neighbouring wall).
 SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
                     const Visibility& vis, int areaSamples, const std::vector<std::array<double, 2>>& refined,
-                    const std::vector<char>& shared, CornerValues& corners) {
+                    CornerValues* corners) {
     thread_local PointValues own[4];
     const PointValues* at[4];
     for (int k = 0; k < 3; ++k) {
         const uint32_t v = p.v[k];
-        if (shared[v]) {
-            at[k] = &corners.at(mesh, v, glm::dot(normal, p.normal) < 0, normal, lights, vis, areaSamples);
+        if (corners && corners->shares(v)) {
+            at[k] = &corners->at(mesh, v, glm::dot(normal, p.normal) < 0, normal, lights, vis, areaSamples);
         } else {
             evaluateAt(own[k], mesh.corner(p, k) + 1e-4 * (p.centroid - mesh.corner(p, k)), normal, lights, vis, areaSamples);
             at[k] = &own[k];
@@ -378,10 +382,10 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     const size_t n = mesh.patches.size();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkPatches), [&](const tbb::blocked_range<size_t>& chunk) {
         thread_local CornerValues corners;
-        corners.clear();
+        corners.start(shared);
         for (size_t i = chunk.begin(); i != chunk.end(); ++i) {
             const Patch& p = mesh.patches[i];
-            const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined, shared, corners);
+            const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined, &corners);
             for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = RgbF(front.corner[k]);
             solution.directMean[i] = front.mean;
             mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
@@ -390,7 +394,7 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
             // booked. A two-sided surface's back is a patch of its own, and a back covered by
             // another surface's front (back-to-back quads) receives nothing: that surface does.
             if (!scene.materials[p.material].twoSided && !vis.backCovered(p.centroid, p.normal)) {
-                const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, shared, corners);
+                const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, &corners);
                 backReceived[i] = luminance(back.mean) * p.area;
                 mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
             }
@@ -403,11 +407,9 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     const PatchMesh mirrorBacks = meshMirrorBacks(scene, scene.meshing);
     std::vector<double> mirrorBackReceived(mirrorBacks.patches.size(), 0.0);  // lm, per triangle
     std::vector<double> mirrorBackLoss(mirrorBacks.patches.size(), 0.0);      // lm, per triangle
-    const std::vector<char> noneShared(mirrorBacks.vertices.size(), 0);  // mirrors are few
     tbb::parallel_for(size_t(0), mirrorBacks.patches.size(), [&](size_t i) {
         const Patch& p = mirrorBacks.patches[i];
-        CornerValues corners;  // unused
-        const SideLight back = sideLight(mirrorBacks, p, p.normal, lights, vis, areaSamples, refined, noneShared, corners);
+        const SideLight back = sideLight(mirrorBacks, p, p.normal, lights, vis, areaSamples, refined, nullptr);  // few: not shared
         mirrorBackReceived[i] = luminance(back.mean) * p.area;
         mirrorBackLoss[i] = luminance(back.mirrorLoss) * p.area;
     });
