@@ -434,30 +434,24 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             auto it = nearFrom(node.begin);
             return it != nearLast && it->position < node.end;
         };
-        // Depth first through the member tree: a node far enough counts as one source.
-        // The root first, from the contiguous copy (most clusters end there; reading each
-        // cluster's own tree and far sources cost a cache miss each).
-        bool rootFar = false;
-        if (farDiameters > 0 && C.patches.size() > 1 && !hasNear) {
-            const FarSource& f = m_rootFar[c];
+        // Depth first through the member tree: a node of `size` members farther than
+        // farDiameters of its reach, holding no near patch, counts as one source. The root
+        // first, from the contiguous copy (most clusters end there; reading each cluster's
+        // own tree and far sources cost a cache miss each).
+        auto isFar = [&](const FarSource& f, uint32_t size) {
+            if (!(farDiameters > 0) || size <= 1) return false;
             const Vec3 at = real ? f.at : image->point(f.at);
             const double limit = farDiameters * f.reach;
-            if (glm::dot(at - x, at - x) > limit * limit) {
-                addFar(f);
-                rootFar = true;
-            }
-        }
+            return glm::dot(at - x, at - x) > limit * limit;
+        };
+        const bool rootFar = !hasNear && isFar(m_rootFar[c], static_cast<uint32_t>(C.patches.size()));
+        if (rootFar) addFar(m_rootFar[c]);
         const MemberTree& tree = m_trees[c];
         const std::vector<FarSource>& farSources = m_far[c];
         if (!rootFar) descend(tree, [&](uint32_t i, const MemberNode& node) {
-            const FarSource& f = farSources[i];
-            if (farDiameters > 0 && node.size() > 1) {
-                const Vec3 at = real ? f.at : image->point(f.at);
-                const double limit = farDiameters * f.reach;
-                if (glm::dot(at - x, at - x) > limit * limit && !holdsNear(node)) {
-                    addFar(f);
-                    return false;
-                }
+            if (isFar(farSources[i], node.size()) && !holdsNear(node)) {
+                addFar(farSources[i]);
+                return false;
             }
             if (!node.leaf()) return true;
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
