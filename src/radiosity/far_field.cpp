@@ -1,6 +1,7 @@
 #include <radiosity/far_field.h>
 
 #include <radiosity/form_factor.h>
+#include <radiosity/visibility_share.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,22 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
         if (y > brightestPower) brightestPower = y, f.brightest = m;
     }
     f.at = weight > 0 ? at / weight : node.centroid;
+    // Visibility samples stratified by power: one pass, the targets in increasing order.
+    {
+        const int byFraction[4] = {0, 2, 1, 3};  // kVisibilityFractions sorted
+        double sum = 0;
+        uint32_t k = node.begin;
+        for (int t : byFraction) {
+            const double target = kVisibilityFractions[t] * weight;
+            for (; k + 1 < node.end; ++k) {
+                const uint32_t m = tree.order[k];
+                const double y = double(f.sign) * rayrad::luminance(luminance[m]) * mesh.patches[C.patches[m]].area;
+                if (sum + y >= target) break;
+                sum += y;
+            }
+            f.rayTo[t] = tree.order[k];
+        }
+    }
     f.share = glm::vec3(weight > 0 ? power / weight : Rgb(0.0));
     double r = 0;
     for (uint32_t k = node.begin; k < node.end; ++k) {

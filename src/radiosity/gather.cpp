@@ -3,6 +3,7 @@
 
 #include <radiosity/form_factor.h>
 #include <radiosity/patch_transfer.h>
+#include <radiosity/visibility_share.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>  // parallel_deterministic_reduce: same sum for any thread count
@@ -21,7 +22,7 @@ constexpr double kNearDiameters = 2.0;
 /// and for refinement with gathered midpoints. 2 cost the cube's 1 024-sensor grid 2.6 x
 /// the pieces and 1.7 x the gathers of 1 for the same accuracy (docs/validation.md).
 constexpr double kSplitRatio = 1.0;
-/// A cluster farther than this many of its diameters shares one visibility ray.
+/// A cluster farther than this many of its diameters shares its visibility rays.
 constexpr double kClusterVisibilityDiameters = 2.0;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
 constexpr int kRefineDepth = 6;
@@ -353,8 +354,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                                     ? std::max(kLeastFarDiameters, m_options.farDiameters * std::cbrt(weight))
                                     : m_options.farDiameters;
     // Sum over clusters: near patches by sub-triangles, other patches with their own rays
-    // when close, far clusters with one shared ray (form factors still per member), and
-    // far member-tree nodes as one source each (see the constructor's comment).
+    // when close, far clusters with shared rays (form factors still per member; the
+    // visibility sampled where their light comes from: ClusterVisibility), and far
+    // member-tree nodes as one source each (see the constructor's comment).
     // Source s = 0 is the real scene, s = i + 1 its image i in the mirrors.
     // Per mirror image, which voxels' clusters may send x light through its chain (most do
     // not: a cluster there adds nothing, so skipping it leaves every sum as it was).
@@ -383,22 +385,21 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         if (!real && !image->mayPass(centroid, 0.5 * C.diameter, x, 0)) return Rgb(0.0);
         const double d2 = glm::dot(centroid - x, centroid - x);
         const double far = kClusterVisibilityDiameters * C.diameter;
-        const bool shared = C.patches.size() > 1 && d2 > far * far;
+        const bool shared = m_options.sharedRays && C.patches.size() > 1 && d2 > far * far;
         Rgb sum(0.0), sharedSum(0.0);
-        uint32_t strongest = C.samples[0];  // the shared ray leaves from the largest contribution
-        double strongestE = -1;
+        // Used only within this call (no gather runs inside it): one per thread is enough.
+        thread_local ClusterVisibility sharedVisibility;
+        if (shared) sharedVisibility.start(C.patches);
         // Where the ray to patch j goes: its centroid in this source.
         auto rayTarget = [&](uint32_t j) {
             return real ? m_mesh.patches[j].centroid : image->point(m_mesh.patches[j].centroid);
         };
-        // A contribution e (lx) seen along the ray to patch `rayTo`'s centroid.
-        auto add = [&](const Rgb& e, uint32_t rayTo) {
-            if (!shared) {
-                if (vis.visibleFromSurface(x, n, rayTarget(rayTo))) sum += e;
-            } else {
-                sharedSum += e;
-                if (luminance(e) > strongestE) strongestE = luminance(e), strongest = rayTo;
-            }
+        auto visiblePatch = [&](uint32_t j) { return vis.visibleFromSurface(x, n, rayTarget(j)); };
+        // Patch j's contribution e (lx), seen along the ray to its centroid (in a far
+        // cluster, as the whole cluster is).
+        auto add = [&](const Rgb& e, uint32_t j) {
+            if (shared) sharedSum += e, sharedVisibility.addPatch(luminance(e), j);
+            else if (visiblePatch(j)) sum += e;
         };
         // The first near patch at or after tree position k.
         auto nearFrom = [&](uint32_t k) {
@@ -426,9 +427,13 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const double f = formFactor(j);
             if (f > 0) add(L * (kPi * f), j);  // E = π L F
         };
+        // A far node's light times the share of its visibility samples seen (in a far
+        // cluster, as the whole cluster is).
         auto addFar = [&](const FarSource& f) {
-            const Vec3 e = farField(f, x, n, image);
-            if (e != Rgb(0.0)) add(e, C.patches[f.brightest]);
+            const Rgb e = farField(f, x, n, image);
+            if (e == Rgb(0.0)) return;
+            if (shared) sharedSum += e, sharedVisibility.addNode(luminance(e), f);
+            else sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); });
         };
         auto holdsNear = [&](const MemberNode& node) {
             auto it = nearFrom(node.begin);
@@ -457,8 +462,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
         });
-        if (shared && sharedSum != Rgb(0.0) && vis.visibleFromSurface(x, n, rayTarget(strongest)))
-            sum += sharedSum;
+        if (shared && sharedSum != Rgb(0.0)) sum += sharedSum * sharedVisibility.share(visiblePatch);
         return sum;
     };
     const size_t clusters = m_clustering.clusters.size();

@@ -47,6 +47,9 @@ struct GatherOptions {
     /// error in it reaches the sensor: the product of ρ F along the chain of gathers) is
     /// at least this; below, it is the solution's vertex value (0 = always).
     double minWeight = 0;
+    /// false: every patch its own visibility ray, however far its cluster (with
+    /// farDiameters 0, the exact sum: the reference shared rays are measured against).
+    bool sharedRays = true;
     /// The sensor gather as the scene's settings ask for it.
     static GatherOptions from(const scene::SolverOptions& solver);
 };
@@ -99,12 +102,13 @@ class GatherMemo {
 /// seen only through the mirror polygons).
 class Gatherer {
   public:
-    /// Clusters farther than a few of their diameters from the point share one
-    /// visibility ray (to their member with the largest contribution).
+    /// Clusters farther than a few of their diameters from the point share their
+    /// visibility rays: two, or four, sampled where their light to the point comes from
+    /// (ClusterVisibility in visibility_share.h).
     /// `options.farDiameters` > 0: a node of a cluster's member tree (the whole cluster,
     /// its halves, their halves …) farther than that many of its diameters counts as one
-    /// source with one visibility ray (a Barnes–Hut far field; see far_field.h). Nodes
-    /// holding a near patch are always opened.
+    /// source (a Barnes–Hut far field; see far_field.h) seen through two or four rays
+    /// (visibleShare). Nodes holding a near patch are always opened.
     /// A re-gather of weight w < 1 counts nodes as far from farDiameters · ∛w of their
     /// diameters (at least 2): the far field's error falls as the cube of the distance, and
     /// reaches the sensor times w.
