@@ -38,20 +38,19 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
         if (y > brightestPower) brightestPower = y, f.brightest = m;
     }
     f.at = weight > 0 ? at / weight : node.centroid;
-    // Visibility samples stratified by power: one pass, the targets in increasing order.
+    // Visibility samples stratified by power: sample i where the running sum reaches (i + ½)/4 of it.
     {
-        const int byFraction[4] = {0, 2, 1, 3};  // kVisibilityFractions sorted
         double sum = 0;
         uint32_t k = node.begin;
-        for (int t : byFraction) {
-            const double target = kVisibilityFractions[t] * weight;
+        for (int i = 0; i < 4; ++i) {
+            const double target = (i + 0.5) / 4 * weight;
             for (; k + 1 < node.end; ++k) {
                 const uint32_t m = tree.order[k];
                 const double y = double(f.sign) * rayrad::luminance(luminance[m]) * mesh.patches[C.patches[m]].area;
                 if (sum + y >= target) break;
                 sum += y;
             }
-            f.rayTo[t] = tree.order[k];
+            f.rayTo[i] = tree.order[k];
         }
     }
     f.share = glm::vec3(weight > 0 ? power / weight : Rgb(0.0));

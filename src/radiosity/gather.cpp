@@ -360,6 +360,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     // Source s = 0 is the real scene, s = i + 1 its image i in the mirrors.
     // Per mirror image, which voxels' clusters may send x light through its chain (most do
     // not: a cluster there adds nothing, so skipping it leaves every sum as it was).
+    // A far source's visibility: up to four rays, or one in a re-gather (weight < 1),
+    // whose error reaches the sensor diminished.
+    const VisibilityRays rays = weight < 1 ? VisibilityRays::One : VisibilityRays::UpToFour;
     const size_t regions = m_regions.regions.size();
     std::vector<char> regionOpen(m_mirrorViews.size() * regions);  // not thread_local: a waiting thread may run another gather
     for (size_t i = 0; i < m_mirrorViews.size(); ++i) {
@@ -429,11 +432,16 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         };
         // A far node's light times the share of its visibility samples seen (in a far
         // cluster, as the whole cluster is).
-        auto addFar = [&](const FarSource& f) {
+        // Where a source's samples fall (visibilityOffset): drawn per point, image, cluster
+        // and node (`node` of the member tree; the whole cluster's shared rays take kCluster).
+        const uint64_t sourceId = (uint64_t(s) * m_clustering.clusters.size() + c) << 24;
+        constexpr uint32_t kCluster = (1u << 24) - 1;
+        auto offset = [&](uint32_t node) { return visibilityOffset(x, sourceId + node); };
+        auto addFar = [&](const FarSource& f, uint32_t node) {
             const Rgb e = farField(f, x, n, image);
             if (e == Rgb(0.0)) return;
             if (shared) sharedSum += e, sharedVisibility.addNode(luminance(e), f);
-            else sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); });
+            else sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); }, rays, offset(node));
         };
         auto holdsNear = [&](const MemberNode& node) {
             auto it = nearFrom(node.begin);
@@ -450,19 +458,19 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             return glm::dot(at - x, at - x) > limit * limit;
         };
         const bool rootFar = !hasNear && isFar(m_rootFar[c], static_cast<uint32_t>(C.patches.size()));
-        if (rootFar) addFar(m_rootFar[c]);
+        if (rootFar) addFar(m_rootFar[c], 0);
         const MemberTree& tree = m_trees[c];
         const std::vector<FarSource>& farSources = m_far[c];
         if (!rootFar) descend(tree, [&](uint32_t i, const MemberNode& node) {
             if (isFar(farSources[i], node.size()) && !holdsNear(node)) {
-                addFar(farSources[i]);
+                addFar(farSources[i], i);
                 return false;
             }
             if (!node.leaf()) return true;
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
         });
-        if (shared && sharedSum != Rgb(0.0)) sum += sharedSum * sharedVisibility.share(visiblePatch);
+        if (shared && sharedSum != Rgb(0.0)) sum += sharedSum * sharedVisibility.share(visiblePatch, rays, offset(kCluster));
         return sum;
     };
     const size_t clusters = m_clustering.clusters.size();

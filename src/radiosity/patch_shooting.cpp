@@ -4,7 +4,6 @@
 
 #include <radiosity/form_factor.h>
 #include <radiosity/patch_transfer.h>
-#include <radiosity/visibility_share.h>
 
 namespace rayrad::radiosity {
 
@@ -40,8 +39,8 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
         // Depth first through the shooter's member tree: a node far enough sends as one
-        // source seen through its visibility samples (visibleShare: two rays, or four); a
-        // leaf (a member group) otherwise member by member.
+        // source with one visibility ray (toward its brightest member); a leaf (a member
+        // group) otherwise member by member.
         descend(tree, [&](uint32_t index, const MemberNode& node) {
             if (!light.far.empty()) {
                 const FarSource& f = light.far[index];
@@ -50,11 +49,9 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                     ++terms;
                     if (s.image && !s.image->mayPass(f.at, 0.5 * f.reach, rec.centroid, 0)) return false;
                     const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
-                    if (e != V(0.0))
-                        deltaE += e * visibleShare(f, [&](uint32_t k) {
-                            return s.vis->visibleFromSurface(rec.centroid, rec.normal,
-                                                             from.mesh().patches[C.patches[k]].centroid);
-                        });
+                    if (e != V(0.0) &&
+                        s.vis->visibleFromSurface(rec.centroid, rec.normal, from.mesh().patches[C.patches[f.brightest]].centroid))
+                        deltaE += e;
                     return false;
                 }
             }

@@ -1,7 +1,10 @@
 #include <radiosity/visibility_share.h>
 
+#include <core/random.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 
 namespace rayrad::radiosity {
@@ -14,10 +17,18 @@ uint32_t ClusterVisibility::patchAt(double target) const {
     // Where in the node's own light the target falls, and its power sample nearest there.
     const double begin = it == m_entries.begin() ? 0.0 : std::prev(it)->end;
     const double q = (target - begin) / (it->end - begin);
-    int nearest = 0;
-    for (int i = 1; i < 4; ++i)
-        if (std::abs(kVisibilityFractions[i] - q) < std::abs(kVisibilityFractions[nearest] - q)) nearest = i;
+    const int nearest = std::clamp(static_cast<int>(q * 4), 0, 3);  // rayTo[i] at (i + ½)/4
     return (*m_members)[it->node->rayTo[nearest]];
+}
+
+double visibilityOffset(const Vec3& x, uint64_t source) {
+    uint64_t seed = 0;
+    for (int k = 0; k < 3; ++k) {
+        uint64_t bits;
+        std::memcpy(&bits, &x[k], sizeof bits);
+        seed = (seed ^ bits) * 0x9e3779b97f4a7c15ULL;
+    }
+    return Random(seed, source).nextDouble();
 }
 
 }  // namespace rayrad::radiosity
