@@ -16,26 +16,36 @@
 
 #include <radiosity/far_field.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
 
 namespace rayrad::radiosity {
 
-/// Where the four samples lie: at (i + u)/4 of the light, i = 0 … 3, u an offset in
-/// [0, 1) drawn per source and point (visibilityOffset), tried in the order i = 0, 2, 1, 3
-/// (the first two in opposite halves). With fixed samples the hall's ceiling sensors
-/// read −0.5 … +0.6 % (1/8 and 5/8 tried first) or +0.3 … +2.8 % (3/8 and 7/8) of every
-/// patch's own ray: in a regular room the sources' errors line up with the rows of
-/// desks. Drawn, they do not (+0.7 … +1.3 %).
-constexpr std::array<int, 4> kVisibilityOrder = {0, 2, 1, 3};
-
-/// How many rays a source's visibility may take: `One` (the first sample only, for
-/// work whose error reaches the result diminished) or `UpToFour`.
+/// How many rays a source's visibility takes: `One`, at a fraction u of its light drawn
+/// per point and source (visibilityOffset) — an unbiased estimate of the share seen,
+/// whose errors average out over many sources — or `UpToFour`: two, and two more when
+/// those disagree, of lower variance for the few large sources near a point but biased
+/// a little high (two rays that agree miss a small hidden part).
 enum class VisibilityRays { One, UpToFour };
 
-/// The share (0 … 1) seen of four stratified samples; `seen(i)` traces sample
-/// kVisibilityOrder[i]. Two rays first; the other two only when those disagree.
+/// Sample j (0 … 3) of a source whose offset is u: the stratum (⌊4u⌋ + {0, 2, 1, 3}[j])
+/// mod 4 of four equal ones, at the same place 4u − ⌊4u⌋ within it. Sample 0 lies at u
+/// itself; samples 0 and 1 lie in opposite halves. (Fixed samples, the same u for every
+/// point and source, line up with a regular room's rows of desks: which pair the hall
+/// tried first moved its ceiling sensors by 2 %; docs/validation.md.)
+struct VisibilitySamples {
+    explicit VisibilitySamples(double u) : first(std::min(3, static_cast<int>(4 * u))), within(4 * u - first) {}
+    int stratum(int j) const { return (first + kOrder[j]) % 4; }
+    double fraction(int j) const { return (stratum(j) + within) / 4; }
+    static constexpr std::array<int, 4> kOrder = {0, 2, 1, 3};
+    int first;
+    double within;
+};
+
+/// The share (0 … 1) seen; `seen(j)` traces sample j. With UpToFour two rays first, the
+/// other two only when those disagree.
 template <class Seen>
 double stratifiedShare(Seen&& seen, VisibilityRays rays) {
     const bool a = seen(0);
@@ -50,12 +60,12 @@ double stratifiedShare(Seen&& seen, VisibilityRays rays) {
 double visibilityOffset(const Vec3& x, uint64_t source);
 
 /// The share of a far node's light that reaches a point: `visible(k)` for its samples,
-/// member positions k stratified by power (FarSource::rayTo at 1/8, 3/8, 5/8, 7/8 of it;
-/// u < ½ takes the pairs 1/8 & 5/8 first, else 3/8 & 7/8).
+/// member positions k stratified by power (FarSource::rayTo at 1/8, 3/8, 5/8, 7/8 of it:
+/// sample j takes the one of its stratum).
 template <class Visible>
 double visibleShare(const FarSource& f, Visible&& visible, VisibilityRays rays, double u) {
-    const int turn = u < 0.5 ? 0 : 1;
-    return stratifiedShare([&](int i) { return visible(f.rayTo[(kVisibilityOrder[i] + turn) % 4]); }, rays);
+    const VisibilitySamples samples(u);
+    return stratifiedShare([&](int j) { return visible(f.rayTo[samples.stratum(j)]); }, rays);
 }
 
 /// A far cluster's light at one point, gathered contribution by contribution (a
@@ -80,7 +90,8 @@ class ClusterVisibility {
     template <class Visible>
     double share(Visible&& visible, VisibilityRays rays, double u) const {
         if (!(m_total > 0)) return 0;
-        return stratifiedShare([&](int i) { return visible(patchAt((kVisibilityOrder[i] + u) / 4 * m_total)); }, rays);
+        const VisibilitySamples samples(u);
+        return stratifiedShare([&](int j) { return visible(patchAt(samples.fraction(j) * m_total)); }, rays);
     }
 
   private:
