@@ -135,6 +135,8 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         m_trees.push_back(std::move(tree));
     }
     m_mirrorViews = mirrorViewsFor(scene, vis);
+    m_sourceKeys.push_back(0);
+    for (const auto& view : m_mirrorViews) m_sourceKeys.push_back(imageKey(view->image.chain));
     m_regions = voxelRegions(clustering);
 }
 
@@ -430,13 +432,12 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const double f = formFactor(j);
             if (f > 0) add(L * (kPi * f), j);  // E = π L F
         };
-        // A far node's light times the share of its visibility samples seen (in a far
-        // cluster, as the whole cluster is).
         // Where a source's samples fall (visibilityOffset): drawn per point, image, cluster
         // and node (`node` of the member tree; the whole cluster's shared rays take kCluster).
-        const uint64_t sourceId = (uint64_t(s) * m_clustering.clusters.size() + c) << 24;
         constexpr uint32_t kCluster = (1u << 24) - 1;
-        auto offset = [&](uint32_t node) { return visibilityOffset(x, sourceId + node); };
+        auto offset = [&](uint32_t node) { return visibilityOffset(x, m_sourceKeys[s], (uint64_t(c) << 24) + node); };
+        // A far node's light times the share of its visibility samples seen (in a far
+        // cluster, as the whole cluster is).
         auto addFar = [&](const FarSource& f, uint32_t node) {
             const Rgb e = farField(f, x, n, image);
             if (e == Rgb(0.0)) return;

@@ -213,6 +213,7 @@ class Gatherer {
     std::vector<FarSource> m_rootFar;                ///< per cluster, its root's (m_far[c][0]), contiguous
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
+    std::vector<uint64_t> m_sourceKeys;  ///< per source s (0: the scene, i + 1: image i), for visibilityOffset
     VoxelRegions m_regions;  ///< a gather through a mirror skips the voxels no light passes from
 };
 

@@ -3,7 +3,6 @@
 #include <core/random.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <iterator>
 
@@ -21,14 +20,20 @@ uint32_t ClusterVisibility::patchAt(double target) const {
     return (*m_members)[it->node->rayTo[nearest]];
 }
 
-double visibilityOffset(const Vec3& x, uint64_t source) {
-    uint64_t seed = 0;
+double visibilityOffset(const Vec3& x, uint64_t image, uint64_t source) {
+    uint64_t seed = image;
     for (int k = 0; k < 3; ++k) {
         uint64_t bits;
         std::memcpy(&bits, &x[k], sizeof bits);
         seed = (seed ^ bits) * 0x9e3779b97f4a7c15ULL;
     }
     return Random(seed, source).nextDouble();
+}
+
+uint64_t imageKey(const std::vector<int>& chain) {
+    uint64_t key = 1;
+    for (int m : chain) key = key * 1000003 + static_cast<uint64_t>(m) + 1;
+    return key;
 }
 
 }  // namespace rayrad::radiosity

@@ -55,9 +55,15 @@ double stratifiedShare(Seen&& seen, VisibilityRays rays) {
     return 0.25 * (1 + int(seen(2)) + int(seen(3)));  // a + b = 1
 }
 
-/// The offset u in [0, 1) of source `source` (a cluster, or a node of one) seen from x:
-/// the same for the same point, so results do not depend on threads or order.
-double visibilityOffset(const Vec3& x, uint64_t source);
+/// The offset u in [0, 1) of source `source` (a cluster, or a node of one) in mirror
+/// image `image` (0 for the scene itself; see imageKey) seen from x: the same for the same
+/// point and source, so results depend neither on threads nor on order, nor on which
+/// other images a run keeps.
+double visibilityOffset(const Vec3& x, uint64_t image, uint64_t source);
+
+/// A mirror image's key for visibilityOffset, from its chain of mirrors (indices into
+/// Scene::mirrors): never 0, the key of the scene itself.
+uint64_t imageKey(const std::vector<int>& chain);
 
 /// The share of a far node's light that reaches a point: `visible(k)` for its samples,
 /// member positions k stratified by power (FarSource::rayTo at 1/8, 3/8, 5/8, 7/8 of it:

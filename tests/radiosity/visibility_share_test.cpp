@@ -65,12 +65,15 @@ TEST_CASE("a far cluster's visibility is sampled where its light comes from, not
     CHECK(first == 110);
     // Drawn per point and source, the same every time, in [0, 1).
     const Vec3 x(1.5, 2.0, -0.25);
-    CHECK(visibilityOffset(x, 7) == visibilityOffset(x, 7));
-    CHECK(visibilityOffset(x, 7) != visibilityOffset(x, 8));
-    CHECK(visibilityOffset(x, 7) != visibilityOffset(Vec3(1.5, 2.0, -0.26), 7));
+    CHECK(visibilityOffset(x, 0, 7) == visibilityOffset(x, 0, 7));
+    CHECK(visibilityOffset(x, 0, 7) != visibilityOffset(x, 0, 8));
+    CHECK(visibilityOffset(x, 0, 7) != visibilityOffset(Vec3(1.5, 2.0, -0.26), 0, 7));
+    CHECK(visibilityOffset(x, 0, 7) != visibilityOffset(x, imageKey({2}), 7));
+    CHECK(imageKey({2, 5}) != imageKey({5, 2}));
+    CHECK(imageKey({}) != 0);
     double mean = 0;
     for (uint64_t k = 0; k < 1000; ++k) {
-        const double u = visibilityOffset(x, k);
+        const double u = visibilityOffset(x, 0, k);
         REQUIRE(u >= 0);
         REQUIRE(u < 1);
         mean += u / 1000;
