@@ -75,7 +75,8 @@ SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, cons
     if (farDiameters <= 0 || tree.nodes.size() < 2) return g;
     g.tree = &tree;
     g.farDiameters = farDiameters;
-    g.unitFar = farSources(mesh, source, tree, std::vector<Rgb>(source.patches.size(), Rgb(1.0)));
+    g.unitFar = farSources(mesh, source, tree, std::vector<Rgb>(source.patches.size(), Rgb(1.0)),
+                           FarRayTargets::Brightest);
     return g;
 }
 

@@ -1,7 +1,6 @@
 #include <radiosity/far_field.h>
 
 #include <radiosity/form_factor.h>
-#include <radiosity/visibility_share.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +10,7 @@ namespace rayrad::radiosity {
 namespace {
 
 FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& tree, const MemberNode& node,
-                    const std::vector<Rgb>& luminance) {
+                    const std::vector<Rgb>& luminance, FarRayTargets targets) {
     FarSource f;
     bool positive = false, negative = false;
     for (uint32_t k = node.begin; k < node.end; ++k) {
@@ -39,7 +38,7 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
     }
     f.at = weight > 0 ? at / weight : node.centroid;
     // Visibility samples stratified by power: sample i where the running sum reaches (i + ½)/4 of it.
-    {
+    if (targets == FarRayTargets::PowerSamples) {
         double sum = 0;
         uint32_t k = node.begin;
         for (int i = 0; i < 4; ++i) {
@@ -79,9 +78,10 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
 }  // namespace
 
 std::vector<FarSource> farSources(const PatchMesh& mesh, const Cluster& cluster, const MemberTree& tree,
-                                  const std::vector<Rgb>& luminance) {
+                                  const std::vector<Rgb>& luminance, FarRayTargets targets) {
     std::vector<FarSource> out(tree.nodes.size());
-    for (size_t i = 0; i < tree.nodes.size(); ++i) out[i] = farSource(mesh, cluster, tree, tree.nodes[i], luminance);
+    for (size_t i = 0; i < tree.nodes.size(); ++i)
+        out[i] = farSource(mesh, cluster, tree, tree.nodes[i], luminance, targets);
     return out;
 }
 

@@ -33,19 +33,24 @@ struct FarSource {
     /// solve at 20° normal tolerance: 0.6 % of the indirect light).
     glm::mat3 turning{0.0f};
     uint32_t brightest = 0;            ///< member position k with the most power: the shooting's ray goes there
-    /// Where the node's visibility is sampled (visibility_share.h): member positions k
-    /// stratified by power, sample i where the running sum of the members' |Y(L_j)| A_j
+    /// Where the node's visibility is sampled (visibility_share.h; only with
+    /// FarRayTargets::PowerSamples): member positions k stratified by power, sample i where the running sum of the members' |Y(L_j)| A_j
     /// in tree order (which keeps them spread in space) reaches (i + ½)/4 of it.
     std::array<uint32_t, 4> rayTo{};
     float sign = 1;                    ///< +1, or −1 for a node of negative light
     bool mixed = false;                ///< members of both signs: no far field
 };
 
+/// Which ray targets a far source needs: its brightest member only (the shooting, which
+/// builds far sources for every shot), or also its power-stratified visibility samples
+/// FarSource::rayTo (the final gather; visibility_share.h).
+enum class FarRayTargets { Brightest, PowerSamples };
+
 /// The far sources of every node of `tree` (indexed like tree.nodes). `luminance[k]` is
 /// the luminance (cd/m², RGB) of member position k of `cluster` (its order in
 /// Cluster::patches); `mesh` holds the cluster's patches.
 std::vector<FarSource> farSources(const PatchMesh& mesh, const Cluster& cluster, const MemberTree& tree,
-                                  const std::vector<Rgb>& luminance);
+                                  const std::vector<Rgb>& luminance, FarRayTargets targets);
 
 /// The node's light at x with normal n (lx, RGB): g expanded about its luminance-weighted
 /// centroid to second order, E ≈ cosθ_x (−Φ·u)/r³ + ½ tr(H_g M) − tr(J P) (the

@@ -130,7 +130,7 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         for (uint32_t i = 0; i < tree.order.size(); ++i) m_treePosition[C.patches[tree.order[i]]] = i;
         std::vector<Rgb> luminance(C.patches.size());
         for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = solution.reflectedLuminance(scene, mesh, C.patches[k]);
-        m_far.push_back(farSources(mesh, C, tree, luminance));
+        m_far.push_back(farSources(mesh, C, tree, luminance, FarRayTargets::PowerSamples));
         m_rootFar.push_back(m_far.back().front());
         m_trees.push_back(std::move(tree));
     }

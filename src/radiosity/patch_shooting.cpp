@@ -21,7 +21,7 @@ typename ShootingCore<V>::Emission ShootingCore<V>::emission(const Shooter& from
     if (tree.nodes.size() > 1 && m_options.shootFarDiameters > 0) {
         std::vector<Rgb> luminance(amount.size());
         for (size_t k = 0; k < amount.size(); ++k) luminance[k] = toRgb(amount[k]);
-        e.far = farSources(from.mesh(), from.cluster(), tree, luminance);
+        e.far = farSources(from.mesh(), from.cluster(), tree, luminance, FarRayTargets::Brightest);
     }
     return e;
 }

@@ -107,7 +107,7 @@ TEST_CASE("a far node's visibility samples are stratified by its members' power"
         if (k != bright) restArea += mesh.patches[strip.patches[k]].area;
     for (uint32_t k = 0; k < strip.patches.size(); ++k)
         luminance[k] = k == bright ? Rgb(1.0 / mesh.patches[strip.patches[k]].area) : Rgb(1.0 / restArea);
-    const std::vector<FarSource> far = farSources(mesh, strip, tree, luminance);
+    const std::vector<FarSource> far = farSources(mesh, strip, tree, luminance, FarRayTargets::PowerSamples);
     const FarSource& root = far[0];
     CHECK(root.brightest == bright);
     CHECK(root.rayTo[0] == bright);  // 1/8 of the power: inside member 3 (from 1/2 · 3/(n−1) to it plus 1/2)
