@@ -176,7 +176,9 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
                 current[k] = previous[k];
                 return;
             }
-            if (round == 0) rest[k] = gatherer.gatherWith(g.at, g.normal, &corners, false, nullptr, 1, Part::AllButNear);
+            if (round == 0)
+                rest[k] = gatherer.gatherWith(g.at, g.normal, &corners, false, nullptr, 1, Part::AllButNear,
+                                              luminance(solution.vertexIndirect[g.vertex]));
             current[k] = rest[k] + gatherer.gatherWith(g.at, g.normal, &corners, /*parallel=*/false, nullptr, 1, Part::Near);
             size_t n = ++done;
             if (onProgress && n % 16 == 0) onProgress(static_cast<double>(n) / total);

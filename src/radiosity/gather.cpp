@@ -22,6 +22,9 @@ constexpr double kNearDiameters = 2.0;
 /// and for refinement with gathered midpoints. 2 cost the cube's 1 024-sensor grid 2.6 x
 /// the pieces and 1.7 x the gathers of 1 for the same accuracy (docs/validation.md).
 constexpr double kSplitRatio = 1.0;
+/// A far source whose light at the point is below this share of the indirect illuminance
+/// expected there takes one visibility ray, any other four (see gatherWith).
+constexpr double kWeakSourceShare = 1e-3;
 /// A cluster farther than this many of its diameters shares its visibility rays.
 constexpr double kClusterVisibilityDiameters = 2.0;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
@@ -233,25 +236,27 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
 }
 
-Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo) const {
+Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo,
+                     double expected) const {
     ++memo.m_gathers;
     // This gather's error reaches the sensor with weight w; a near patch's corners and
     // midpoints with w ρ F. Those below the minimum weight are not worth a gather.
     const double weight = std::pow(10.0, -weightClass);
-    if (level <= 0) return gatherWith(x, n, nullptr, true, nullptr, weight);
+    if (level <= 0) return gatherWith(x, n, nullptr, true, nullptr, weight, Part::All, expected);
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
     CornerSource corners = [&](size_t patch, int corner, double share) {
         return cornerIndirect(patch, corner, level - 1, classOf(weight * share), memo);
     };
-    if (level <= m_options.levels - m_options.refineLevels) return gatherWith(x, n, &corners, true, nullptr, weight);
+    if (level <= m_options.levels - m_options.refineLevels)
+        return gatherWith(x, n, &corners, true, nullptr, weight, Part::All, expected);
     MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share) {
         return midpointIndirect(patch, a, b, y, level - 1, classOf(weight * share), memo);
     };
-    return gatherWith(x, n, &corners, true, &midpoints, weight);
+    return gatherWith(x, n, &corners, true, &midpoints, weight, Part::All, expected);
 }
 
 Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                         const MidpointSource* midpoints, double weight, Part part) const {
+                         const MidpointSource* midpoints, double weight, Part part, double expected) const {
     // Near patches get linear luminance from corner values (refined toward x with
     // gathered midpoints when asked), the rest a patch-constant one.
     struct Near {
@@ -364,7 +369,16 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     // not: a cluster there adds nothing, so skipping it leaves every sum as it was).
     // A far source's visibility: up to four rays, or one in a re-gather (weight < 1),
     // whose error reaches the sensor diminished.
-    const VisibilityRays rays = weight < 1 ? VisibilityRays::One : VisibilityRays::UpToFour;
+    // When x is expected to receive `expected` lx (> 0; the caller's estimate), a source
+    // bringing less than kWeakSourceShare of that takes one ray too (the error its
+    // visibility can bring is at most its light, and one ray's is unbiased), and any
+    // other four (unbiased, where two that agree would miss a small hidden part).
+    const double weakBelow = kWeakSourceShare * expected;
+    auto raysFor = [&](const Rgb& e) {
+        if (weight < 1) return VisibilityRays::One;
+        if (!(expected > 0)) return VisibilityRays::UpToFour;
+        return luminance(e) < weakBelow ? VisibilityRays::One : VisibilityRays::Four;
+    };
     const size_t regions = m_regions.regions.size();
     std::vector<char> regionOpen(m_mirrorViews.size() * regions);  // not thread_local: a waiting thread may run another gather
     for (size_t i = 0; i < m_mirrorViews.size(); ++i) {
@@ -442,7 +456,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const Rgb e = farField(f, x, n, image);
             if (e == Rgb(0.0)) return;
             if (shared) sharedSum += e, sharedVisibility.addNode(luminance(e), f);
-            else sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); }, rays, offset(node));
+            else sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); }, raysFor(e), offset(node));
         };
         auto holdsNear = [&](const MemberNode& node) {
             auto it = nearFrom(node.begin);
@@ -471,7 +485,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
         });
-        if (shared && sharedSum != Rgb(0.0)) sum += sharedSum * sharedVisibility.share(visiblePatch, rays, offset(kCluster));
+        if (shared && sharedSum != Rgb(0.0)) sum += sharedSum * sharedVisibility.share(visiblePatch, raysFor(sharedSum), offset(kCluster));
         return sum;
     };
     const size_t clusters = m_clustering.clusters.size();

@@ -127,8 +127,11 @@ class Gatherer {
 
     /// Indirect illuminance (lx, RGB) at x with unit normal n; re-gathered corner and
     /// midpoint values are kept in (and taken from) `memo`. Thread-safe for distinct memos.
-    Rgb indirectAt(const Vec3& x, const Vec3& n, GatherMemo& memo) const {
-        return gather(x, n, m_options.levels, 0, memo);
+    /// `expected` (lx, > 0 when known: the mesh's interpolated value there) says which far
+    /// sources matter: those bringing at least 1/1000 of it take four visibility rays,
+    /// the others one (see gatherWith); 0: two, or four where those disagree.
+    Rgb indirectAt(const Vec3& x, const Vec3& n, GatherMemo& memo, double expected = 0) const {
+        return gather(x, n, m_options.levels, 0, memo, expected);
     }
 
     /// Indirect illuminance of a patch corner (patch, corner index) — lx, RGB. `share`:
@@ -159,9 +162,11 @@ class Gatherer {
     /// `part` (with `cornerIndirectOf`) splits the sum in two that add up to the whole:
     /// the near patches' linear luminance alone, the only part that depends on the corner
     /// values, or everything else (far clusters, other patches, mirror images).
+    /// `expected`: the indirect illuminance (lx) x is expected to receive, as indirectAt.
     enum class Part { All, Near, AllButNear };
     Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                   const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All) const;
+                   const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All,
+                   double expected = 0) const;
 
   private:
     /// A piece of a near patch with the luminance at its corners (cd/m², RGB).
@@ -178,7 +183,7 @@ class Gatherer {
         Rgb L, E;
     };
     /// A gather whose error reaches the sensor with weight at most 10^−weightClass.
-    Rgb gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo) const;
+    Rgb gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo, double expected = 0) const;
     /// The class of a weight: k with 10^−(k+1) < weight ≤ 10^−k, so a class's weight is at
     /// least that of its members (always 0 without a minimum weight: every gather is then
     /// in full detail).

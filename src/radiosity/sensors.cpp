@@ -27,7 +27,9 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
         if (onSurfaceBoundary(mesh, *where, 10 * nudge, &vis)) directAt = gatherAt;
     }
     out.direct = lights.illuminance(directAt, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
-    if (!solution.indirect.empty()) out.indirect = gatherer.indirectAt(gatherAt, sensor.normal, memo);
+    // The mesh's value tells the gather which far sources bring the sensor its light.
+    if (!solution.indirect.empty())
+        out.indirect = gatherer.indirectAt(gatherAt, sensor.normal, memo, out.indirectVertex ? luminance(*out.indirectVertex) : 0);
     return out;
 }
 

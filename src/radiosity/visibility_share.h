@@ -1,7 +1,9 @@
 // How much of a source's light reaches a point in the final gather when its visibility
 // is sampled, not traced member by member: a far member-tree node (FarSource::rayTo) or a
 // far cluster whose members share their rays. Both sample where the light is: at four
-// points stratified by light, two rays first, the other two only when those two disagree
+// points stratified by light. A gather that knows roughly what the point will receive
+// gives the sources that bring at least 1/1000 of it all four rays and the rest the first
+// alone; one that does not, two rays first and the other two only when those two disagree
 // (most sources are wholly seen or wholly hidden: two rays). A re-gather (weight < 1)
 // takes the first sample alone.
 //
@@ -25,10 +27,12 @@ namespace rayrad::radiosity {
 
 /// How many rays a source's visibility takes: `One`, at a fraction u of its light drawn
 /// per point and source (visibilityOffset) — an unbiased estimate of the share seen,
-/// whose errors average out over many sources — or `UpToFour`: two, and two more when
-/// those disagree, of lower variance for the few large sources near a point but biased
-/// a little high (two rays that agree miss a small hidden part).
-enum class VisibilityRays { One, UpToFour };
+/// whose errors average out over many sources; `Four`, one in each stratum — unbiased,
+/// of lower variance, for the sources that bring a point much of its light; or
+/// `UpToFour`: two, and two more when those disagree, as cheap as two for the many
+/// sources wholly seen or hidden but biased a little high (two rays that agree miss a
+/// small hidden part), for a gather that does not know which sources matter.
+enum class VisibilityRays { One, UpToFour, Four };
 
 /// Sample j (0 … 3) of a source whose offset is u: the stratum (⌊4u⌋ + {0, 2, 1, 3}[j])
 /// mod 4 of four equal ones, at the same place 4u − ⌊4u⌋ within it. Sample 0 lies at u
@@ -51,8 +55,8 @@ double stratifiedShare(Seen&& seen, VisibilityRays rays) {
     const bool a = seen(0);
     if (rays == VisibilityRays::One) return a ? 1.0 : 0.0;
     const bool b = seen(1);
-    if (a == b) return a ? 1.0 : 0.0;
-    return 0.25 * (1 + int(seen(2)) + int(seen(3)));  // a + b = 1
+    if (a == b && rays == VisibilityRays::UpToFour) return a ? 1.0 : 0.0;
+    return 0.25 * (int(a) + int(b) + int(seen(2)) + int(seen(3)));
 }
 
 /// The offset u in [0, 1) of source `source` (a cluster, or a node of one) in mirror
