@@ -383,6 +383,8 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     std::vector<char> regionOpen(m_mirrorViews.size() * regions);  // not thread_local: a waiting thread may run another gather
     for (size_t i = 0; i < m_mirrorViews.size(); ++i) {
         const MirrorImage& image = m_mirrorViews[i]->image;
+        // Nothing comes through a chain whose last mirror x does not face.
+        if (!m_scene.mirrors[image.chain.back()].facedBy(x, n)) continue;
         for (size_t r = 0; r < regions; ++r) {
             const VoxelRegions::Region& region = m_regions.regions[r];
             regionOpen[i * regions + r] = image.mayPass(image.point(region.centre), region.radius, x, 0);

@@ -60,9 +60,9 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
         const scene::Mirror& last = scene.mirrors[view->image.chain.back()];
         for (const Cluster& C : clustering.clusters) {
             bool sends = false, receives = false;
-            for (uint32_t i : C.patches) {
-                sends |= first.side(mesh.patches[i].centroid) > 0;
-                receives |= last.side(mesh.patches[i].centroid) > 0;
+            for (uint32_t i : C.patches) {  // a member facing away from the chain's ends takes no part
+                sends |= first.facedBy(mesh.patches[i].centroid, mesh.patches[i].normal);
+                receives |= last.facedBy(mesh.patches[i].centroid, mesh.patches[i].normal);
             }
             s.sends.push_back(sends);
             s.receives.push_back(receives);

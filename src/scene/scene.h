@@ -47,6 +47,16 @@ struct Mirror {
     double side(const Vec3& p) const { return glm::dot(normal, p) - offset; }  ///< signed distance, m
     Vec3 reflectPoint(const Vec3& p) const { return p - 2.0 * side(p) * normal; }
     Vec3 reflectDirection(const Vec3& d) const { return d - 2.0 * glm::dot(d, normal) * normal; }
+    /// Whether light can pass between this mirror and a point p of a planar surface with
+    /// unit normal n: p in front of the mirror, and some of the polygon in front of the
+    /// surface's plane (light leaves and arrives through its front hemisphere only; the
+    /// same for every point of the plane's surface on the mirror's front).
+    bool facedBy(const Vec3& p, const Vec3& n) const {
+        if (side(p) <= 0) return false;
+        for (const Vec3& v : polygon)
+            if (glm::dot(n, v - p) > 0) return true;
+        return false;
+    }
 };
 
 /// Polygons that share vertices: one quad, one face of a box, a whole sphere or mesh.

@@ -146,6 +146,42 @@ TEST_CASE("MirrorImage::mayPass never rejects two balls between which light pass
     CHECK(rejected > 100);
 }
 
+TEST_CASE("Mirror::facedBy never rejects a surface point that light reaches through the chain", "[mirrors]") {
+    // The 90° corner's chain: random surface points (position, unit normal) in front of
+    // the wall and random points of the images; wherever the straight line from the
+    // surface point to an image point passes the apertures and leaves the point's front
+    // hemisphere, the chain's last mirror must count as faced (the shooting and the
+    // gather skip a chain whose end a surface does not face).
+    const std::vector<scene::Mirror> mirrors = mirrorCorner();
+    auto images = radiosity::enumerateMirrorImages(mirrors, {8, 1e-3});
+    Random rng(11);
+    auto direction = [&] {
+        Vec3 d;
+        do d = Vec3(rng.nextDouble(), rng.nextDouble(), rng.nextDouble()) * 2.0 - 1.0;
+        while (glm::dot(d, d) > 1 || glm::dot(d, d) < 1e-6);
+        return glm::normalize(d);
+    };
+    int reached = 0, notFaced = 0;
+    for (const auto& image : images) {
+        const scene::Mirror& last = mirrors[image.chain.back()];
+        for (int trial = 0; trial < 2000; ++trial) {
+            const Vec3 x(3 * rng.nextDouble() - 1, 2 * rng.nextDouble(), 2 * rng.nextDouble());
+            const Vec3 n = direction();
+            const Vec3 source(3 * rng.nextDouble() - 1, 2 * rng.nextDouble(), 2 * rng.nextDouble());
+            const Vec3 imagePoint = image.point(source);
+            const bool faced = last.facedBy(x, n);
+            notFaced += !faced;
+            if (glm::dot(n, imagePoint - x) > 0 && radiosity::throughApertures(mirrors, image, imagePoint, x)) {
+                INFO("chain length " << image.chain.size() << " point " << toString(x) << " normal " << toString(n));
+                CHECK(faced);
+                ++reached;
+            }
+        }
+    }
+    CHECK(reached > 100);
+    CHECK(notFaced > 1000);
+}
+
 TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors][stability]") {
     std::string json = R"({"materials": {"w": {"reflectance": 0.5}, "m": {"type": "mirror", "specular_reflectance": 0.95}},
         "objects": [{"type": "box", "min": [0, 0, 0], "max": [3, 2, 2], "facing": "inward", "material": "w"},
