@@ -34,8 +34,9 @@ struct FarSource {
     glm::mat3 turning{0.0f};
     uint32_t brightest = 0;            ///< member position k with the most power: the shooting's ray goes there
     /// Where the node's visibility is sampled (visibility_share.h; only with
-    /// FarRayTargets::PowerSamples): member positions k stratified by power, sample i where the running sum of the members' |Y(L_j)| A_j
-    /// in tree order (which keeps them spread in space) reaches (i + ½)/4 of it.
+    /// FarRayTargets::PowerSamples): member positions k stratified by power, sample i
+    /// where the running sum of the members' |Y(L_j)| A_j in tree order (which keeps them
+    /// spread in space) reaches (i + ½)/4 of it.
     std::array<uint32_t, 4> rayTo{};
     float sign = 1;                    ///< +1, or −1 for a node of negative light
     bool mixed = false;                ///< members of both signs: no far field

@@ -458,7 +458,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const Rgb e = farField(f, x, n, image);
             if (e == Rgb(0.0)) return;
             if (shared) sharedSum += e, sharedVisibility.addNode(luminance(e), f);
-            else sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); }, raysFor(e), offset(node));
+            else
+                sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); }, raysFor(e),
+                                        offset(node));
         };
         auto holdsNear = [&](const MemberNode& node) {
             auto it = nearFrom(node.begin);
@@ -487,7 +489,8 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
         });
-        if (shared && sharedSum != Rgb(0.0)) sum += sharedSum * sharedVisibility.share(visiblePatch, raysFor(sharedSum), offset(kCluster));
+        if (shared && sharedSum != Rgb(0.0))
+            sum += sharedSum * sharedVisibility.share(visiblePatch, raysFor(sharedSum), offset(kCluster));
         return sum;
     };
     const size_t clusters = m_clustering.clusters.size();

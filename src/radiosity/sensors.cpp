@@ -28,8 +28,10 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
     }
     out.direct = lights.illuminance(directAt, sensor.normal, vis, scene.render.sensorAreaLightSamples, nullptr);
     // The mesh's value tells the gather which far sources bring the sensor its light.
-    if (!solution.indirect.empty())
-        out.indirect = gatherer.indirectAt(gatherAt, sensor.normal, memo, out.indirectVertex ? luminance(*out.indirectVertex) : 0);
+    if (!solution.indirect.empty()) {
+        const double expected = out.indirectVertex ? luminance(*out.indirectVertex) : 0;  // lx; 0: not on a mesh
+        out.indirect = gatherer.indirectAt(gatherAt, sensor.normal, memo, expected);
+    }
     return out;
 }
 

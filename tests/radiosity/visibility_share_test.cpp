@@ -199,7 +199,8 @@ TEST_CASE("ceiling sensors over rows of desks read what every patch's own ray re
             // least 1/1000 of it four rays, the rest one.
             const auto where = locateOnMesh(run.mesh, at, n, 1e-6, run.embree.get());
             REQUIRE(where);
-            const double expected = luminance(interpolateIndirect(run.mesh, run.solution, where->patch, where->u, where->v));
+            const double expected =
+                luminance(interpolateIndirect(run.mesh, run.solution, where->patch, where->u, where->v));
             before = counted.rays;
             const double told = luminance(sampled.indirectAt(at, n, c, expected));
             raysExpected += counted.rays - before;
