@@ -21,6 +21,12 @@ class Visibility {
     /// itself from a point where a wall stands on the floor starts beyond the wall: the
     /// light behind the wall leaked in.) x should lie inside its own patch, not on an edge.
     virtual bool visibleFromSurface(const Vec3& x, const Vec3& /*n*/, const Vec3& to) const { return visible(x, to); }
+    /// visibleFromSurface(x, n, to[i]) into visible[i] for i < count: the same answers,
+    /// but an implementation may trace them together (Embree: packets of eight; rays from
+    /// one point toward a compact group of targets are coherent).
+    virtual void visibleFromSurfaceMany(const Vec3& x, const Vec3& n, const Vec3* to, size_t count, bool* visible) const {
+        for (size_t i = 0; i < count; ++i) visible[i] = visibleFromSurface(x, n, to[i]);
+    }
     /// True when another surface's front coincides with the surface at x (unit normal n)
     /// and faces the other way, −n: back-to-back surfaces (a zero-thickness wall), where
     /// nothing reaches x's back — the light there lands on the other surface's front.

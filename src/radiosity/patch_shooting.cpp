@@ -11,6 +11,8 @@ namespace {
 /// Patch→patch: a receiver this many member-group diameters away shares one visibility
 /// ray for the whole group (as the final gather does for clusters).
 constexpr double kSharedRayDiameters = 2.0;
+/// Near members whose rays are traced together (one Embree packet).
+constexpr size_t kGroupBuffer = 8;
 }  // namespace
 
 template <class V>
@@ -67,6 +69,17 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
             V groupE(0.0);
             double strongest = 0;
             const Patch* strongestSource = nullptr;
+            // Near: each member's own ray, traced together (visibleFromSurfaceMany).
+            Vec3 targets[kGroupBuffer];
+            V unblocked[kGroupBuffer];
+            size_t count = 0;
+            auto addVisible = [&] {
+                bool visible[kGroupBuffer];
+                s.vis->visibleFromSurfaceMany(rec.centroid, rec.normal, targets, count, visible);
+                for (size_t t = 0; t < count; ++t)
+                    if (visible[t]) groupE += unblocked[t];
+                count = 0;
+            };
             for (uint32_t m = node.begin; m < node.end; ++m) {
                 const uint32_t k = tree.order[m];
                 uint32_t i = C.patches[k];
@@ -75,13 +88,18 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                 const Patch& src = from.mesh().patches[i];
                 Vec3 d = src.centroid - rec.centroid;  // both must face each other
                 if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
-                double f = shared ? patchFormFactor(from.mesh(), src, rec.centroid, rec.normal, m_options.analyticDistance)
-                                  : visiblePatchFormFactor(from.mesh(), src, rec.centroid, rec.normal,
-                                                           m_options.analyticDistance, *s.vis);
-                V e = amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
-                groupE += e;
-                if (shared && std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
+                const double f = patchFormFactor(from.mesh(), src, rec.centroid, rec.normal, m_options.analyticDistance);
+                if (f <= 0) continue;
+                const V e = amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
+                if (shared) {
+                    groupE += e;
+                    if (std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
+                } else {
+                    targets[count] = src.centroid, unblocked[count] = e;
+                    if (++count == kGroupBuffer) addVisible();
+                }
             }
+            if (count > 0) addVisible();
             if (!(shared && strongestSource &&
                   !s.vis->visibleFromSurface(rec.centroid, rec.normal, strongestSource->centroid)))
                 deltaE += groupE;

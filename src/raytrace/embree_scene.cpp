@@ -191,29 +191,94 @@ bool EmbreeScene::patchesNear(const Vec3& x, double radius, const std::function<
     return true;
 }
 
-bool EmbreeScene::occluded(const Vec3& from, const Vec3& to, double startShrink) const {
-    Vec3 d = to - from;
-    double len = glm::length(d);
-    if (len <= 2 * startShrink) return false;
+namespace {
+/// A shadow ray's segment as Embree takes it (single precision): origin, unit direction,
+/// and the open interval (tnear, tfar). `empty`: nothing to test (no length left).
+struct ShadowSegment {
+    float org[3], dir[3], tnear, tfar;
+    bool empty;
+};
+
+ShadowSegment shadowSegment(const Vec3& from, const Vec3& to, double startShrink, double epsilon) {
+    ShadowSegment s{};
+    const Vec3 d = to - from;
+    const double len = glm::length(d);
+    s.empty = len <= 2 * startShrink;
+    if (s.empty) return s;
     // The end at `to` (a point on a surface) is shrunk by the epsilon, or by half the
     // length for segments shorter than that: a 10 µm segment from a point at the foot of
     // a wall to the floor beyond it must still meet the wall.
-    const double endShrink = std::min(m_epsilon, 0.5 * (len - startShrink));
+    const double endShrink = std::min(epsilon, 0.5 * (len - startShrink));
+    for (int k = 0; k < 3; ++k) {
+        s.org[k] = static_cast<float>(from[k]);
+        s.dir[k] = static_cast<float>(d[k] / len);
+    }
+    s.tnear = static_cast<float>(startShrink);
+    s.tfar = static_cast<float>(len - endShrink);
+    return s;
+}
+
+/// One segment, one ray (rtcOccluded1).
+bool occludedSegment(RTCScene scene, const ShadowSegment& s) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray{};
-    ray.org_x = static_cast<float>(from.x);
-    ray.org_y = static_cast<float>(from.y);
-    ray.org_z = static_cast<float>(from.z);
-    ray.dir_x = static_cast<float>(d.x / len);
-    ray.dir_y = static_cast<float>(d.y / len);
-    ray.dir_z = static_cast<float>(d.z / len);
-    ray.tnear = static_cast<float>(startShrink);
-    ray.tfar = static_cast<float>(len - endShrink);
+    ray.org_x = s.org[0], ray.org_y = s.org[1], ray.org_z = s.org[2];
+    ray.dir_x = s.dir[0], ray.dir_y = s.dir[1], ray.dir_z = s.dir[2];
+    ray.tnear = s.tnear;
+    ray.tfar = s.tfar;
     ray.mask = kOpaqueMask;  // Debian's Embree has ray masks on: glass (mask 2) lets light through
     ray.flags = 0;
-    rtcOccluded1(m_impl->scene, &context, &ray);
+    rtcOccluded1(scene, &context, &ray);
     return ray.tfar < 0;  // an occluder sets tfar to -inf
+}
+}  // namespace
+
+namespace {
+/// Up to W shadow segments (W = 4 or 8) as one Embree packet: visible[i] for segments[i].
+template <int W, class RayW>
+void occludedPacket(RTCScene scene, RTCIntersectContext& context, const ShadowSegment* segments, size_t count,
+                    bool* visible, void (*trace)(const int*, RTCScene, RTCIntersectContext*, RayW*)) {
+    alignas(64) int valid[W] = {};
+    alignas(64) RayW rays{};
+    bool any = false;
+    for (size_t lane = 0; lane < count; ++lane) {
+        const ShadowSegment& s = segments[lane];
+        if (s.empty) continue;
+        valid[lane] = -1, any = true;
+        rays.org_x[lane] = s.org[0], rays.org_y[lane] = s.org[1], rays.org_z[lane] = s.org[2];
+        rays.dir_x[lane] = s.dir[0], rays.dir_y[lane] = s.dir[1], rays.dir_z[lane] = s.dir[2];
+        rays.tnear[lane] = s.tnear, rays.tfar[lane] = s.tfar;
+        rays.mask[lane] = kOpaqueMask;
+    }
+    if (any) trace(valid, scene, &context, &rays);
+    for (size_t lane = 0; lane < count; ++lane)
+        visible[lane] = !valid[lane] || !(rays.tfar[lane] < 0);  // an occluder sets tfar to -inf
+}
+}  // namespace
+
+void EmbreeScene::visibleFromSurfaceMany(const Vec3& x, const Vec3& n, const Vec3* to, size_t count,
+                                         bool* visible) const {
+    const Vec3 from = x + m_epsilon * n;  // as visibleFromSurface: lifted off, not shrunk there
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // one origin, nearby targets
+    for (size_t first = 0; first < count; first += 8) {
+        const size_t lanes = std::min<size_t>(8, count - first);
+        ShadowSegment segments[8];
+        for (size_t lane = 0; lane < lanes; ++lane) segments[lane] = shadowSegment(from, to[first + lane], 0.0, m_epsilon);
+        if (lanes == 1)
+            visible[first] = segments[0].empty || !occludedSegment(m_impl->scene, segments[0]);
+        else if (lanes <= 4)
+            occludedPacket<4, RTCRay4>(m_impl->scene, context, segments, lanes, visible + first, rtcOccluded4);
+        else
+            occludedPacket<8, RTCRay8>(m_impl->scene, context, segments, lanes, visible + first, rtcOccluded8);
+    }
+}
+
+bool EmbreeScene::occluded(const Vec3& from, const Vec3& to, double startShrink) const {
+    const ShadowSegment s = shadowSegment(from, to, startShrink, m_epsilon);
+    return !s.empty && occludedSegment(m_impl->scene, s);
 }
 
 Hit EmbreeScene::intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar, bool frontOnly) const {

@@ -48,6 +48,8 @@ class EmbreeScene : public Visibility {
 
     bool visible(const Vec3& from, const Vec3& to) const override;
     bool visibleFromSurface(const Vec3& x, const Vec3& n, const Vec3& to) const override;
+    void visibleFromSurfaceMany(const Vec3& x, const Vec3& n, const Vec3* to, size_t count,
+                                bool* visible) const override;
     bool backCovered(const Vec3& x, const Vec3& n) const override;
     bool hitsBackFace(const Vec3& from, const Vec3& direction) const override;
     bool patchesNear(const Vec3& x, double radius, const std::function<void(uint32_t)>& visit) const override;
