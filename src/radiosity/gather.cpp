@@ -27,6 +27,8 @@ constexpr double kSplitRatio = 1.0;
 constexpr double kWeakSourceShare = 1e-3;
 /// A cluster farther than this many of its diameters shares its visibility rays.
 constexpr double kClusterVisibilityDiameters = 2.0;
+/// A gather's rays to one cluster's patches traced together (one Embree packet).
+constexpr size_t kRayBatch = 8;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
 constexpr int kRefineDepth = 6;
 /// Near patches holding at least 1/kRefineShares of the near field's ρ F are refined to
@@ -381,18 +383,22 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     };
     const size_t regions = m_regions.regions.size();
     std::vector<char> regionOpen(m_mirrorViews.size() * regions);  // not thread_local: a waiting thread may run another gather
+    std::vector<uint32_t> sources{0};  // the scene itself, then the images x faces
     for (size_t i = 0; i < m_mirrorViews.size(); ++i) {
         const MirrorImage& image = m_mirrorViews[i]->image;
         // Nothing comes through a chain whose last mirror x does not face.
         if (!m_scene.mirrors[image.chain.back()].facedBy(x, n)) continue;
+        sources.push_back(static_cast<uint32_t>(i + 1));
         for (size_t r = 0; r < regions; ++r) {
             const VoxelRegions::Region& region = m_regions.regions[r];
             regionOpen[i * regions + r] = image.mayPass(image.point(region.centre), region.radius, x, 0);
         }
     }
+    // Cluster c of source s takes part unless s is an image whose chain no light passes
+    // from c's voxel to x.
+    auto open = [&](size_t s, size_t c) { return s == 0 || regionOpen[(s - 1) * regions + m_regions.regionOf[c]]; };
     auto contribution = [&](size_t s, size_t c) {
         const bool real = s == 0;
-        if (!real && !regionOpen[(s - 1) * regions + m_regions.regionOf[c]]) return Rgb(0.0);
         const MirrorImage* image = real ? nullptr : &m_mirrorViews[s - 1]->image;
         const Cluster& C = m_clustering.clusters[c];  // members mirrored as they are used
         const Visibility& vis = real ? m_vis : *m_mirrorViews[s - 1]->path;
@@ -416,11 +422,27 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             return real ? m_mesh.patches[j].centroid : image->point(m_mesh.patches[j].centroid);
         };
         auto visiblePatch = [&](uint32_t j) { return vis.visibleFromSurface(x, n, rayTarget(j)); };
+        // The rays to patches of a cluster that does not share them, traced together,
+        // kRayBatch at a time (visibleFromSurfaceMany), with the light each lets through.
+        Vec3 targets[kRayBatch];
+        Rgb unblocked[kRayBatch];
+        size_t pending = 0;
+        auto trace = [&] {
+            bool visible[kRayBatch];
+            vis.visibleFromSurfaceMany(x, n, targets, pending, visible);
+            for (size_t t = 0; t < pending; ++t)
+                if (visible[t]) sum += unblocked[t];
+            pending = 0;
+        };
         // Patch j's contribution e (lx), seen along the ray to its centroid (in a far
         // cluster, as the whole cluster is).
         auto add = [&](const Rgb& e, uint32_t j) {
-            if (shared) sharedSum += e, sharedVisibility.addPatch(luminance(e), j);
-            else if (visiblePatch(j)) sum += e;
+            if (shared) {
+                sharedSum += e, sharedVisibility.addPatch(luminance(e), j);
+                return;
+            }
+            targets[pending] = rayTarget(j), unblocked[pending] = e;
+            if (++pending == kRayBatch) trace();
         };
         // The first near patch at or after tree position k.
         auto nearFrom = [&](uint32_t k) {
@@ -489,24 +511,27 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
         });
+        if (pending > 0) trace();
         if (shared && sharedSum != Rgb(0.0))
             sum += sharedSum * sharedVisibility.share(visiblePatch, raysFor(sharedSum), offset(kCluster));
         return sum;
     };
+    // Every (source, cluster) pair, source by source: k = source's place × clusters + c.
     const size_t clusters = m_clustering.clusters.size();
-    const size_t count = clusters * (1 + m_mirrorViews.size());
-    if (!parallel) {
-        Rgb sum(0.0);
-        for (size_t k = 0; k < count; ++k) sum += contribution(k / clusters, k % clusters);
+    const size_t count = clusters * sources.size();
+    auto sumOver = [&](size_t begin, size_t end, Rgb sum) {
+        size_t place = begin / clusters, c = begin % clusters;
+        for (size_t k = begin; k != end; ++k) {
+            if (open(sources[place], c)) sum += contribution(sources[place], c);
+            if (++c == clusters) c = 0, ++place;
+        }
         return sum;
-    }
+    };
+    if (!parallel) return sumOver(0, count, Rgb(0.0));
     // Deterministic for any thread count.
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<size_t>(0, count, 16), Rgb(0.0),
-        [&](const tbb::blocked_range<size_t>& r, Rgb sum) {
-            for (size_t k = r.begin(); k != r.end(); ++k) sum += contribution(k / clusters, k % clusters);
-            return sum;
-        },
+        [&](const tbb::blocked_range<size_t>& r, Rgb sum) { return sumOver(r.begin(), r.end(), sum); },
         [](const Rgb& a, const Rgb& b) { return a + b; });
 }
 

@@ -11,8 +11,8 @@ namespace {
 /// Patch→patch: a receiver this many member-group diameters away shares one visibility
 /// ray for the whole group (as the final gather does for clusters).
 constexpr double kSharedRayDiameters = 2.0;
-/// Near members whose rays are traced together (one Embree packet).
-constexpr size_t kGroupBuffer = 8;
+/// A receiver patch's rays traced together (one Embree packet).
+constexpr size_t kRayBatch = 8;
 }  // namespace
 
 template <class V>
@@ -40,6 +40,23 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
     for (uint32_t j : D.patches) {
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
+        // Every visibility ray of this receiver patch leaves from its centroid: they are
+        // collected with the light each lets through and traced together, kRayBatch at a
+        // time (visibleFromSurfaceMany).
+        Vec3 targets[kRayBatch];
+        V unblocked[kRayBatch];
+        size_t count = 0;
+        auto trace = [&] {
+            bool visible[kRayBatch];
+            s.vis->visibleFromSurfaceMany(rec.centroid, rec.normal, targets, count, visible);
+            for (size_t t = 0; t < count; ++t)
+                if (visible[t]) deltaE += unblocked[t];
+            count = 0;
+        };
+        auto addIfVisible = [&](const Vec3& target, const V& e) {
+            targets[count] = target, unblocked[count] = e;
+            if (++count == kRayBatch) trace();
+        };
         // Depth first through the shooter's member tree: a node far enough sends as one
         // source with one visibility ray (toward its brightest member); a leaf (a member
         // group) otherwise member by member.
@@ -51,9 +68,7 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                     ++terms;
                     if (s.image && !s.image->mayPass(f.at, 0.5 * f.reach, rec.centroid, 0)) return false;
                     const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
-                    if (e != V(0.0) &&
-                        s.vis->visibleFromSurface(rec.centroid, rec.normal, from.mesh().patches[C.patches[f.brightest]].centroid))
-                        deltaE += e;
+                    if (e != V(0.0)) addIfVisible(from.mesh().patches[C.patches[f.brightest]].centroid, e);
                     return false;
                 }
             }
@@ -69,17 +84,6 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
             V groupE(0.0);
             double strongest = 0;
             const Patch* strongestSource = nullptr;
-            // Near: each member's own ray, traced together (visibleFromSurfaceMany).
-            Vec3 targets[kGroupBuffer];
-            V unblocked[kGroupBuffer];
-            size_t count = 0;
-            auto addVisible = [&] {
-                bool visible[kGroupBuffer];
-                s.vis->visibleFromSurfaceMany(rec.centroid, rec.normal, targets, count, visible);
-                for (size_t t = 0; t < count; ++t)
-                    if (visible[t]) groupE += unblocked[t];
-                count = 0;
-            };
             for (uint32_t m = node.begin; m < node.end; ++m) {
                 const uint32_t k = tree.order[m];
                 uint32_t i = C.patches[k];
@@ -91,20 +95,18 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                 const double f = patchFormFactor(from.mesh(), src, rec.centroid, rec.normal, m_options.analyticDistance);
                 if (f <= 0) continue;
                 const V e = amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
-                if (shared) {
-                    groupE += e;
-                    if (std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
-                } else {
-                    targets[count] = src.centroid, unblocked[count] = e;
-                    if (++count == kGroupBuffer) addVisible();
+                if (!shared) {
+                    addIfVisible(src.centroid, e);
+                    continue;
                 }
+                groupE += e;
+                if (std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
             }
-            if (count > 0) addVisible();
-            if (!(shared && strongestSource &&
-                  !s.vis->visibleFromSurface(rec.centroid, rec.normal, strongestSource->centroid)))
-                deltaE += groupE;
+            if (shared && strongestSource) addIfVisible(strongestSource->centroid, groupE);
+            else if (shared) deltaE += groupE;  // no member with light of its own to aim at
             return false;
         });
+        if (count > 0) trace();
         into[j] += deltaE;
         flux += deltaE * rec.area;
         reached |= deltaE != V(0.0);  // deliveries of both signs may cancel in `flux`
