@@ -1,6 +1,7 @@
 #include <radiosity/direct_light.h>
 
 #include <core/check.h>
+#include <core/ray_batch.h>
 #include <radiosity/form_factor.h>
 #include <scene/polygon.h>
 
@@ -305,18 +306,7 @@ double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const
     const double d2 = glm::dot(light.centre - x, light.centre - x);
     const double rays = d2 > near * near ? samples * near * near / d2 : samples;
     double weightSum = 0, visibleSum = 0;
-    // The samples' rays are traced together, kBatch at a time (visibleFromSurfaceMany).
-    constexpr size_t kBatch = 16;
-    Vec3 points[kBatch];
-    double weights[kBatch];
-    size_t pending = 0;
-    auto trace = [&] {
-        bool visible[kBatch];
-        vis.visibleFromSurfaceMany(x, n, points, pending, visible);
-        for (size_t k = 0; k < pending; ++k)
-            if (visible[k]) visibleSum += weights[k];
-        pending = 0;
-    };
+    RayBatch<double> shadowRays(vis, x, n, visibleSum);  // the samples' rays, traced together
     auto sample = [&](const std::array<Vec3, 3>& tri, double u1, double u2) {
         // Uniform point on a triangle (square-root warp).
         const double su = std::sqrt(u1);
@@ -328,8 +318,7 @@ double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const
         const double w = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(light.normal, d)) / (r2 * r2);
         if (w <= 0) return;
         weightSum += w;
-        points[pending] = y, weights[pending] = w;
-        if (++pending == kBatch) trace();
+        shadowRays.add(y, w);
     };
     if (rays < static_cast<double>(light.triangles.size())) {
         // Fewer rays than triangles (a far light): stratified over the whole outline by area.
@@ -353,7 +342,7 @@ double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const
                 }
         }
     }
-    if (pending > 0) trace();
+    shadowRays.flush();
     return weightSum > 0 ? visibleSum / weightSum : 1.0;
 }
 

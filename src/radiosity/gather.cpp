@@ -1,6 +1,7 @@
 #include <radiosity/gather.h>
 #include <radiosity/patch_reflectance.h>
 
+#include <core/ray_batch.h>
 #include <radiosity/form_factor.h>
 #include <radiosity/patch_transfer.h>
 #include <radiosity/visibility_share.h>
@@ -27,8 +28,6 @@ constexpr double kSplitRatio = 1.0;
 constexpr double kWeakSourceShare = 1e-3;
 /// A cluster farther than this many of its diameters shares its visibility rays.
 constexpr double kClusterVisibilityDiameters = 2.0;
-/// A gather's rays to one cluster's patches traced together (one Embree packet).
-constexpr size_t kRayBatch = 8;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
 constexpr int kRefineDepth = 6;
 /// Near patches holding at least 1/kRefineShares of the near field's ρ F are refined to
@@ -422,18 +421,8 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             return real ? m_mesh.patches[j].centroid : image->point(m_mesh.patches[j].centroid);
         };
         auto visiblePatch = [&](uint32_t j) { return vis.visibleFromSurface(x, n, rayTarget(j)); };
-        // The rays to patches of a cluster that does not share them, traced together,
-        // kRayBatch at a time (visibleFromSurfaceMany), with the light each lets through.
-        Vec3 targets[kRayBatch];
-        Rgb unblocked[kRayBatch];
-        size_t pending = 0;
-        auto trace = [&] {
-            bool visible[kRayBatch];
-            vis.visibleFromSurfaceMany(x, n, targets, pending, visible);
-            for (size_t t = 0; t < pending; ++t)
-                if (visible[t]) sum += unblocked[t];
-            pending = 0;
-        };
+        // The rays to patches of a cluster that does not share them, traced together.
+        RayBatch<Rgb> rays(vis, x, n, sum);
         // Patch j's contribution e (lx), seen along the ray to its centroid (in a far
         // cluster, as the whole cluster is).
         auto add = [&](const Rgb& e, uint32_t j) {
@@ -441,8 +430,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 sharedSum += e, sharedVisibility.addPatch(luminance(e), j);
                 return;
             }
-            targets[pending] = rayTarget(j), unblocked[pending] = e;
-            if (++pending == kRayBatch) trace();
+            rays.add(rayTarget(j), e);
         };
         // The first near patch at or after tree position k.
         auto nearFrom = [&](uint32_t k) {
@@ -511,7 +499,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
         });
-        if (pending > 0) trace();
+        rays.flush();
         if (shared && sharedSum != Rgb(0.0))
             sum += sharedSum * sharedVisibility.share(visiblePatch, raysFor(sharedSum), offset(kCluster));
         return sum;

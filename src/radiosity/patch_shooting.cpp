@@ -2,6 +2,7 @@
 // image) and what it sends patch→patch: the near field of a shot (see shooting_core.h).
 #include <radiosity/shooting_core.h>
 
+#include <core/ray_batch.h>
 #include <radiosity/form_factor.h>
 #include <radiosity/patch_transfer.h>
 
@@ -11,8 +12,6 @@ namespace {
 /// Patch→patch: a receiver this many member-group diameters away shares one visibility
 /// ray for the whole group (as the final gather does for clusters).
 constexpr double kSharedRayDiameters = 2.0;
-/// A receiver patch's rays traced together (one Embree packet).
-constexpr size_t kRayBatch = 8;
 }  // namespace
 
 template <class V>
@@ -41,22 +40,8 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
         const Patch& rec = m_mesh.patches[j];
         V deltaE(0.0);
         // Every visibility ray of this receiver patch leaves from its centroid: they are
-        // collected with the light each lets through and traced together, kRayBatch at a
-        // time (visibleFromSurfaceMany).
-        Vec3 targets[kRayBatch];
-        V unblocked[kRayBatch];
-        size_t count = 0;
-        auto trace = [&] {
-            bool visible[kRayBatch];
-            s.vis->visibleFromSurfaceMany(rec.centroid, rec.normal, targets, count, visible);
-            for (size_t t = 0; t < count; ++t)
-                if (visible[t]) deltaE += unblocked[t];
-            count = 0;
-        };
-        auto addIfVisible = [&](const Vec3& target, const V& e) {
-            targets[count] = target, unblocked[count] = e;
-            if (++count == kRayBatch) trace();
-        };
+        // collected with the light each lets through and traced together.
+        RayBatch<V> rays(*s.vis, rec.centroid, rec.normal, deltaE);
         // Depth first through the shooter's member tree: a node far enough sends as one
         // source with one visibility ray (toward its brightest member); a leaf (a member
         // group) otherwise member by member.
@@ -68,7 +53,7 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                     ++terms;
                     if (s.image && !s.image->mayPass(f.at, 0.5 * f.reach, rec.centroid, 0)) return false;
                     const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
-                    if (e != V(0.0)) addIfVisible(from.mesh().patches[C.patches[f.brightest]].centroid, e);
+                    if (e != V(0.0)) rays.add(from.mesh().patches[C.patches[f.brightest]].centroid, e);
                     return false;
                 }
             }
@@ -96,17 +81,17 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                 if (f <= 0) continue;
                 const V e = amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
                 if (!shared) {
-                    addIfVisible(src.centroid, e);
+                    rays.add(src.centroid, e);
                     continue;
                 }
                 groupE += e;
                 if (std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
             }
-            if (shared && strongestSource) addIfVisible(strongestSource->centroid, groupE);
+            if (shared && strongestSource) rays.add(strongestSource->centroid, groupE);
             else if (shared) deltaE += groupE;  // no member with light of its own to aim at
             return false;
         });
-        if (count > 0) trace();
+        rays.flush();
         into[j] += deltaE;
         flux += deltaE * rec.area;
         reached |= deltaE != V(0.0);  // deliveries of both signs may cancel in `flux`
