@@ -19,11 +19,4 @@ double patchFormFactor(const std::array<Vec3, 3>& corners, const Patch& source, 
     return formFactorPointApprox(x, n, source.centroid, source.normal, source.area);
 }
 
-double visiblePatchFormFactor(const PatchMesh& mesh, const Patch& source, const Vec3& x, const Vec3& n,
-                              double analyticDistance, const Visibility& vis) {
-    double f = patchFormFactor(mesh, source, x, n, analyticDistance);
-    if (f <= 0) return 0.0;
-    return vis.visibleFromSurface(x, n, source.centroid) ? f : 0.0;
-}
-
 }  // namespace rayrad::radiosity

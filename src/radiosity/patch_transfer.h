@@ -1,7 +1,7 @@
 // The patch→patch light transfer used by shooting and by the sensor gather.
 #pragma once
 
-#include <core/visibility.h>
+#include <array>
 #include <radiosity/patch_mesh.h>
 
 namespace rayrad::radiosity {
@@ -15,9 +15,5 @@ double patchFormFactor(const PatchMesh& mesh, const Patch& source, const Vec3& x
 /// The same for a source given by its corners (a patch as a mirror image shows it).
 double patchFormFactor(const std::array<Vec3, 3>& corners, const Patch& source, const Vec3& x, const Vec3& n,
                        double analyticDistance);
-
-/// The same, multiplied by the visibility between x and the source centroid.
-double visiblePatchFormFactor(const PatchMesh& mesh, const Patch& source, const Vec3& x, const Vec3& n,
-                              double analyticDistance, const Visibility& vis);
 
 }  // namespace rayrad::radiosity
