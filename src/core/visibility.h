@@ -22,8 +22,9 @@ class Visibility {
     /// light behind the wall leaked in.) x should lie inside its own patch, not on an edge.
     virtual bool visibleFromSurface(const Vec3& x, const Vec3& /*n*/, const Vec3& to) const { return visible(x, to); }
     /// visibleFromSurface(x, n, to[i]) into visible[i] for i < count: the same answers,
-    /// but an implementation may trace them together (Embree: packets of eight; rays from
-    /// one point toward a compact group of targets are coherent).
+    /// but an implementation may trace them together (Embree: packets of four or eight;
+    /// rays from one point toward a compact group of targets are coherent). RayBatch
+    /// (core/ray_batch.h) collects them.
     virtual void visibleFromSurfaceMany(const Vec3& x, const Vec3& n, const Vec3* to, size_t count, bool* visible) const {
         for (size_t i = 0; i < count; ++i) visible[i] = visibleFromSurface(x, n, to[i]);
     }

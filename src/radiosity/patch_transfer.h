@@ -1,8 +1,9 @@
 // The patch→patch light transfer used by shooting and by the sensor gather.
 #pragma once
 
-#include <array>
 #include <radiosity/patch_mesh.h>
+
+#include <array>
 
 namespace rayrad::radiosity {
 

@@ -232,9 +232,7 @@ bool occludedSegment(RTCScene scene, const ShadowSegment& s) {
     rtcOccluded1(scene, &context, &ray);
     return ray.tfar < 0;  // an occluder sets tfar to -inf
 }
-}  // namespace
 
-namespace {
 /// Up to W shadow segments (W = 4 or 8) as one Embree packet: visible[i] for segments[i].
 template <int W, class RayW>
 void occludedPacket(RTCScene scene, RTCIntersectContext& context, const ShadowSegment* segments, size_t count,
