@@ -198,7 +198,7 @@ std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, con
     const AreaLight& light = m_imageAreaLights[i][k];
     if (glm::dot(light.normal, x - light.centre) <= 0) return std::nullopt;  // behind the emitting side
     if (!m_convexMirrors) return light;
-    if (!m_images[i].mayPass(light.centre, light.radius, x, 0)) return std::nullopt;  // cheaper than clipping
+    if (!m_images[i].mayPassToPoint(light.centre, light.radius, x)) return std::nullopt;  // cheaper than clipping
     auto part = clipToApertures(m_images[i], light.vertices, x);
     if (part.empty()) return std::nullopt;
     return makeAreaLight(std::move(part), light.normal, light.luminance);

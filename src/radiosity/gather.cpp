@@ -140,7 +140,10 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
     }
     m_mirrorViews = mirrorViewsFor(scene, vis);
     m_sourceKeys.push_back(0);
-    for (const auto& view : m_mirrorViews) m_sourceKeys.push_back(imageKey(view->image.chain));
+    for (const auto& view : m_mirrorViews) {
+        m_sourceKeys.push_back(imageKey(view->image.chain));
+        m_imageSends.push_back(clustersFacing(scene.mirrors[view->image.chain.front()], mesh, clustering));
+    }
     m_regions = voxelRegions(clustering);
 }
 
@@ -390,12 +393,14 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         sources.push_back(static_cast<uint32_t>(i + 1));
         for (size_t r = 0; r < regions; ++r) {
             const VoxelRegions::Region& region = m_regions.regions[r];
-            regionOpen[i * regions + r] = image.mayPass(image.point(region.centre), region.radius, x, 0);
+            regionOpen[i * regions + r] = image.mayPassToPoint(image.point(region.centre), region.radius, x);
         }
     }
     // Cluster c of source s takes part unless s is an image whose chain no light passes
-    // from c's voxel to x.
-    auto open = [&](size_t s, size_t c) { return s == 0 || regionOpen[(s - 1) * regions + m_regions.regionOf[c]]; };
+    // from c's voxel to x, or whose first mirror no member of c faces.
+    auto open = [&](size_t s, size_t c) {
+        return s == 0 || (regionOpen[(s - 1) * regions + m_regions.regionOf[c]] && m_imageSends[s - 1][c]);
+    };
     auto contribution = [&](size_t s, size_t c) {
         const bool real = s == 0;
         const MirrorImage* image = real ? nullptr : &m_mirrorViews[s - 1]->image;
@@ -408,7 +413,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         const auto nearFirst = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->begin) : near.end();
         const auto nearLast = hasNear ? near.begin() + static_cast<std::ptrdiff_t>(nearOf->end) : near.end();
         const Vec3 centroid = real ? C.centroid : image->point(C.centroid);
-        if (!real && !image->mayPass(centroid, 0.5 * C.diameter, x, 0)) return Rgb(0.0);
+        if (!real && !image->mayPassToPoint(centroid, 0.5 * C.diameter, x)) return Rgb(0.0);
         const double d2 = glm::dot(centroid - x, centroid - x);
         const double far = kClusterVisibilityDiameters * C.diameter;
         const bool shared = m_options.sharedRays && C.patches.size() > 1 && d2 > far * far;

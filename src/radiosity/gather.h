@@ -218,6 +218,9 @@ class Gatherer {
     std::vector<FarSource> m_rootFar;                ///< per cluster, its root's (m_far[c][0]), contiguous
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
+    /// Per image i, per cluster: some member faces the chain's first mirror (clustersFacing);
+    /// the others send nothing into the image.
+    std::vector<std::vector<char>> m_imageSends;
     std::vector<uint64_t> m_sourceKeys;  ///< per source s (0: the scene, i + 1: image i), for visibilityOffset
     VoxelRegions m_regions;  ///< a gather through a mirror skips the voxels no light passes from
 };

@@ -275,6 +275,40 @@ bool MirrorImage::mayPass(const Vec3& imageCentre, double imageRadius, const Vec
     return true;
 }
 
+bool MirrorImage::mayPassToPoint(const Vec3& imageCentre, double imageRadius, const Vec3& receiver) const {
+    constexpr double kMargin = 1e-9;  // m, rounding's margin
+    const Vec3 axis = imageCentre - receiver;
+    const double length = glm::length(axis);
+    if (length <= imageRadius + kMargin) return true;  // x inside the ball
+    const Vec3 unit = axis / length;
+    const double sinA = imageRadius / length, cosA = std::sqrt(1 - sinA * sinA);
+    for (const Aperture& a : apertures) {
+        // Against the aperture's bounding ball first: a point of the cone at a distance u
+        // along the axis is within min(u tan α, R) of it.
+        const Vec3 w = a.centre - receiver;
+        const double u = glm::dot(w, unit);
+        if (u + a.radius < 0 || u - a.radius > length + imageRadius) return false;
+        const double off = std::sqrt(std::max(0.0, glm::dot(w, w) - u * u));  // from the axis
+        const double spread = std::min((u + a.radius) * sinA / cosA, imageRadius);
+        if (off > a.radius + spread + kMargin) return false;
+    }
+    for (const Aperture& a : apertures) {
+        const double dx = glm::dot(a.normal, receiver - a.centre), dc = glm::dot(a.normal, imageCentre - a.centre);
+        if ((dx < 0) == (dc < 0) && std::abs(dc) > imageRadius + kMargin) return false;  // the ball on x's side
+        if (a.outward.empty() || (dx < 0) == (dc < 0)) continue;  // the rays decide
+        const double sinT = std::abs(dx - dc) / length;  // the axis's angle θ with the plane
+        const double sinTA = sinT * cosA - std::sqrt(std::max(0.0, 1 - sinT * sinT)) * sinA;  // sin(θ − α)
+        if (!(sinTA > 0)) continue;  // the cone grazes the plane: its section is unbounded
+        const double s = length * dx / (dx - dc);  // m, from x to the crossing
+        const Vec3 crossing = receiver + s * unit;
+        double outside = -std::numeric_limits<double>::infinity();  // ≤ the crossing's distance to the outline
+        for (size_t i = 0; i < a.outward.size(); ++i)
+            outside = std::max(outside, glm::dot(a.outward[i], crossing - a.polygon[i]));
+        if (outside > s * sinA / sinTA + kMargin) return false;
+    }
+    return true;
+}
+
 bool MirrorPath::trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving, const Vec3* receiverNormal) const {
     thread_local std::vector<Vec3> hits;
     if (!throughApertures(m_mirrors, m_image, imagePoint, receiver, &hits)) return false;
@@ -314,6 +348,16 @@ std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scen
         views.push_back(std::move(view));
     }
     return views;
+}
+
+std::vector<char> clustersFacing(const scene::Mirror& mirror, const PatchMesh& mesh, const Clustering& clustering) {
+    std::vector<char> facing;
+    facing.reserve(clustering.clusters.size());
+    for (const Cluster& C : clustering.clusters)
+        facing.push_back(std::any_of(C.patches.begin(), C.patches.end(), [&](uint32_t i) {
+            return mirror.facedBy(mesh.patches[i].centroid, mesh.patches[i].normal);
+        }));
+    return facing;
 }
 
 }  // namespace rayrad::radiosity

@@ -50,6 +50,13 @@ struct MirrorImage {
     /// centres, so that distance to each aperture decides. Cheap: the chain's length
     /// times its polygons' edges.
     bool mayPass(const Vec3& imageCentre, double imageRadius, const Vec3& receiver, double receiverRadius) const;
+    /// The same for a receiver point x, tighter: the segments from x to the ball (centre c,
+    /// radius R) fill the cone from x of half-angle α, sin α = R / |c − x|, so where the
+    /// axis crosses an aperture's plane at X, at a distance s from x and an angle θ with
+    /// the plane, every one of them crosses within s sin α / sin(θ − α) of X (the far end
+    /// of the cone's section) — a mirror close to x lets through only what lines up with
+    /// it. A ball wholly on x's side of an aperture's plane gets no segment across it.
+    bool mayPassToPoint(const Vec3& imageCentre, double imageRadius, const Vec3& receiver) const;
 };
 
 /// How far images of images go.
@@ -125,6 +132,12 @@ struct MirrorView {
 /// `truncated` as for enumerateMirrorImages().
 std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const Visibility& vis,
                                                         bool* truncated = nullptr);
+
+/// Per cluster, whether some member faces `mirror` (its centroid in front of the mirror's
+/// plane, its front turned toward the polygon: scene::Mirror::facedBy). A cluster none of
+/// whose members face a chain's first mirror sends no light into that image; one none of
+/// whose members face its last mirror receives none from it.
+std::vector<char> clustersFacing(const scene::Mirror& mirror, const PatchMesh& mesh, const Clustering& clustering);
 
 /// Visibility through a mirror chain, as an adaptor of the scene's: `visible(a, b)` is
 /// true when one end is an image point (behind the last mirror) and the other a real

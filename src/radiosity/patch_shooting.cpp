@@ -51,7 +51,7 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
                 const double limit = m_options.shootFarDiameters * f.reach;
                 if (node.size() > 1 && !f.mixed && glm::dot(f.at - rec.centroid, f.at - rec.centroid) > limit * limit) {
                     ++terms;
-                    if (s.image && !s.image->mayPass(f.at, 0.5 * f.reach, rec.centroid, 0)) return false;
+                    if (s.image && !s.image->mayPassToPoint(f.at, 0.5 * f.reach, rec.centroid)) return false;
                     const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
                     if (e != V(0.0)) rays.add(from.mesh().patches[C.patches[f.brightest]].centroid, e);
                     return false;
@@ -62,7 +62,7 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
             // whole group through one visibility ray, toward the member that sends it the
             // most; nearer, each member has its own.
             const Vec3 groupAt = s.image ? s.image->point(node.centroid) : node.centroid;
-            if (s.image && !s.image->mayPass(groupAt, 0.5 * node.diameter, rec.centroid, 0)) return false;  // no light through
+            if (s.image && !s.image->mayPassToPoint(groupAt, 0.5 * node.diameter, rec.centroid)) return false;  // no light through
             const Vec3 toGroup = groupAt - rec.centroid;
             const double far = kSharedRayDiameters * node.diameter;
             const bool shared = node.size() > 1 && glm::dot(toGroup, toGroup) > far * far;

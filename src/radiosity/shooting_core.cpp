@@ -55,19 +55,10 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     if (m_options.mirrorImages)
         for (const auto& m : scene.mirrors) m_mirrorBacks.emplace_back(m.polygon.rbegin(), m.polygon.rend());
     for (const auto& view : m_mirrorViews) {
-        Source s{view->path.get(), fromRgb<V>(view->image.weight), &view->image, {}, {}};
-        const scene::Mirror& first = scene.mirrors[view->image.chain.front()];
-        const scene::Mirror& last = scene.mirrors[view->image.chain.back()];
-        for (const Cluster& C : clustering.clusters) {
-            bool sends = false, receives = false;
-            for (uint32_t i : C.patches) {  // a member facing away from the chain's ends takes no part
-                sends |= first.facedBy(mesh.patches[i].centroid, mesh.patches[i].normal);
-                receives |= last.facedBy(mesh.patches[i].centroid, mesh.patches[i].normal);
-            }
-            s.sends.push_back(sends);
-            s.receives.push_back(receives);
-        }
-        m_sources.push_back(std::move(s));
+        // A cluster whose members all face away from the chain's ends takes no part.
+        m_sources.push_back({view->path.get(), fromRgb<V>(view->image.weight), &view->image,
+                             clustersFacing(scene.mirrors[view->image.chain.front()], mesh, clustering),
+                             clustersFacing(scene.mirrors[view->image.chain.back()], mesh, clustering)});
     }
 }
 

@@ -146,6 +146,52 @@ TEST_CASE("MirrorImage::mayPass never rejects two balls between which light pass
     CHECK(rejected > 100);
 }
 
+TEST_CASE("MirrorImage::mayPassToPoint never rejects a ball that a receiver point sees through the chain", "[mirrors]") {
+    // The 90° corner's chains, and a thin strip (a mirror's bevel, 5 cm wide) with
+    // receivers close above it, where the cone from the point culls what the segment's
+    // distance cannot. Wherever a sampled point of the image ball is seen from the
+    // receiver through every aperture (throughApertures), mayPassToPoint must say so; it
+    // must also cull more than mayPass does for a point.
+    scene::Mirror strip;
+    strip.polygon = {{0, 0, 0}, {2, 0, 0}, {2, 0.05, 0}, {0, 0.05, 0}};
+    strip.normal = {0, 0, 1};
+    strip.specular = Rgb(0.9);
+    Random rng(13);
+    auto inBall = [&](const Vec3& c, double r) {
+        Vec3 d;
+        do d = Vec3(rng.nextDouble(), rng.nextDouble(), rng.nextDouble()) * 2.0 - 1.0;
+        while (glm::dot(d, d) > 1);
+        return c + r * d;
+    };
+    int passing = 0, rejected = 0, rejectedBySegment = 0;
+    for (const std::vector<scene::Mirror>& mirrors : {mirrorCorner(), std::vector<scene::Mirror>{strip}}) {
+        const bool thin = mirrors.size() == 1;
+        for (const auto& image : radiosity::enumerateMirrorImages(mirrors, {8, 1e-3})) {
+            for (int trial = 0; trial < 600; ++trial) {
+                const Vec3 source(3 * rng.nextDouble() - 0.5, 2 * rng.nextDouble() - (thin ? 1 : 0), 2 * rng.nextDouble());
+                const Vec3 receiver(3 * rng.nextDouble() - 0.5, 2 * rng.nextDouble() - (thin ? 1 : 0),
+                                    (thin ? 0.3 : 2) * rng.nextDouble());
+                const double r = 0.5 * rng.nextDouble();
+                const Vec3 imageCentre = image.point(source);
+                bool sees = false;
+                for (int k = 0; k < 400 && !sees; ++k)
+                    sees = radiosity::throughApertures(mirrors, image, inBall(imageCentre, r), receiver);
+                const bool may = image.mayPassToPoint(imageCentre, r, receiver);
+                if (sees) {
+                    INFO("chain length " << image.chain.size() << " image ball " << toString(imageCentre) << " r " << r
+                                         << " receiver " << toString(receiver));
+                    CHECK(may);
+                    ++passing;
+                }
+                rejected += !may;
+                rejectedBySegment += !image.mayPass(imageCentre, r, receiver, 0);
+            }
+        }
+    }
+    CHECK(passing > 100);
+    CHECK(rejected > rejectedBySegment);
+}
+
 TEST_CASE("Mirror::facedBy never rejects a surface point that light reaches through the chain", "[mirrors]") {
     // The 90° corner's chain: random surface points (position, unit normal) in front of
     // the wall and random points of the images; wherever the straight line from the
