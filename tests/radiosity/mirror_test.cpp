@@ -85,6 +85,13 @@ std::vector<scene::Mirror> mirrorCorner() {
     floor.specular = wall.specular = Rgb(0.9);
     return {floor, wall};
 }
+/// A point drawn uniformly in the ball of radius r about c (rejection from the cube).
+Vec3 uniformInBall(Random& rng, const Vec3& c, double r) {
+    Vec3 d;
+    do d = Vec3(rng.nextDouble(), rng.nextDouble(), rng.nextDouble()) * 2.0 - 1.0;
+    while (glm::dot(d, d) > 1);
+    return c + r * d;
+}
 }  // namespace
 
 TEST_CASE("a 90-degree mirror corner: light meets each mirror at most once, so the chains end", "[mirrors]") {
@@ -114,12 +121,7 @@ TEST_CASE("MirrorImage::mayPass never rejects two balls between which light pass
     const std::vector<scene::Mirror> mirrors = mirrorCorner();
     auto images = radiosity::enumerateMirrorImages(mirrors, {8, 1e-3});
     Random rng(7);
-    auto inBall = [&](const Vec3& c, double r) {
-        Vec3 d;
-        do d = Vec3(rng.nextDouble(), rng.nextDouble(), rng.nextDouble()) * 2.0 - 1.0;
-        while (glm::dot(d, d) > 1);
-        return c + r * d;
-    };
+    auto inBall = [&](const Vec3& c, double r) { return uniformInBall(rng, c, r); };
     int passing = 0, rejected = 0;
     for (const auto& image : images) {
         for (int trial = 0; trial < 300; ++trial) {
@@ -157,12 +159,7 @@ TEST_CASE("MirrorImage::mayPassToPoint never rejects a ball that a receiver poin
     strip.normal = {0, 0, 1};
     strip.specular = Rgb(0.9);
     Random rng(13);
-    auto inBall = [&](const Vec3& c, double r) {
-        Vec3 d;
-        do d = Vec3(rng.nextDouble(), rng.nextDouble(), rng.nextDouble()) * 2.0 - 1.0;
-        while (glm::dot(d, d) > 1);
-        return c + r * d;
-    };
+    auto inBall = [&](const Vec3& c, double r) { return uniformInBall(rng, c, r); };
     int passing = 0, rejected = 0, rejectedBySegment = 0;
     for (const std::vector<scene::Mirror>& mirrors : {mirrorCorner(), std::vector<scene::Mirror>{strip}}) {
         const bool thin = mirrors.size() == 1;
