@@ -203,4 +203,40 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
     return out;
 }
 
+std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const Clustering& clustering,
+                                                    const Visibility& spatial, double tolerance) {
+    std::vector<std::vector<uint32_t>> touching(clustering.clusters.size());
+    // Each mesh vertex once, with a cluster of a patch that uses it (a vertex shared by
+    // patches of several clusters lies on each of them: those pairs are found from it).
+    std::vector<std::vector<uint32_t>> clustersAt(mesh.vertices.size());
+    for (size_t i = 0; i < mesh.patches.size(); ++i)
+        for (uint32_t v : mesh.patches[i].v) {
+            std::vector<uint32_t>& at = clustersAt[v];
+            const uint32_t c = clustering.clusterOf[i];
+            if (std::find(at.begin(), at.end(), c) == at.end()) at.push_back(c);
+        }
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (clustersAt[v].empty()) continue;
+        const Vec3& x = mesh.vertices[v];
+        std::vector<uint32_t> near(clustersAt[v]);
+        auto visit = [&](uint32_t j) {
+            const uint32_t d = clustering.clusterOf[j];
+            if (std::find(near.begin(), near.end(), d) != near.end()) return;
+            const Patch& p = mesh.patches[j];
+            const std::vector<Vec3> corners{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
+            if (scene::segmentPolygonDistance(x, x, corners, p.normal) <= tolerance) near.push_back(d);
+        };
+        if (!spatial.patchesNear(x, tolerance, visit))
+            for (size_t j = 0; j < mesh.patches.size(); ++j) visit(static_cast<uint32_t>(j));
+        for (uint32_t a : near)
+            for (uint32_t b : near)
+                if (a != b) pairs.emplace_back(a, b);
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (const auto& [a, b] : pairs) touching[a].push_back(b);
+    return touching;
+}
+
 }  // namespace rayrad::radiosity

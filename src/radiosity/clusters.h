@@ -64,6 +64,14 @@ struct VoxelRegions {
 };
 VoxelRegions voxelRegions(const Clustering& clustering);
 
+/// Per cluster, the other clusters it touches, sorted: a corner of one of its patches lies
+/// on a patch of the other (within `tolerance`, m) — a concave seam, a contact line. Their
+/// form factor is singular along the line where they meet, which a cluster's few sample
+/// points cannot follow, so they exchange patch→patch however weak the shot (shooting_core).
+/// `spatial` is a spatial index over the patches (Visibility::patchesNear).
+std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const Clustering& clustering,
+                                                    const Visibility& spatial, double tolerance);
+
 /// Visibility samples for a cluster sending light: four members stratified by their
 /// share of `power` (one value per member, e.g. the unshot flux ΔL_i A_i), so the rays
 /// leave from where the light is. A cluster on a wall partly hidden behind a mirror

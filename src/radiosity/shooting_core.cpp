@@ -50,6 +50,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     m_trees.reserve(clustering.clusters.size());
     for (const Cluster& C : clustering.clusters) m_trees.push_back(memberTree(mesh, C, kGroupSize));
     m_regions = voxelRegions(clustering);
+    if (clustering.enabled) m_touching = touchingClusters(mesh, clustering, vis, 1e-6 * scene.diagonal());
     m_sources.push_back({&vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, vis, &m_mirrorChainsTruncated);
     if (m_options.mirrorImages)
@@ -299,7 +300,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
             for (size_t d = 0; d < n; ++d) {
                 if (d == c && !s.image) continue;
                 int dist = m_clustering.voxelDistance(Cs, m_clustering.clusters[d]) - imageMargin(s);
-                if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, Cs, c, d))
+                if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, Cs, c, d) &&
+                    !touches(s, c, d))
                     ring.push_back(d);
             }
             std::vector<Correction> moved(ring.size());
@@ -372,7 +374,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (s.image && !regionOpen[m_regions.regionOf[d]]) continue;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
-                if (self || m_clustering.voxelDistance(Cs, D) - imageMargin(s) < r) {
+                if (self || m_clustering.voxelDistance(Cs, D) - imageMargin(s) < r || touches(s, c, d)) {
                     isNear[d] = 1;
                     continue;
                 }

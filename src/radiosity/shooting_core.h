@@ -9,6 +9,7 @@
 #include <radiosity/mirror_images.h>
 #include <radiosity/shooting_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <chrono>
 #include <memory>
@@ -164,6 +165,11 @@ class ShootingCore final : public ShootingCoreBase {
     /// be one voxel away. Image distances count one voxel less, so touching clusters
     /// exchange patch→patch (cluster→cluster there put a point source beside the receiver).
     static int imageMargin(const Source& s) { return s.image ? 1 : 0; }
+    /// Clusters c and d of the real scene touch (touchingClusters): they exchange
+    /// patch→patch whatever r_v, and never switch in a correction ring.
+    bool touches(const Source& s, size_t c, size_t d) const {
+        return !s.image && !m_touching.empty() && std::binary_search(m_touching[c].begin(), m_touching[c].end(), d);
+    }
 
     const scene::Scene& m_scene;
     const PatchMesh& m_mesh;
@@ -184,6 +190,7 @@ class ShootingCore final : public ShootingCoreBase {
     std::vector<char> m_reached;
     /// The occupied voxels (clusters.h): a shot through a mirror tests these first.
     VoxelRegions m_regions;
+    std::vector<std::vector<uint32_t>> m_touching;  ///< per cluster, the clusters it touches (sorted)
     /// Per cluster, its member tree (member_tree.h) in real space; its leaves are the
     /// member groups that share a visibility ray; an image's tree is the same members,
     /// their centroids mirrored.
