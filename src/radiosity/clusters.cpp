@@ -216,6 +216,7 @@ std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const
             if (std::find(at.begin(), at.end(), c) == at.end()) at.push_back(c);
         }
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    std::vector<Vec3> corners(3);
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         if (clustersAt[v].empty()) continue;
         const Vec3& x = mesh.vertices[v];
@@ -224,7 +225,7 @@ std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const
             const uint32_t d = clustering.clusterOf[j];
             if (std::find(near.begin(), near.end(), d) != near.end()) return;
             const Patch& p = mesh.patches[j];
-            const std::vector<Vec3> corners{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
+            for (int k = 0; k < 3; ++k) corners[k] = mesh.corner(p, k);
             if (scene::segmentPolygonDistance(x, x, corners, p.normal) <= tolerance) near.push_back(d);
         };
         if (!spatial.patchesNear(x, tolerance, visit))
