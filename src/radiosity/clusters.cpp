@@ -228,8 +228,7 @@ std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const
             for (int k = 0; k < 3; ++k) corners[k] = mesh.corner(p, k);
             if (scene::segmentPolygonDistance(x, x, corners, p.normal) <= tolerance) near.push_back(d);
         };
-        if (!spatial.patchesNear(x, tolerance, visit))
-            for (size_t j = 0; j < mesh.patches.size(); ++j) visit(static_cast<uint32_t>(j));
+        forPatchesNear(mesh, &spatial, x, tolerance, visit);
         for (uint32_t a : near)
             for (uint32_t b : near)
                 if (a != b) pairs.emplace_back(a, b);

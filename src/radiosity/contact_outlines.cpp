@@ -105,8 +105,7 @@ void findContactOutlines(PatchMesh& mesh, const Visibility& vis, double toleranc
             const std::optional<Segment> outline = meetsPlane(other, tri[0], p.normal, tolerance);
             if (outline && crossesInterior(tri, *outline)) found[i].push_back({outline->first, outline->second, q.normal});
         };
-        if (!vis.patchesNear(p.centroid, p.diameter, visit))
-            for (size_t j = 0; j < mesh.patches.size(); ++j) visit(static_cast<uint32_t>(j));
+        forPatchesNear(mesh, &vis, p.centroid, p.diameter, visit);
     });
     mesh.outlineBegin.assign(mesh.patches.size() + 1, 0);
     mesh.outlines.clear();

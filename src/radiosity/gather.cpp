@@ -40,16 +40,6 @@ constexpr double kLeastFarDiameters = 2.0;
 constexpr size_t kFarLeafSize = 8;
 }  // namespace
 
-namespace {
-/// Calls visit(i) for the patches i that may lie within `radius` of x: those the spatial
-/// index finds, or all of them.
-void forPatchesNear(const PatchMesh& mesh, const Visibility* spatial, const Vec3& x, double radius,
-                    const std::function<void(uint32_t)>& visit) {
-    if (spatial && spatial->patchesNear(x, radius, visit)) return;
-    for (size_t i = 0; i < mesh.patches.size(); ++i) visit(static_cast<uint32_t>(i));
-}
-}  // namespace
-
 std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance,
                                          const Visibility* spatial) {
     std::optional<MeshLocation> best;

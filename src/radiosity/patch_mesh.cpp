@@ -44,4 +44,10 @@ std::string toString(const Patch& p) {
                        p.area, rayrad::toString(p.normal), p.material);
 }
 
+void forPatchesNear(const PatchMesh& mesh, const Visibility* spatial, const Vec3& x, double radius,
+                    const std::function<void(uint32_t)>& visit) {
+    if (spatial && spatial->patchesNear(x, radius, visit)) return;
+    for (size_t i = 0; i < mesh.patches.size(); ++i) visit(static_cast<uint32_t>(i));
+}
+
 }  // namespace rayrad::radiosity

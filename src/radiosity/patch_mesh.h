@@ -2,8 +2,10 @@
 #pragma once
 
 #include <core/math.h>
+#include <core/visibility.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -90,5 +92,11 @@ void computeGeometry(const PatchMesh& mesh, Patch& p);
 void computeGeometry(const std::array<Vec3, 3>& corners, Patch& p);
 
 std::string toString(const Patch& p);
+
+/// Calls visit(i) for the patches i that may lie within `radius` (m) of x: those the
+/// spatial index finds (Visibility::patchesNear, "and maybe a few more"), or every patch
+/// when there is no index (`spatial` null, or one without).
+void forPatchesNear(const PatchMesh& mesh, const Visibility* spatial, const Vec3& x, double radius,
+                    const std::function<void(uint32_t)>& visit);
 
 }  // namespace rayrad::radiosity

@@ -299,9 +299,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
             std::vector<size_t> ring;
             for (size_t d = 0; d < n; ++d) {
                 if (d == c && !s.image) continue;
-                int dist = m_clustering.voxelDistance(Cs, m_clustering.clusters[d]) - imageMargin(s);
-                if (dist >= light.radius && dist < r && !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, Cs, c, d) &&
-                    !touches(s, c, d))
+                if (inNearField(s, Cs, c, d, r) && !inNearField(s, Cs, c, d, light.radius) &&
+                    !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, Cs, c, d))
                     ring.push_back(d);
             }
             std::vector<Correction> moved(ring.size());
@@ -374,7 +373,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (s.image && !regionOpen[m_regions.regionOf[d]]) continue;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
-                if (self || m_clustering.voxelDistance(Cs, D) - imageMargin(s) < r || touches(s, c, d)) {
+                if (self || inNearField(s, Cs, c, d, r)) {
                     isNear[d] = 1;
                     continue;
                 }

@@ -165,9 +165,13 @@ class ShootingCore final : public ShootingCoreBase {
     /// be one voxel away. Image distances count one voxel less, so touching clusters
     /// exchange patch→patch (cluster→cluster there put a point source beside the receiver).
     static int imageMargin(const Source& s) { return s.image ? 1 : 0; }
-    /// Clusters c and d of the real scene touch (touchingClusters): they exchange
-    /// patch→patch whatever r_v, and never switch in a correction ring.
-    bool touches(const Source& s, size_t c, size_t d) const {
+    /// Whether receiver cluster d is in the near field (patch→patch) of shooter c (as
+    /// source s shows it, Cs) at voxel radius r: within r voxels (an image one voxel
+    /// nearer, imageMargin), or touching it in the real scene (touchingClusters: along a
+    /// seam or a contact line the form factor is singular, whatever r). A correction ring
+    /// is what is near at the new radius and was not at the old.
+    bool inNearField(const Source& s, const Cluster& Cs, size_t c, size_t d, int r) const {
+        if (m_clustering.voxelDistance(Cs, m_clustering.clusters[d]) - imageMargin(s) < r) return true;
         return !s.image && !m_touching.empty() && std::binary_search(m_touching[c].begin(), m_touching[c].end(), d);
     }
 
