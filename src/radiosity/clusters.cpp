@@ -63,14 +63,34 @@ std::string Clustering::statistics() const {
         if (c.patches.size() > 1) inMulti += c.patches.size();
         largest = std::max(largest, c.patches.size());
     }
+    const std::string shrunk = derivedVoxelSize > voxelSize
+                                   ? fmt::format(" (shrunk from {:.4g} m: clusters.max_voxel_crowding)", derivedVoxelSize)
+                                   : "";
     return fmt::format(
-        "clusters: {} of 2+ patches (mean {:.1f}, largest {}), {} patches in no cluster; voxel {:.4g} m, grid {}x{}x{}",
-        multi, multi ? double(inMulti) / multi : 0.0, largest, clusters.size() - multi, voxelSize, dims[0], dims[1],
-        dims[2]);
+        "clusters: {} of 2+ patches (mean {:.1f}, largest {}), {} patches in no cluster; voxel {:.4g} m{}, grid {}x{}x{}",
+        multi, multi ? double(inMulti) / multi : 0.0, largest, clusters.size() - multi, voxelSize, shrunk, dims[0],
+        dims[1], dims[2]);
 }
 
-double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& o) {
-    if (o.voxelSize > 0) return o.voxelSize;
+double voxelCrowding(const PatchMesh& mesh, const Vec3& origin, double edge) {
+    if (mesh.patches.empty()) return 0;
+    std::vector<std::array<int64_t, 3>> cells;
+    cells.reserve(mesh.patches.size());
+    for (const Patch& p : mesh.patches) {
+        std::array<int64_t, 3> v;
+        for (int a = 0; a < 3; ++a) v[a] = static_cast<int64_t>(std::floor((p.centroid[a] - origin[a]) / edge));
+        cells.push_back(v);
+    }
+    std::sort(cells.begin(), cells.end());
+    double sum = 0;  // Σ_v n_v²
+    for (size_t begin = 0, end = 0; begin < cells.size(); begin = end) {
+        while (end < cells.size() && cells[end] == cells[begin]) ++end;
+        sum += static_cast<double>(end - begin) * static_cast<double>(end - begin);
+    }
+    return sum / static_cast<double>(mesh.patches.size());
+}
+
+double derivedVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& o) {
     if (o.patchesPerCluster > 0 && !mesh.patches.empty()) {
         // A planar cluster in a voxel of edge s covers about s²: s² = n · mean patch area.
         return std::sqrt(o.patchesPerCluster * mesh.totalArea() / mesh.patches.size());
@@ -83,6 +103,18 @@ double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const 
             reference = std::max(reference, a);
         }
     return std::sqrt(o.sizePercent / 100.0 * reference);
+}
+
+double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& o) {
+    if (o.voxelSize > 0) return o.voxelSize;
+    double edge = derivedVoxelSize(scene, mesh, o);
+    // Shrunk while crowded (see ClusterOptions::maxVoxelCrowding), at most 16 × in edge.
+    constexpr int kMaxShrinks = 8;
+    for (int k = 0; k < kMaxShrinks && o.maxVoxelCrowding > 0 && edge > 0 &&
+                    voxelCrowding(mesh, scene.boundsMin, edge) > o.maxVoxelCrowding;
+         ++k)
+        edge /= std::sqrt(2.0);
+    return edge;
 }
 
 namespace {
@@ -137,6 +169,7 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
     out.clusterOf.assign(mesh.patches.size(), 0);
     out.origin = scene.boundsMin;
     out.voxelSize = o.enabled ? clusterVoxelSize(scene, mesh, o) : std::max(scene.diagonal(), 1e-300);
+    if (o.enabled && o.voxelSize <= 0) out.derivedVoxelSize = derivedVoxelSize(scene, mesh, o);
     CHECK(out.voxelSize > 0);
     Vec3 extent = scene.boundsMax - scene.boundsMin;
     for (int a = 0; a < 3; ++a)

@@ -37,6 +37,7 @@ struct Cluster {
 struct Clustering {
     Vec3 origin{0.0};
     double voxelSize = 0;                ///< m
+    double derivedVoxelSize = 0;         ///< m, before the crowding bound shrank it (0: given as voxel_size)
     std::array<int, 3> dims{};
     std::vector<Cluster> clusters;
     std::vector<uint32_t> clusterOf;     ///< patch → cluster
@@ -81,8 +82,14 @@ std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const
 /// to `samples` when no member has power.
 ClusterSamples powerSamples(const Cluster& c, const std::vector<double>& power);
 
-/// The voxel edge the options ask for (resolves the derived defaults).
+/// The voxel edge the options ask for (resolves the derived defaults, then shrinks a
+/// derived edge while the voxels are crowded: ClusterOptions::maxVoxelCrowding).
 double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options);
+/// The derived edge before the crowding bound: from patchesPerCluster or sizePercent.
+double derivedVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options);
+/// Σ_v n_v² / N: the patches a patch shares its voxel with, on average (itself included),
+/// for voxels of `edge` m from `origin`.
+double voxelCrowding(const PatchMesh& mesh, const Vec3& origin, double edge);
 
 /// Builds the clusters. With options.enabled false every patch is its own cluster.
 /// Deterministic: patches are visited in index order and join the first cluster of

@@ -510,6 +510,7 @@ void parseClusters(JsonObject c, SceneDesc& d) {
     o.patchesPerCluster = c.nonNegative("patches_per_cluster", o.patchesPerCluster);
     o.sizePercent = c.positive("size_percent", o.sizePercent);
     o.referenceArea = c.nonNegative("reference_area", o.referenceArea);
+    o.maxVoxelCrowding = c.nonNegative("max_voxel_crowding", o.maxVoxelCrowding);
     o.normalToleranceDeg = c.number("normal_tolerance_deg", o.normalToleranceDeg);
     if (!(o.normalToleranceDeg >= 0 && o.normalToleranceDeg <= 180))
         c.error("normal_tolerance_deg", "expected an angle from 0 to 180");

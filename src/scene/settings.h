@@ -42,6 +42,12 @@ struct ClusterOptions {
     /// area"): voxel edge = sqrt(sizePercent/100 · referenceArea).
     double sizePercent = 1.0;
     double referenceArea = 0;       ///< m²; 0 = the area of the largest input surface
+    /// A derived voxel edge (patchesPerCluster or sizePercent) shrinks by √2 at a time
+    /// while a patch shares its voxel with more than this many patches on average
+    /// (Σ_v n_v² / N, n_v the patches whose centroid lies in voxel v): patches of one
+    /// voxel always exchange patch→patch, so this is the near field's size. A dense
+    /// imported mesh (a sofa of 16 k triangles) otherwise fills a voxel. 0 = off.
+    double maxVoxelCrowding = 4000;
     double normalToleranceDeg = 20; ///< patches of one cluster have normals within this of the first (curved clusters: docs/validation.md)
     /// ΔI_max in lx: cluster→cluster transfer only where one shot of the cluster's total
     /// power would give the receiver less than this. 0 = derive: 20 % of the mean

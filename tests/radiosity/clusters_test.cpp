@@ -440,3 +440,53 @@ TEST_CASE("clusters that touch along a seam exchange patch to patch: the Cornell
     CHECK(touchingAcross > 0);  // the seam's clusters touch the other surface's
     CHECK(worst < 0.03);
 }
+
+TEST_CASE("a crowded voxel grid shrinks until a patch shares its voxel with at most max_voxel_crowding patches",
+          "[clusters]") {
+    // A 4 × 3 × 4 m room (0.5 m patches) and a finely meshed ball on the floor, whose
+    // patches crowd the few voxels that hold it.
+    const std::string json = R"({"materials": {"m": {"reflectance": 0.5}},
+        "objects": [
+          {"type": "box", "material": "m", "min": [0, 0, 0], "max": [4, 3, 4], "facing": "inward"},
+          {"type": "sphere", "material": "m", "center": [2, 0.3, 2], "radius": 0.3, "subdivisions": 40}],
+        "lights": [{"type": "point", "position": [2, 2.8, 2], "intensity_cd": 100}],
+        "radiosity": {"max_edge": 0.5},
+        "clusters": {"size_percent": 25}})";
+    auto s = parse(json);
+    auto mesh = premesh(s, s.meshing);
+    // Σ_v n_v² / N against a count of each patch's voxel mates.
+    auto bruteForce = [&](double edge) {
+        auto cell = [&](const Patch& p) {
+            std::array<int, 3> v;
+            for (int a = 0; a < 3; ++a) v[a] = static_cast<int>(std::floor((p.centroid[a] - s.boundsMin[a]) / edge));
+            return v;
+        };
+        double mates = 0;
+        for (const Patch& p : mesh.patches)
+            for (const Patch& q : mesh.patches) mates += cell(p) == cell(q);
+        return mates / static_cast<double>(mesh.patches.size());
+    };
+    const double derived = derivedVoxelSize(s, mesh, s.clusters);  // √(25 % of 16 m²) = 2 m
+    CHECK(derived == Approx(2.0));
+    CHECK(voxelCrowding(mesh, s.boundsMin, derived) == Approx(bruteForce(derived)));
+    CHECK(voxelCrowding(mesh, s.boundsMin, 0.7) == Approx(bruteForce(0.7)));
+
+    s.clusters.maxVoxelCrowding = 0.5 * voxelCrowding(mesh, s.boundsMin, derived);
+    const double shrunk = clusterVoxelSize(s, mesh, s.clusters);
+    // Whole steps of √2, the first one that is no longer crowded.
+    const double steps = std::log(derived / shrunk) / std::log(std::sqrt(2.0));
+    CHECK(steps == Approx(std::round(steps)).margin(1e-9));
+    CHECK(steps >= 1);
+    CHECK(voxelCrowding(mesh, s.boundsMin, shrunk) <= s.clusters.maxVoxelCrowding);
+    CHECK(voxelCrowding(mesh, s.boundsMin, shrunk * std::sqrt(2.0)) > s.clusters.maxVoxelCrowding);
+    const Clustering c = buildClusters(s, mesh, s.clusters);
+    CHECK(c.voxelSize == Approx(shrunk));
+    CHECK(c.statistics().find("shrunk from 2 m") != std::string::npos);
+
+    // Off, or a voxel given in metres: left as asked.
+    s.clusters.maxVoxelCrowding = 0;
+    CHECK(clusterVoxelSize(s, mesh, s.clusters) == Approx(derived));
+    s.clusters.maxVoxelCrowding = 1;
+    s.clusters.voxelSize = 1.5;
+    CHECK(clusterVoxelSize(s, mesh, s.clusters) == 1.5);
+}
