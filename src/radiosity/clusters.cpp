@@ -78,7 +78,8 @@ double voxelCrowding(const PatchMesh& mesh, const Vec3& origin, double edge) {
     cells.reserve(mesh.patches.size());
     for (const Patch& p : mesh.patches) {
         std::array<int64_t, 3> v;
-        for (int a = 0; a < 3; ++a) v[a] = static_cast<int64_t>(std::floor((p.centroid[a] - origin[a]) / edge));
+        for (int a = 0; a < 3; ++a)  // clamped: an absurd edge must not overflow the cast
+            v[a] = static_cast<int64_t>(std::clamp(std::floor((p.centroid[a] - origin[a]) / edge), -1e15, 1e15));
         cells.push_back(v);
     }
     std::sort(cells.begin(), cells.end());
