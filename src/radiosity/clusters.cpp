@@ -72,16 +72,33 @@ std::string Clustering::statistics() const {
         dims[1], dims[2]);
 }
 
-double voxelCrowding(const PatchMesh& mesh, const Vec3& origin, double edge) {
+namespace {
+/// Voxels per axis of a grid of `edge` m over the scene's bounds (at least one; bounded,
+/// so an absurd edge cannot overflow the cast before the caller rejects it).
+std::array<int, 3> gridDims(const scene::Scene& scene, double edge) {
+    const Vec3 extent = scene.boundsMax - scene.boundsMin;
+    std::array<int, 3> dims;
+    for (int a = 0; a < 3; ++a)
+        dims[a] = static_cast<int>(std::clamp(std::ceil(extent[a] / edge - 1e-9), 1.0, 1e9));
+    return dims;
+}
+
+/// The voxel holding p, clamped into the grid (a point on the bounds' far face lies in
+/// the last voxel).
+std::array<int, 3> voxelOf(const Vec3& p, const Vec3& origin, double edge, const std::array<int, 3>& dims) {
+    std::array<int, 3> v;
+    for (int a = 0; a < 3; ++a)
+        v[a] = static_cast<int>(std::clamp(std::floor((p[a] - origin[a]) / edge), 0.0, double(dims[a] - 1)));
+    return v;
+}
+}  // namespace
+
+double voxelCrowding(const PatchMesh& mesh, const scene::Scene& scene, double edge) {
     if (mesh.patches.empty()) return 0;
-    std::vector<std::array<int64_t, 3>> cells;
+    const std::array<int, 3> dims = gridDims(scene, edge);
+    std::vector<std::array<int, 3>> cells;
     cells.reserve(mesh.patches.size());
-    for (const Patch& p : mesh.patches) {
-        std::array<int64_t, 3> v;
-        for (int a = 0; a < 3; ++a)  // clamped: an absurd edge must not overflow the cast
-            v[a] = static_cast<int64_t>(std::clamp(std::floor((p.centroid[a] - origin[a]) / edge), -1e15, 1e15));
-        cells.push_back(v);
-    }
+    for (const Patch& p : mesh.patches) cells.push_back(voxelOf(p.centroid, scene.boundsMin, edge, dims));
     std::sort(cells.begin(), cells.end());
     double sum = 0;  // Σ_v n_v²
     for (size_t begin = 0, end = 0; begin < cells.size(); begin = end) {
@@ -112,7 +129,7 @@ double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const 
     // Shrunk while crowded (see ClusterOptions::maxVoxelCrowding), at most 16 × in edge.
     constexpr int kMaxShrinks = 8;
     for (int k = 0; k < kMaxShrinks && o.maxVoxelCrowding > 0 && edge > 0 &&
-                    voxelCrowding(mesh, scene.boundsMin, edge) > o.maxVoxelCrowding;
+                    voxelCrowding(mesh, scene, edge) > o.maxVoxelCrowding;
          ++k)
         edge /= std::sqrt(2.0);
     return edge;
@@ -172,15 +189,8 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
     out.voxelSize = o.enabled ? clusterVoxelSize(scene, mesh, o) : std::max(scene.diagonal(), 1e-300);
     if (o.enabled && o.voxelSize <= 0) out.derivedVoxelSize = derivedVoxelSize(scene, mesh, o);
     CHECK(out.voxelSize > 0);
-    Vec3 extent = scene.boundsMax - scene.boundsMin;
-    for (int a = 0; a < 3; ++a)
-        out.dims[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / out.voxelSize - 1e-9)));
-    auto voxelOf = [&](const Vec3& p) {
-        std::array<int, 3> v;
-        for (int a = 0; a < 3; ++a)
-            v[a] = std::clamp(static_cast<int>(std::floor((p[a] - out.origin[a]) / out.voxelSize)), 0, out.dims[a] - 1);
-        return v;
-    };
+    out.dims = gridDims(scene, out.voxelSize);
+    auto voxelOf = [&](const Vec3& p) { return radiosity::voxelOf(p, out.origin, out.voxelSize, out.dims); };
 
     if (!o.enabled) {
         out.clusters.resize(mesh.patches.size());

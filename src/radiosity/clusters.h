@@ -88,8 +88,8 @@ double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const 
 /// The derived edge before the crowding bound: from patchesPerCluster or sizePercent.
 double derivedVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const scene::ClusterOptions& options);
 /// Σ_v n_v² / N: the patches a patch shares its voxel with, on average (itself included),
-/// for voxels of `edge` m from `origin`.
-double voxelCrowding(const PatchMesh& mesh, const Vec3& origin, double edge);
+/// on the cluster grid of voxels of `edge` m over the scene's bounds.
+double voxelCrowding(const PatchMesh& mesh, const scene::Scene& scene, double edge);
 
 /// Builds the clusters. With options.enabled false every patch is its own cluster.
 /// Deterministic: patches are visited in index order and join the first cluster of

@@ -454,11 +454,15 @@ TEST_CASE("a crowded voxel grid shrinks until a patch shares its voxel with at m
         "clusters": {"size_percent": 25}})";
     auto s = parse(json);
     auto mesh = premesh(s, s.meshing);
-    // Σ_v n_v² / N against a count of each patch's voxel mates.
+    // Σ_v n_v² / N against a count of each patch's voxel mates on the cluster grid (a
+    // centroid on the room's far walls lies in the last voxel).
     auto bruteForce = [&](double edge) {
         auto cell = [&](const Patch& p) {
             std::array<int, 3> v;
-            for (int a = 0; a < 3; ++a) v[a] = static_cast<int>(std::floor((p.centroid[a] - s.boundsMin[a]) / edge));
+            for (int a = 0; a < 3; ++a) {
+                const int last = static_cast<int>(std::ceil((s.boundsMax[a] - s.boundsMin[a]) / edge - 1e-9)) - 1;
+                v[a] = std::min(last, static_cast<int>(std::floor((p.centroid[a] - s.boundsMin[a]) / edge)));
+            }
             return v;
         };
         double mates = 0;
@@ -468,17 +472,17 @@ TEST_CASE("a crowded voxel grid shrinks until a patch shares its voxel with at m
     };
     const double derived = derivedVoxelSize(s, mesh, s.clusters);  // √(25 % of 16 m²) = 2 m
     CHECK(derived == Approx(2.0));
-    CHECK(voxelCrowding(mesh, s.boundsMin, derived) == Approx(bruteForce(derived)));
-    CHECK(voxelCrowding(mesh, s.boundsMin, 0.7) == Approx(bruteForce(0.7)));
+    CHECK(voxelCrowding(mesh, s, derived) == Approx(bruteForce(derived)));
+    CHECK(voxelCrowding(mesh, s, 0.7) == Approx(bruteForce(0.7)));
 
-    s.clusters.maxVoxelCrowding = 0.5 * voxelCrowding(mesh, s.boundsMin, derived);
+    s.clusters.maxVoxelCrowding = 0.5 * voxelCrowding(mesh, s, derived);
     const double shrunk = clusterVoxelSize(s, mesh, s.clusters);
     // Whole steps of √2, the first one that is no longer crowded.
     const double steps = std::log(derived / shrunk) / std::log(std::sqrt(2.0));
     CHECK(steps == Approx(std::round(steps)).margin(1e-9));
     CHECK(steps >= 1);
-    CHECK(voxelCrowding(mesh, s.boundsMin, shrunk) <= s.clusters.maxVoxelCrowding);
-    CHECK(voxelCrowding(mesh, s.boundsMin, shrunk * std::sqrt(2.0)) > s.clusters.maxVoxelCrowding);
+    CHECK(voxelCrowding(mesh, s, shrunk) <= s.clusters.maxVoxelCrowding);
+    CHECK(voxelCrowding(mesh, s, shrunk * std::sqrt(2.0)) > s.clusters.maxVoxelCrowding);
     const Clustering c = buildClusters(s, mesh, s.clusters);
     CHECK(c.voxelSize == Approx(shrunk));
     CHECK(c.statistics().find("shrunk from 2 m") != std::string::npos);
