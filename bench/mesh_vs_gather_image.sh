@@ -7,7 +7,8 @@
 # their difference (mesh against gather) and writes a difference map. Prints each
 # render's CPU seconds (user + sys) and wall seconds.
 # Usage: bench/mesh_vs_gather_image.sh [SCENE [WIDTHxHEIGHT [MAX_EDGE [OUTDIR]]]]
-#        (default: the Cornell box, 64x64, 0.1 m, a temporary directory)
+#        (default: the Cornell box, 64x64, 0.1 m, a temporary directory;
+#        SET="--set KEY=VALUE ..." passes more settings to the solve and the renders)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rayrad=build/src/rayrad
@@ -18,7 +19,8 @@ edge=${3:-0.1}
 w=${size%x*} h=${size#*x}
 if [ -n "${4:-}" ]; then out=$4; mkdir -p "$out"; else out=$(mktemp -d); trap 'rm -rf "$out"' EXIT; fi
 total() { awk '/^total/ {printf "%s CPU-s, %s s wall", $3, $2}' "$1"; }
-set_edge=(--set "radiosity.max_edge=$edge" --set "camera.resolution=[$w,$h]" --set render.spp=1)
+read -ra extra <<< "${SET:-}"
+set_edge=(--set "radiosity.max_edge=$edge" --set "camera.resolution=[$w,$h]" --set render.spp=1 "${extra[@]}")
 "$rayrad" solve "$scene" "${set_edge[@]}" --save "$out/solution.rrs" -q > /dev/null 2> "$out/solve.err"
 echo "solve: $(total "$out/solve.err")"
 "$rayrad" render "$scene" "${set_edge[@]}" --solution "$out/solution.rrs" -o "$out/mesh.exr" -q \

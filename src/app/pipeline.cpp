@@ -235,6 +235,18 @@ void solveLighting(PipelineRun& run, const std::string& sceneFile, const Pipelin
                                                                  progress.update(f);
                                                              });
         }
+        if (run.scene.solver.seamProfileNodes > 0 && !run.edgeVertices.seamVertices.empty()) {
+            Progress progress("seam profiles", options.quiet);
+            std::mutex m;
+            // Edges as short as an input mesh's own detail are left linear, as the contacts are.
+            const double minEdge = 0.5 * radiosity::targetEdge(run.scene, run.scene.meshing);
+            run.solution.seamProfiles = radiosity::gatherSeamProfiles(
+                run.scene, run.mesh, run.clustering, run.solution, *run.embree, run.edgeVertices.seamVertices, minEdge,
+                run.scene.solver.seamProfileNodes, &run.seamProfileGathers, [&](double f) {
+                    std::lock_guard<std::mutex> lock(m);
+                    progress.update(f);
+                });
+        }
     } else {
         // Nothing reflects: the solution is complete with no indirect light at all.
         run.solution.indirect.assign(run.mesh.patches.size(), Rgb(0.0));
@@ -251,6 +263,7 @@ void loadSolution(PipelineRun& run, const PipelineOptions& options, bool wantGat
     const std::string bytes = readInputFile(options.solutionFile, "solution file", size_t(1) << 40);
     run.solution = radiosity::decodeSolution(bytes, options.solutionFile, radiosity::fingerprintOf(run.scene, run.mesh),
                                              run.mesh.patches.size(), run.mesh.vertices.size());
+    run.solution.seamProfiles.index(run.mesh);
     run.skipped.push_back("direct light and secondary pass (solution read from " + options.solutionFile + ")");
     if (wantGather) {
         run.report.begin("clusters");

@@ -72,6 +72,7 @@ struct PipelineRun {
     double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
     size_t mirrorImages = 0;        ///< image chains used by the image method
     radiosity::GatheredVertices edgeVertices;  ///< vertices whose value came from a point gather
+    size_t seamProfileGathers = 0;  ///< point gathers the seam profiles took (seam_profiles.h)
     size_t sensorGathers = 0;       ///< point gathers the sensors took (their own and every re-gather)
     bool singleChannel = false;     ///< the scene is grey: one channel was solved
     bool shadingNormals = false;    ///< mesh.cornerNormal computed (before the first ray trace)

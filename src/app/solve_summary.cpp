@@ -23,6 +23,9 @@ void printSolveSummary(const PipelineRun& run) {
                            "covered parts (a lamp just below a ceiling), {} where the reconstruction extrapolated "
                            "(a face a few patches wide)\n",
                    g.seams, g.contacts, g.rims, g.extrapolated);
+    if (!run.solution.seamProfiles.empty())
+        fmt::print(stderr, "seam profiles: {} edges from seam vertices graded toward the seam ({} point gathers)\n",
+                   run.solution.seamProfiles.edgeCount(), run.seamProfileGathers);
     if (run.sensorGathers > 0)
         fmt::print(stderr, "sensor gathers: {} for {} sensors (corner and midpoint re-gathers near edges)\n",
                    run.sensorGathers, run.sensors.size());

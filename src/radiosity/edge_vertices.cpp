@@ -186,7 +186,10 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
         std::swap(previous, current);
     }
     for (size_t k = 0; k < points.size(); ++k) solution.vertexIndirect[points[k].vertex] = previous[k];
-    return {seams, contacts, rims, points.size() - seams - contacts - rims};
+    GatheredVertices out{seams, contacts, rims, points.size() - seams - contacts - rims, {}};
+    for (size_t k = 0; k < seams; ++k) out.seamVertices.push_back(static_cast<uint32_t>(points[k].vertex));
+    std::sort(out.seamVertices.begin(), out.seamVertices.end());
+    return out;
 }
 
 }  // namespace rayrad::radiosity

@@ -8,7 +8,9 @@
 #include <radiosity/solution.h>
 #include <scene/scene.h>
 
+#include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace rayrad::radiosity {
 
@@ -18,6 +20,7 @@ struct GatheredVertices {
     size_t contacts = 0;  ///< vertices beside an outline that crosses their patches
     size_t rims = 0;      ///< vertices on the rim of a covered part (covered_patches.h)
     size_t extrapolated = 0;  ///< vertices whose reconstruction left its patches' range (extrapolated_vertices.h)
+    std::vector<uint32_t> seamVertices;  ///< the seam vertices themselves, sorted (seam_profiles.h starts from them)
 };
 
 /// Vertices on a concave seam: the vertex lies on an edge of a patch of another surface

@@ -250,7 +250,8 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, G
 }
 
 Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                         const MidpointSource* midpoints, double weight, Part part, double expected) const {
+                         const MidpointSource* midpoints, double weight, Part part, double expected,
+                         const Segment* nearAlong) const {
     // Near patches get linear luminance from corner values (refined toward x with
     // gathered midpoints when asked), the rest a patch-constant one.
     struct Near {
@@ -277,15 +278,18 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             double F;
         };
         std::vector<Candidate> candidates;
+        // Near to x, or to the segment asked for.
+        auto offset = [&](const Vec3& y) { return nearAlong ? y - closestOnSegment(y, nearAlong->a, nearAlong->b) : y - x; };
         for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
             const Cluster& C = m_clustering.clusters[c];
             // Only clusters that can hold a patch within kNearDiameters of x.
             double reach = 0.5 * C.diameter + kNearDiameters * m_clusterPatchSize[c];
-            if (glm::dot(C.centroid - x, C.centroid - x) > reach * reach) continue;
+            const Vec3 dc = offset(C.centroid);
+            if (glm::dot(dc, dc) > reach * reach) continue;
             for (uint32_t j : C.patches) {
                 const Patch& p = m_mesh.patches[j];
                 double r = kNearDiameters * p.diameter;
-                Vec3 d = p.centroid - x;
+                Vec3 d = offset(p.centroid);
                 if (glm::dot(d, d) > r * r) continue;
                 const Rgb rho = patchReflectance(m_scene, m_mesh, j);
                 if (rho == Rgb(0.0)) continue;

@@ -163,10 +163,16 @@ class Gatherer {
     /// the near patches' linear luminance alone, the only part that depends on the corner
     /// values, or everything else (far clusters, other patches, mirror images).
     /// `expected`: the indirect illuminance (lx) x is expected to receive, as indirectAt.
+    /// `nearAlong` (optional): the near patches are those near the segment [a, b] rather
+    /// than near x — the same set for every point on it (seam_profiles.h compares the near
+    /// parts of points along an edge).
     enum class Part { All, Near, AllButNear };
+    struct Segment {
+        Vec3 a, b;
+    };
     Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
                    const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All,
-                   double expected = 0) const;
+                   double expected = 0, const Segment* nearAlong = nullptr) const;
 
   private:
     /// A piece of a near patch with the luminance at its corners (cd/m², RGB).

@@ -87,8 +87,10 @@ Rgb interpolateIndirect(const PatchMesh& mesh, const RadiositySolution& solution
     const Patch& p = mesh.patches[patch];
     // Inside a patch that a contact outline crosses, only the corners on the point's side.
     const std::array<double, 3> w = sameSideWeights(mesh, patch, u, v);
-    return w[0] * solution.vertexIndirect[p.v[0]] + w[1] * solution.vertexIndirect[p.v[1]] +
-           w[2] * solution.vertexIndirect[p.v[2]];
+    const Rgb linear = w[0] * solution.vertexIndirect[p.v[0]] + w[1] * solution.vertexIndirect[p.v[1]] +
+                       w[2] * solution.vertexIndirect[p.v[2]];
+    if (solution.seamProfiles.empty()) return linear;
+    return glm::max(linear + solution.seamProfiles.deltaAt(patch, u, v), Rgb(0.0));
 }
 
 }  // namespace rayrad::radiosity

@@ -4,6 +4,7 @@
 #include <core/math.h>
 #include <radiosity/patch_mesh.h>
 #include <radiosity/patch_reflectance.h>
+#include <radiosity/seam_profiles.h>
 #include <scene/scene.h>
 
 #include <vector>
@@ -18,6 +19,9 @@ struct RadiositySolution {
     std::vector<Rgb> indirect;        ///< indirect illuminance received at each patch (centroid)
     std::vector<Rgb> unshot;          ///< ΔL, unshot luminance (may be negative after corrections)
     std::vector<Rgb> vertexIndirect;  ///< indirect at each mesh vertex (average of its triangles)
+    /// Corrections graded toward concave seams, added to the vertex interpolation (empty:
+    /// none; seam_profiles.h).
+    SeamProfiles seamProfiles;
 
     // Statistics of the solve.
     int64_t shots = 0;
@@ -49,7 +53,8 @@ struct RadiositySolution {
 void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, bool linear = false);
 
 /// Indirect at barycentric (u, v) of patch p, interpolated from the vertex values (inside a
-/// patch a contact outline crosses, from the corners on the point's side: sameSideWeights).
+/// patch a contact outline crosses, from the corners on the point's side: sameSideWeights),
+/// plus the seam profiles' correction in the band beside a concave seam.
 Rgb interpolateIndirect(const PatchMesh& mesh, const RadiositySolution& solution, size_t patch, double u, double v);
 
 }  // namespace rayrad::radiosity

@@ -15,7 +15,7 @@ namespace rayrad::radiosity {
 namespace {
 
 constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
-constexpr uint32_t kVersion = 2;  // 2: light groups' parts
+constexpr uint32_t kVersion = 3;  // 2: light groups' parts; 3: seam profiles
 constexpr uint32_t kByteOrder = 0x01020304;
 
 /// 64-bit FNV-1a over values' bytes.
@@ -89,6 +89,16 @@ class Reader {
         m_at += n * sizeof(T);
         return v;
     }
+    /// An array of however many values the file says (bounded by the file's size).
+    template <class T>
+    std::vector<T> getAnyArray(const char* what) {
+        const auto n = get<uint64_t>(what);
+        if (n > (m_end - m_at) / sizeof(T)) need(m_end - m_at + 1, what);
+        std::vector<T> v(n);
+        std::memcpy(v.data(), m_in.data() + m_at, n * sizeof(T));
+        m_at += n * sizeof(T);
+        return v;
+    }
     std::string getString(const char* what) {
         const auto n = get<uint64_t>(what);
         need(n, what);
@@ -106,6 +116,23 @@ class Reader {
     size_t m_at = 0, m_end;
     const std::string& m_path;
 };
+
+void putProfiles(Writer& w, const SeamProfiles& p) {
+    w.putArray(p.seamVertices());
+    w.putArray(p.edges());
+}
+
+/// Seam profiles as written by putProfiles, checked against the mesh's vertex count.
+SeamProfiles getProfiles(Reader& r, size_t vertexCount, const std::string& path) {
+    auto seams = r.getAnyArray<uint32_t>("the seam vertices");
+    auto edges = r.getAnyArray<SeamProfiles::Edge>("the seam profiles");
+    for (uint32_t v : seams)
+        if (v >= vertexCount) throw InputError(placeMessage(path, "", "a seam vertex beyond the mesh's (a damaged file)"));
+    for (const auto& e : edges)
+        if (e.from >= vertexCount || e.to >= vertexCount)
+            throw InputError(placeMessage(path, "", "a seam profile's edge beyond the mesh's vertices (a damaged file)"));
+    return SeamProfiles(std::move(seams), std::move(edges));
+}
 
 uint64_t checksum(const std::string& bytes, size_t n) {
     Hash h;
@@ -184,7 +211,7 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     const auto& o = scene.solver;
     s << o.stopUnshot << o.maxShots << o.maxSeconds << o.analyticDistance << o.areaLightSamples << o.gatherLevels
       << o.gatherRefineLevels << o.gatherRefineTolerance << o.gatherFarDiameters << o.shootFarDiameters << o.gatherMinWeight
-      << o.linearReconstruction << o.edgeGatherLevels << o.mirrorImages << o.mirrorDepth << o.mirrorMinWeight
+      << o.linearReconstruction << o.edgeGatherLevels << o.seamProfileNodes << o.mirrorImages << o.mirrorDepth << o.mirrorMinWeight
       << o.mirrorMinShare << o.conserveEnergy << o.overshoot << o.oneChannelWhenGrey;
     const auto& c = scene.clusters;
     s << c.enabled << c.voxelSize << c.patchesPerCluster << c.sizePercent << c.referenceArea << c.normalToleranceDeg
@@ -210,6 +237,7 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
     w.put(sol.shots), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(static_cast<uint8_t>(sol.converged));
     w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary), w.put(sol.backAbsorbedDirect);
     w.putArray(sol.backFlux);
+    putProfiles(w, sol.seamProfiles);
     // The light groups' parts (the arrays the renderer reads), with the strengths they had.
     w.put(static_cast<uint64_t>(groups.size()));
     for (const auto& g : groups) {
@@ -222,6 +250,7 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
         w.putArray(g.solution.directCorner);
         w.putArray(g.solution.indirect);
         w.putArray(g.solution.vertexIndirect);
+        putProfiles(w, g.solution.seamProfiles);
     }
     w.put(checksum(w.bytes(), w.bytes().size()));
     return std::move(w.bytes());
@@ -278,8 +307,9 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     const auto n = r.get<uint64_t>("the back fluxes");
     sol.backFlux.resize(n);
     for (auto& v : sol.backFlux) v = r.get<double>("the back fluxes");
+    sol.seamProfiles = getProfiles(r, vertexCount, path);
     const auto groupCount = r.get<uint64_t>("the light groups");
-    if (!dimmed) return sol;  // the full solve itself
+    if (!dimmed) return sol;  // the full solve itself (its seam profiles to be indexed by the caller)
     if (groupCount == 0 || groupCount != expected.groupStrengths.size())
         throw fail("the lights differ from those the solution was computed for (only dimming whole light groups can be "
                    "applied to a saved solution, and only to one saved with light groups); solve the scene again");
@@ -289,6 +319,7 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     sol.indirect.assign(patchCount, Rgb(0.0));
     sol.vertexIndirect.assign(vertexCount, Rgb(0.0));
     sol.unshot.assign(patchCount, Rgb(0.0));
+    sol.seamProfiles = SeamProfiles();
     for (uint64_t g = 0; g < groupCount; ++g) {
         const std::string name = r.getString("a light group's name");
         const double then = r.get<double>("a light group's strength");
@@ -303,6 +334,7 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
         add(sol.directCorner, r.getArray<RgbF>(3 * patchCount, "a light group's corner direct illuminance", true));
         add(sol.indirect, r.getArray<Rgb>(patchCount, "a light group's indirect illuminance"));
         add(sol.vertexIndirect, r.getArray<Rgb>(vertexCount, "a light group's vertex values"));
+        sol.seamProfiles.add(getProfiles(r, vertexCount, path), scale);
     }
     return sol;
 }

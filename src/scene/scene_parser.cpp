@@ -480,6 +480,7 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     if (!(d.solver.gatherMinWeight >= 0 && d.solver.gatherMinWeight < 1))
         r.error("gather_min_weight", "expected a number in [0, 1)");
     d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
+    d.solver.seamProfileNodes = r.integer("seam_profile_nodes", d.solver.seamProfileNodes, 0, 5);
     d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
     d.solver.conserveEnergy = r.boolean("conserve_energy").value_or(d.solver.conserveEnergy);
     d.solver.overshoot = r.boolean("overshoot").value_or(d.solver.overshoot);

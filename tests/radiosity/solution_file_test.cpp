@@ -26,6 +26,11 @@ RadiositySolution smallSolution(size_t patches, size_t vertices) {
     s.remainingUnshotFlux = 0.09;
     s.converged = true;
     s.backFlux = {0.0, 1.5};
+    // Seam profiles from vertices 0 and 1 (vertices ≥ 4 needed).
+    SeamProfiles::Edge a, b;
+    a.from = 0, a.to = 2, b.from = 1, b.to = 3;
+    for (int k = 0; k < SeamProfiles::kNodes; ++k) a.delta[k] = RgbF(float(k + 1)), b.delta[k] = RgbF(-0.5f * float(k));
+    s.seamProfiles = SeamProfiles({0, 1}, {a, b});
     return s;
 }
 
@@ -51,6 +56,13 @@ TEST_CASE("a saved solution reads back exactly, and any damage is refused", "[so
     CHECK(back.shots == 42);
     CHECK(back.converged);
     CHECK(back.backFlux == s.backFlux);
+    CHECK(back.seamProfiles.seamVertices() == s.seamProfiles.seamVertices());
+    REQUIRE(back.seamProfiles.edgeCount() == 2);
+    for (size_t e = 0; e < 2; ++e) {
+        CHECK(back.seamProfiles.edges()[e].from == s.seamProfiles.edges()[e].from);
+        CHECK(back.seamProfiles.edges()[e].to == s.seamProfiles.edges()[e].to);
+        CHECK(back.seamProfiles.edges()[e].delta == s.seamProfiles.edges()[e].delta);
+    }
     // Another scene: each part of the fingerprint is named.
     CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(9, 2, 3, 4), 5, 7), Catch::Contains("the geometry"));
     CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 9, 3, 4), 5, 7), Catch::Contains("the materials differ"));
@@ -98,6 +110,10 @@ TEST_CASE("a saved solution with light groups follows the groups' dimming", "[so
     for (size_t i = 0; i < mixed.indirect.size(); ++i)
         CHECK(mixed.indirect[i].x == Approx(0.5 * parts[0].solution.indirect[i].x + parts[1].solution.indirect[i].x));
     CHECK(mixed.directMean[2].y == Approx(1.5 * parts[0].solution.directMean[2].y));
+    // The seam profiles add alike, edge by edge: (0.5 + 1) times each part's.
+    REQUIRE(mixed.seamProfiles.edgeCount() == 2);
+    CHECK(mixed.seamProfiles.edges()[0].delta[2].x == Approx(1.5 * 3.0));
+    CHECK(mixed.seamProfiles.edges()[1].delta[4].z == Approx(1.5 * -2.0));
     // Another group's name: refused.
     dimmed.groupStrengths[1].first = "window";
     CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", dimmed, 5, 7), Catch::Contains("light groups are not the scene's"));
