@@ -165,6 +165,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
     // the first round's nodes.
     using Part = Gatherer::Part;
     std::vector<int> nodes(candidates.size(), 0);
+    std::vector<char> small(candidates.size(), 0);  // the first node below the tolerance
     SeamProfiles profiles;
     for (int round = 0; round < 2; ++round) {
         const SeamProfiles& before = profiles;
@@ -189,6 +190,13 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
                 return gatherer.gatherWith(nudgeInside(mesh, e.patch, y, nudge), n, &corners, /*parallel=*/false,
                                            round > 0 ? &display : nullptr, 1, Part::Near, 0, &edge);
             };
+            // A profile whose first node was already below the tolerance is not worth a
+            // second round (the other wall's band changes it by a fraction of that).
+            if (round > 0 && small[c]) {
+                edges[c] = before.edges()[c];  // the same order: both sorted by (from, to)
+                ++done;
+                return;
+            }
             const Rgb nearS = nearAt(s), nearT = nearAt(t);
             SeamProfiles::Edge out;
             out.from = e.from, out.to = e.to;
@@ -200,6 +208,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
                 out.delta[k] = RgbF(delta);
                 const double shown = luminance((1 - tau) * Es + tau * Et);
                 if (round == 0 && std::abs(luminance(delta)) < kSeamProfileTolerance * std::abs(shown + luminance(delta))) {
+                    small[c] = k == 0;
                     ++k;
                     break;
                 }

@@ -78,13 +78,16 @@ class SeamProfiles {
 };
 
 /// Gathers the profiles of every edge at least `minEdge` m long that leaves one of
-/// `seamVertices` (sorted) for a vertex that is not one. The gather at a node is the
-/// seam vertices' (near patches linear from the solution's vertex values, clusters
-/// beyond a few diameters as one source); a profile stops early where the correction at a
-/// node is below kSeamProfileTolerance of the light there (the nodes below it then
-/// interpolate to 0 at the seam). `levels` nodes at most (≤ kNodes). Parallel over edges;
-/// each gather serial, so the result does not depend on the thread count. `gathers`
-/// (optional) counts the point gathers taken.
+/// `seamVertices` (sorted) for a vertex that is not one. A node's δ comes from near-field
+/// gathers alone (the patches near the edge, linear from the solution's vertex values):
+/// δ(x) = near(x) − ((1 − τ) near(s) + τ near(t)); the light from farther is linear along
+/// the edge to second order. Two rounds, the second with the first round's display values
+/// refining the near patches (the other wall's band). A profile stops early where the
+/// correction at a node is below kSeamProfileTolerance of the light there (the nodes below
+/// it then interpolate to 0 at the seam), and one whose first node is below it takes no
+/// second round. `levels` nodes at most (≤ kNodes). Parallel over edges; each gather
+/// serial, so the result does not depend on the thread count. `gathers` (optional) counts
+/// the near-field gathers taken.
 SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                 const RadiositySolution& solution, const Visibility& vis,
                                 const std::vector<uint32_t>& seamVertices, double minEdge, int levels,
