@@ -103,7 +103,7 @@ class PushPullObserver {
         if (gather) {
             m_lastGatherFraction = fraction;
             gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
-                             radiosity::GatherOptions::from(m_run.scene.solver));
+                             radiosity::GatherOptions::from(m_run.scene));
         }
         radiosity::GatherMemo memo;  // the row's sensors share their re-gathers, as a run of the sensor stage does
         for (const auto& [s, where] : m_sensors) {
@@ -186,7 +186,7 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
         if (run.clustering.clusters.empty())  // a saved solution without sensors: not built yet
             run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
         gatherer.emplace(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                         radiosity::GatherOptions::from(run.scene.solver));
+                         radiosity::GatherOptions::from(run.scene));
     }
     HdrImage image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera, run.scene.render,
                                       [&](double f) {
@@ -335,7 +335,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     if (wantGather) {
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                                     radiosity::GatherOptions::from(run.scene.solver));
+                                     radiosity::GatherOptions::from(run.scene));
         Progress progress("sensors", options.quiet);
         const auto values = radiosity::evaluateSensors(
             run.scene, run.mesh, run.solution, *run.lights, *run.embree, gatherer,

@@ -3,6 +3,7 @@
 
 #include <core/ray_batch.h>
 #include <radiosity/form_factor.h>
+#include <radiosity/mesher.h>
 #include <radiosity/patch_transfer.h>
 #include <radiosity/visibility_share.h>
 
@@ -38,6 +39,10 @@ constexpr double kRefineShares = 20;
 constexpr double kLeastFarDiameters = 2.0;
 /// Members per leaf of the far-field member trees.
 constexpr size_t kFarLeafSize = 8;
+/// The sensor gather's sliver width as a share of the premesher's edge (GatherOptions::
+/// minRefineWidth): a premeshed right triangle is 0.71 of its edge wide, so only an input
+/// mesh's own slivers are narrower.
+constexpr double kSliverEdges = 0.05;
 }  // namespace
 
 std::optional<MeshLocation> locateOnMesh(const PatchMesh& mesh, const Vec3& x, const Vec3& n, double tolerance,
@@ -101,8 +106,10 @@ Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double dist
     return len > distance ? x + toward * (distance / len) : x;
 }
 
-GatherOptions GatherOptions::from(const scene::SolverOptions& solver) {
+GatherOptions GatherOptions::from(const scene::Scene& scene) {
+    const scene::SolverOptions& solver = scene.solver;
     GatherOptions o;
+    o.minRefineWidth = kSliverEdges * targetEdge(scene, scene.meshing);
     o.levels = solver.gatherLevels;
     o.farDiameters = solver.gatherFarDiameters;
     o.refineLevels = solver.gatherRefineLevels;
@@ -319,6 +326,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const uint32_t j = e.patch;
             const Patch& p = m_mesh.patches[j];
             const Rgb rho = patchReflectance(m_scene, m_mesh, j);
+            const bool sliver = 2 * p.area < m_options.minRefineWidth * p.diameter;
             const bool detailed = e.share >= detailFrom;
             std::array<RefinePoint, 3> corners;
             for (int k = 0; k < 3; ++k) {
@@ -336,7 +344,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const double tolerance = m_options.refineTolerance *
                                      std::max(1.0, shareSum / (kRefineShares * e.share)) /
                                      (m_options.minWeight > 0 ? weight : 1.0);
-            refineNear(x, j, corners, 0, detailed ? midpoints : nullptr, e.share, tolerance, near.back().pieces);
+            refineNear(x, j, corners, 0, detailed && !sliver ? midpoints : nullptr, e.share, tolerance, near.back().pieces);
             nearClusters.back().end = near.size();
         }
         for (const NearCluster& c : nearClusters)
