@@ -239,7 +239,7 @@ void solveLighting(PipelineRun& run, const std::string& sceneFile, const Pipelin
             Progress progress("seam profiles", options.quiet);
             std::mutex m;
             // Edges as short as an input mesh's own detail are left linear, as the contacts are.
-            const double minEdge = 0.5 * radiosity::targetEdge(run.scene, run.scene.meshing);
+            const double minEdge = radiosity::kContactMinEdges * radiosity::targetEdge(run.scene, run.scene.meshing);
             run.solution.seamProfiles = radiosity::gatherSeamProfiles(
                 run.scene, run.mesh, run.clustering, run.solution, *run.embree, run.edgeVertices.seamVertices, minEdge,
                 run.scene.solver.seamProfileNodes, &run.seamProfileGathers, [&](double f) {

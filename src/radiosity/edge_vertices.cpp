@@ -22,12 +22,6 @@ namespace rayrad::radiosity {
 namespace {
 /// Clusters beyond this many of their diameters count as one source in vertex gathers.
 constexpr double kFarClusterDiameters = 3.0;
-/// Patches crossed by an outline are gathered around when at least this fraction of the
-/// premesher's edge length across: the patches it made. Smaller ones are an input mesh's
-/// own detail (a sofa's cushions pressed into its frame), their band narrower than half a
-/// patch; in the living room they are two thirds of the crossed patches (7 766 vertices
-/// in all, 2 359 with this bound). The rims of covered parts are bounded alike.
-constexpr double kContactMinEdges = 0.5;
 /// Sub-triangle refinement toward a vertex: as deep as for sensors (at 6 levels the
 /// Cornell box's floor vertices along the red wall came out 40 % low).
 constexpr int kMaxSplitDepth = 12;

@@ -14,6 +14,14 @@
 
 namespace rayrad::radiosity {
 
+/// Patches crossed by an outline are gathered around when at least this fraction of the
+/// premesher's edge length across: the patches it made. Smaller ones are an input mesh's
+/// own detail (a sofa's cushions pressed into its frame), their band narrower than half a
+/// patch; in the living room they are two thirds of the crossed patches (7 766 vertices
+/// in all, 2 359 with this bound). The rims of covered parts are bounded alike, and so are
+/// the edges that carry seam profiles (seam_profiles.h).
+constexpr double kContactMinEdges = 0.5;
+
 /// How many vertices gatherEdgeVertices gathered, by kind.
 struct GatheredVertices {
     size_t seams = 0;     ///< vertices on concave edges and corners

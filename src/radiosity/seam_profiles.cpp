@@ -172,8 +172,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
         Gatherer::MidpointSource display = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double /*share*/) {
             const Patch& p = mesh.patches[patch];
             const Vec3 w = barycentric(mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2), y);
-            const Rgb linear = w[0] * solution.vertexIndirect[p.v[0]] + w[1] * solution.vertexIndirect[p.v[1]] +
-                               w[2] * solution.vertexIndirect[p.v[2]];
+            const Rgb linear = weightedVertexIndirect(mesh, solution, patch, {w[0], w[1], w[2]});
             // Any id the refinement can hand back: this source keeps no memo.
             return Gatherer::Midpoint{(uint64_t(1) << 63) | ((std::min(a, b) << 24) ^ std::max(a, b)),
                                       glm::max(linear + before.deltaAt(patch, w[1], w[2]), Rgb(0.0))};

@@ -7,6 +7,7 @@
 #include <radiosity/seam_profiles.h>
 #include <scene/scene.h>
 
+#include <array>
 #include <vector>
 
 namespace rayrad::radiosity {
@@ -51,6 +52,10 @@ struct RadiositySolution {
 /// vertex; falls back to the average where the points do not span a plane. Covered
 /// patches (mesh.covered) count only at a vertex with no open patch around it.
 void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, bool linear = false);
+
+/// The vertex values of patch p's corners weighted by w (lx, RGB).
+Rgb weightedVertexIndirect(const PatchMesh& mesh, const RadiositySolution& solution, size_t patch,
+                           const std::array<double, 3>& w);
 
 /// Indirect at barycentric (u, v) of patch p, interpolated from the vertex values (inside a
 /// patch a contact outline crosses, from the corners on the point's side: sameSideWeights),

@@ -3,6 +3,7 @@
 // room: 57.6 → 28.2 CPU-s for one such point).
 #include <app/pipeline.h>
 #include <radiosity/gather.h>
+#include <radiosity/solution.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
@@ -57,9 +58,8 @@ TEST_CASE("sensor gather: a chamfer molding of 4 mm strips beside the point is n
                 // The display's linear value: what matters here is who is asked.
                 const Patch& p = run.mesh.patches[patch];
                 const Vec3 w = barycentric(run.mesh.corner(p, 0), run.mesh.corner(p, 1), run.mesh.corner(p, 2), y);
-                return Gatherer::Midpoint{(a << 20) ^ b, w[0] * run.solution.vertexIndirect[p.v[0]] +
-                                                             w[1] * run.solution.vertexIndirect[p.v[1]] +
-                                                             w[2] * run.solution.vertexIndirect[p.v[2]]};
+                return Gatherer::Midpoint{(a << 20) ^ b,
+                                          weightedVertexIndirect(run.mesh, run.solution, patch, {w[0], w[1], w[2]})};
             };
             value[rule] = luminance(gatherer.gatherWith(at, n, &corners, false, &midpoints));
         }
