@@ -237,6 +237,25 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
 }
 
+std::vector<uint32_t> Gatherer::nearPatches(const Segment& along) const {
+    std::vector<uint32_t> out;
+    auto offset = [&](const Vec3& y) { return y - closestOnSegment(y, along.a, along.b); };
+    for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
+        const Cluster& C = m_clustering.clusters[c];
+        // Only clusters that can hold a patch within kNearDiameters of the segment.
+        const double reach = 0.5 * C.diameter + kNearDiameters * m_clusterPatchSize[c];
+        const Vec3 dc = offset(C.centroid);
+        if (glm::dot(dc, dc) > reach * reach) continue;
+        for (uint32_t j : C.patches) {
+            const Patch& p = m_mesh.patches[j];
+            const double r = kNearDiameters * p.diameter;
+            const Vec3 d = offset(p.centroid);
+            if (glm::dot(d, d) <= r * r) out.push_back(j);
+        }
+    }
+    return out;
+}
+
 Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo,
                      double expected) const {
     ++memo.m_gathers;
@@ -258,7 +277,7 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, G
 
 Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
                          const MidpointSource* midpoints, double weight, Part part, double expected,
-                         const Segment* nearAlong) const {
+                         const std::vector<uint32_t>* nearSet) const {
     // Near patches get linear luminance from corner values (refined toward x with
     // gathered midpoints when asked), the rest a patch-constant one.
     struct Near {
@@ -285,25 +304,15 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             double F;
         };
         std::vector<Candidate> candidates;
-        // Near to x, or to the segment asked for.
-        auto offset = [&](const Vec3& y) { return nearAlong ? y - closestOnSegment(y, nearAlong->a, nearAlong->b) : y - x; };
-        for (size_t c = 0; c < m_clustering.clusters.size(); ++c) {
-            const Cluster& C = m_clustering.clusters[c];
-            // Only clusters that can hold a patch within kNearDiameters of x.
-            double reach = 0.5 * C.diameter + kNearDiameters * m_clusterPatchSize[c];
-            const Vec3 dc = offset(C.centroid);
-            if (glm::dot(dc, dc) > reach * reach) continue;
-            for (uint32_t j : C.patches) {
-                const Patch& p = m_mesh.patches[j];
-                double r = kNearDiameters * p.diameter;
-                Vec3 d = offset(p.centroid);
-                if (glm::dot(d, d) > r * r) continue;
-                const Rgb rho = patchReflectance(m_scene, m_mesh, j);
-                if (rho == Rgb(0.0)) continue;
-                const Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
-                const double F = formFactorToPolygon(x, n, v, 3, p.normal);
-                if (F > 0) candidates.push_back({static_cast<uint32_t>(c), j, std::max({rho[0], rho[1], rho[2]}) * F, F});
-            }
+        // Near to x, or the set asked for (in cluster order either way).
+        const std::vector<uint32_t> nearX = nearSet ? std::vector<uint32_t>() : nearPatches({x, x});
+        for (uint32_t j : nearSet ? *nearSet : nearX) {
+            const Patch& p = m_mesh.patches[j];
+            const Rgb rho = patchReflectance(m_scene, m_mesh, j);
+            if (rho == Rgb(0.0)) continue;
+            const Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+            const double F = formFactorToPolygon(x, n, v, 3, p.normal);
+            if (F > 0) candidates.push_back({m_clustering.clusterOf[j], j, std::max({rho[0], rho[1], rho[2]}) * F, F});
         }
         // The smallest shares whose sum stays within the floor keep the solution's corner
         // values: what their error can bring to x is bounded by the floor, whatever their number.

@@ -170,16 +170,20 @@ class Gatherer {
     /// the near patches' linear luminance alone, the only part that depends on the corner
     /// values, or everything else (far clusters, other patches, mirror images).
     /// `expected`: the indirect illuminance (lx) x is expected to receive, as indirectAt.
-    /// `nearAlong` (optional): the near patches are those near the segment [a, b] rather
-    /// than near x — the same set for every point on it (seam_profiles.h compares the near
-    /// parts of points along an edge).
+    /// `nearSet` (optional, from nearPatches): the near patches are these rather than those
+    /// near x — the same set for every point of a segment (seam_profiles.h compares the
+    /// near parts of points along an edge), found once.
     enum class Part { All, Near, AllButNear };
+    Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
+                   const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All,
+                   double expected = 0, const std::vector<uint32_t>* nearSet = nullptr) const;
+
+    /// The patches within kNearDiameters of their diameters of the segment [a, b] (a == b:
+    /// of a point), in cluster order: a gather's near patches, before the facing test.
     struct Segment {
         Vec3 a, b;
     };
-    Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                   const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All,
-                   double expected = 0, const Segment* nearAlong = nullptr) const;
+    std::vector<uint32_t> nearPatches(const Segment& along) const;
 
   private:
     /// A piece of a near patch with the luminance at its corners (cd/m², RGB).

@@ -183,11 +183,11 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
             const Vec3 s = mesh.vertices[e.from], t = mesh.vertices[e.to];
             const Rgb Es = solution.vertexIndirect[e.from], Et = solution.vertexIndirect[e.to];
             const Vec3 n = mesh.patches[e.patch].normal;
-            const Gatherer::Segment edge{s, t};
+            const std::vector<uint32_t> nearEdge = gatherer.nearPatches({s, t});
             auto nearAt = [&](const Vec3& y) {
                 ++taken;
                 return gatherer.gatherWith(nudgeInside(mesh, e.patch, y, nudge), n, &corners, /*parallel=*/false,
-                                           round > 0 ? &display : nullptr, 1, Part::Near, 0, &edge);
+                                           round > 0 ? &display : nullptr, 1, Part::Near, 0, &nearEdge);
             };
             // A profile whose first node was already below the tolerance is not worth a
             // second round (the other wall's band changes it by a fraction of that).
