@@ -16,10 +16,10 @@ namespace {
 /// analytic or second-order F: areaLightFormFactor).
 constexpr double kRankPointDiameters = 5.0;
 
-/// An area light's unshadowed illuminance at x (lx, RGB), for ranking and for the
-/// untested; `exact` says whether it is π L F with the analytic F (near) or the point
-/// approximation (far).
-Rgb unshadowedArea(const AreaLight& light, const Vec3& x, const Vec3& n, bool& exact) {
+/// An area light's unshadowed illuminance at x over its luminance (lx per cd/m²), for
+/// ranking and for the untested: π F with the analytic F (`exact`, near) or the point
+/// approximation A cosθ_x cosθ_y / r² (far).
+double unshadowedAreaFactor(const AreaLight& light, const Vec3& x, const Vec3& n, bool& exact) {
     const Vec3 d = light.centre - x;
     const double r2 = glm::dot(d, d);
     const double far = kRankPointDiameters * 2 * light.radius;
@@ -27,10 +27,10 @@ Rgb unshadowedArea(const AreaLight& light, const Vec3& x, const Vec3& n, bool& e
     if (!exact) {
         // cosθ_x cosθ_y / r² = (n·d)(−N·d) / r⁴
         const double nd = glm::dot(n, d), ld = -glm::dot(light.normal, d);
-        return nd > 0 && ld > 0 ? light.luminance * (light.area * nd * ld / (r2 * r2)) : Rgb(0.0);
+        return nd > 0 && ld > 0 ? light.area * nd * ld / (r2 * r2) : 0.0;
     }
     const double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
-    return light.luminance * (kPi * std::max(0.0, f));  // π L F
+    return kPi * std::max(0.0, f);  // π F
 }
 }  // namespace
 
@@ -39,25 +39,23 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     if (threshold <= 0) return illuminance(x, n, vis, samples, rng);
     struct Candidate {
         double potential;  ///< Y of the unshadowed illuminance, lx
-        Rgb open;          ///< the unshadowed illuminance, lx
+        double factor;     ///< an area light's unshadowed illuminance over its luminance
         uint32_t light;    ///< points first, then area lights
-        bool exact;        ///< `open` is exact (a point light, or π L F analytic)
+        bool exact;        ///< a point light, or π F analytic
     };
     thread_local std::vector<Candidate> candidates;
     candidates.clear();
     const size_t points = m_pointLights.size();
     double remaining = 0;  // Σ potential of the lights not yet tested
-    auto consider = [&](const Rgb& open, size_t k, bool exact) {
-        const double y = luminance(open);
-        if (y <= 0) return;
-        candidates.push_back({y, open, static_cast<uint32_t>(k), exact});
-        remaining += y;
-    };
-    for (size_t k = 0; k < points; ++k) consider(unshadowedFromPointLight(m_pointLights[k], x, n), k, true);
+    for (size_t k = 0; k < points; ++k) {
+        const double y = luminance(unshadowedFromPointLight(m_pointLights[k], x, n));
+        if (y > 0) candidates.push_back({y, 0.0, static_cast<uint32_t>(k), true}), remaining += y;
+    }
     for (size_t k = 0; k < m_areaLights.size(); ++k) {
         bool exact = false;
-        const Rgb open = unshadowedArea(m_areaLights[k], x, n, exact);
-        consider(open, points + k, exact);
+        const double factor = unshadowedAreaFactor(m_areaLights[k], x, n, exact);
+        const double y = luminance(m_areaLights[k].luminance) * factor;
+        if (y > 0) candidates.push_back({y, factor, static_cast<uint32_t>(points + k), exact}), remaining += y;
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return a.potential != b.potential ? a.potential > b.potential : a.light < b.light;  // deterministic
@@ -74,7 +72,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
             v = fromPointLight(m_pointLights[c.light], x, n, vis);
         } else {
             const AreaLight& light = m_areaLights[c.light - points];
-            v = c.exact ? c.open * visibleFraction(light, x, n, vis, samples, rng)
+            v = c.exact ? light.luminance * (c.factor * visibleFraction(light, x, n, vis, samples, rng))
                         : fromAreaLight(light, x, n, vis, samples, rng);
         }
         e += v;
@@ -84,7 +82,11 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     }
     // The untested: unshadowed, times the share of their potential the tested lights delivered.
     const double seen = tested > 0 ? std::min(1.0, found / tested) : 1.0;
-    for (; next < candidates.size(); ++next) e += candidates[next].open * seen;
+    for (; next < candidates.size(); ++next) {
+        const Candidate& c = candidates[next];
+        e += (c.light < points ? unshadowedFromPointLight(m_pointLights[c.light], x, n)
+                               : m_areaLights[c.light - points].luminance * c.factor) * seen;
+    }
     return e + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
 }
 
