@@ -166,6 +166,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
     using Part = Gatherer::Part;
     std::vector<int> nodes(candidates.size(), 0);
     std::vector<char> small(candidates.size(), 0);  // the first node below the tolerance
+    std::vector<std::vector<uint32_t>> nearSets(candidates.size());  // each edge's near patches, for both rounds
     SeamProfiles profiles;
     for (int round = 0; round < 2; ++round) {
         const SeamProfiles& before = profiles;
@@ -183,7 +184,8 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
             const Vec3 s = mesh.vertices[e.from], t = mesh.vertices[e.to];
             const Rgb Es = solution.vertexIndirect[e.from], Et = solution.vertexIndirect[e.to];
             const Vec3 n = mesh.patches[e.patch].normal;
-            const std::vector<uint32_t> nearEdge = gatherer.nearPatches({s, t});
+            if (round == 0) nearSets[c] = gatherer.nearPatches({s, t});
+            const std::vector<uint32_t>& nearEdge = nearSets[c];
             auto nearAt = [&](const Vec3& y) {
                 ++taken;
                 return gatherer.gatherWith(nudgeInside(mesh, e.patch, y, nudge), n, &corners, /*parallel=*/false,
@@ -217,6 +219,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
             for (int j = k; j < SeamProfiles::kNodes; ++j)
                 out.delta[j] = out.delta[k - 1] * static_cast<float>(nodeTau(j) / nodeTau(k - 1));
             edges[c] = out;
+            if (round > 0 || small[c]) std::vector<uint32_t>().swap(nearSets[c]);  // not needed again
             size_t n2 = ++done;
             if (onProgress && n2 % 16 == 0) onProgress(static_cast<double>(n2) / total);
         });
