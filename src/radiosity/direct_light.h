@@ -60,11 +60,12 @@ class DirectLight {
 
     /// The same for display (the ray tracer), with adaptive shadow testing (Ward 1991):
     /// the real lights are ranked by their unshadowed illuminance and shadow-tested in that
-    /// order until the untested ones could add less than `threshold` × what the tested ones
-    /// gave; those are added unshadowed × the tested ones' visible share. Images are always
+    /// order until the untested ones could add less than `threshold` × all that x receives
+    /// (what the tested ones gave plus `received`, lx: Y of the indirect illuminance there);
+    /// those are added unshadowed × the tested ones' visible share. Images are always
     /// tested. threshold 0: every light tested, as illuminance(). See shadow_testing.cpp.
     Rgb illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                              double threshold) const;
+                              double threshold, double received = 0) const;
 
     /// Sources: for the real scene and then each mirror image, the point lights and then
     /// the area lights: s = chain · (points + areas) + k, chain 0 the real scene.

@@ -35,7 +35,7 @@ double unshadowedAreaFactor(const AreaLight& light, const Vec3& x, const Vec3& n
 }  // namespace
 
 Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                                       double threshold) const {
+                                       double threshold, double received) const {
     if (threshold <= 0) return illuminance(x, n, vis, samples, rng);
     struct Candidate {
         double potential;  ///< Y of the unshadowed illuminance, lx
@@ -60,12 +60,14 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return a.potential != b.potential ? a.potential > b.potential : a.light < b.light;  // deterministic
     });
-    // Test the strongest first, until what is left could add less than the threshold.
+    // Test the strongest first, until what is left could add less than the threshold of
+    // all x receives: the light found, and what it receives besides (a spot under a desk,
+    // where every light is blocked, need not test them all to be within the threshold).
     Rgb e(0.0);
     double found = 0, tested = 0;  // Y of what the tested lights gave, and of their potential
     size_t next = 0;
     for (; next < candidates.size(); ++next) {
-        if (next > 0 && remaining < threshold * found) break;
+        if (next > 0 && remaining < threshold * (found + received)) break;
         const Candidate& c = candidates[next];
         Rgb v;
         if (c.light < points) {

@@ -90,13 +90,15 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     // interpolated normal, so the facets do not show.
     const Vec3 x = radiosity::shadingPoint(mesh, h.patch, h.u, h.v);
     const Vec3 n = radiosity::shadingNormal(mesh, h.patch, h.u, h.v);
-    Rgb direct = lights.illuminanceForDisplay(x, n, embree, areaLightSamples, &rng, scene.render.directThreshold);
     Rgb indirect(0.0);
     if (gather) {
         indirect = gather->gatherer.indirectAt(mesh.pointAt(p, h.u, h.v), p.normal, gather->memo);  // on its own plane
     } else if (!solution.vertexIndirect.empty()) {
         indirect = radiosity::interpolateIndirect(mesh, solution, h.patch, h.u, h.v);
     }
+    // The untested lights' error is bounded relative to all the hit receives, indirect too.
+    const Rgb direct = lights.illuminanceForDisplay(x, n, embree, areaLightSamples, &rng, scene.render.directThreshold,
+                                                    std::max(0.0, luminance(indirect)));
     return L + rho * (direct + indirect) / kPi;  // L = ρ E / π
 }
 

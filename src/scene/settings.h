@@ -151,7 +151,7 @@ struct RenderOptions {
     int sensorAreaLightSamples = 256;  ///< shadow rays per area light at a sensor
     /// Adaptive shadow testing at hits (DirectLight::illuminanceForDisplay): lights are
     /// shadow-tested strongest first until the rest could add less than this fraction of
-    /// the light found (0 = every light tested).
+    /// all the hit receives: the light found and the indirect light (0 = every light tested).
     double directThreshold = 0.02;
     int maxDepth = 8;             ///< Whitted recursion through mirrors and glass
     /// Display images average a pixel's samples after range compression (weights

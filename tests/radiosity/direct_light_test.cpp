@@ -142,4 +142,22 @@ TEST_CASE("adaptive shadow testing: the strong lights tested, the weak ones esti
     const double estimate = luminance(s.lights->illuminanceForDisplay(x, n, ceiling, 16, nullptr, 0.02));
     CHECK(std::abs(estimate / truth - 1) < 0.02);
     CHECK(estimate != truth);  // it did estimate (the test would prove nothing otherwise)
+
+    // Under a desk every light is blocked: with nothing found, each one was tested. What
+    // the point receives besides (indirect light) bounds the error too, so fewer are, and
+    // the estimate stays within the threshold of all the point receives.
+    struct CountingBlocked : BlockedAbove {
+        mutable size_t rays = 0;
+        using BlockedAbove::BlockedAbove;
+        bool visible(const Vec3& from, const Vec3& to) const override { return ++rays, BlockedAbove::visible(from, to); }
+    };
+    CountingBlocked alone(1.0), withIndirect(1.0);
+    const double dark = luminance(s.lights->illuminanceForDisplay(x, n, alone, 16, nullptr, 0.02));
+    CHECK(alone.rays == 61);
+    CHECK(dark == 0);
+    const double received = 50;  // lx of indirect light
+    const double under = luminance(s.lights->illuminanceForDisplay(x, n, withIndirect, 16, nullptr, 0.02, received));
+    CHECK(withIndirect.rays < alone.rays);
+    CHECK(withIndirect.rays > 1);  // the bright light alone does not settle it
+    CHECK(std::abs(under - 0) <= 0.02 * (0 + received));
 }
