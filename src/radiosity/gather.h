@@ -178,8 +178,9 @@ class Gatherer {
                    const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All,
                    double expected = 0, const std::vector<uint32_t>* nearSet = nullptr) const;
 
-    /// The patches within kNearDiameters of their diameters of the segment [a, b] (a == b:
-    /// of a point), in cluster order: a gather's near patches, before the facing test.
+    /// The patches whose centroid lies within two of their own diameters (kNearDiameters)
+    /// of the segment [a, b] (a == b: of a point), in cluster order: a gather's near
+    /// patches, before the facing test.
     struct Segment {
         Vec3 a, b;
     };
