@@ -31,7 +31,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <mutex>
 #include <optional>
 
 namespace rayrad::app {
@@ -178,7 +177,6 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
     ensureShadingNormals(run);
     raytrace::ImageCamera camera(cam);
     Progress progress(label, options.quiet);
-    std::mutex m;
     raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, run.solution), {}};
     // render.indirect "gather": a final gather at each hit, as at a sensor.
     std::optional<radiosity::Gatherer> gatherer;
@@ -189,10 +187,7 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
                          radiosity::GatherOptions::from(run.scene));
     }
     HdrImage image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera, run.scene.render,
-                                      [&](double f) {
-                                          std::lock_guard<std::mutex> lock(m);
-                                          progress.update(f);
-                                      },
+                                      [&](double f) { progress.update(f); },
                                       &forDisplay, options.rowBegin, options.rowEnd, gatherer ? &*gatherer : nullptr);
     return {std::move(image), std::move(forDisplay.image)};
 }
@@ -204,12 +199,8 @@ void solveLighting(PipelineRun& run, const std::string& sceneFile, const Pipelin
                                           : std::string("direct light"));
     {
         Progress progress("direct light", options.quiet);
-        std::mutex m;
         radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples,
-                                 run.solution, [&](double f) {
-                                     std::lock_guard<std::mutex> lock(m);
-                                     progress.update(f);
-                                 });
+                                 run.solution, [&](double f) { progress.update(f); });
     }
     if (auto w = backLightWarning(run.scene, run.solution, run.lights->emittedFlux())) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, *w);
@@ -227,25 +218,17 @@ void solveLighting(PipelineRun& run, const std::string& sceneFile, const Pipelin
         radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
         if (run.scene.solver.edgeGatherLevels > 0) {
             Progress progress("seam vertices", options.quiet);
-            std::mutex m;
             run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
                                                              *run.embree, run.scene.solver.edgeGatherLevels,
-                                                             [&](double f) {
-                                                                 std::lock_guard<std::mutex> lock(m);
-                                                                 progress.update(f);
-                                                             });
+                                                             [&](double f) { progress.update(f); });
         }
         if (run.scene.solver.seamProfileNodes > 0 && !run.edgeVertices.seamVertices.empty()) {
             Progress progress("seam profiles", options.quiet);
-            std::mutex m;
             // Edges as short as an input mesh's own detail are left linear, as the contacts are.
             const double minEdge = radiosity::kContactMinEdges * radiosity::targetEdge(run.scene, run.scene.meshing);
             run.solution.seamProfiles = radiosity::gatherSeamProfiles(
                 run.scene, run.mesh, run.clustering, run.solution, *run.embree, run.edgeVertices.seamVertices, minEdge,
-                run.scene.solver.seamProfileNodes, &run.seamProfileGathers, [&](double f) {
-                    std::lock_guard<std::mutex> lock(m);
-                    progress.update(f);
-                });
+                run.scene.solver.seamProfileNodes, &run.seamProfileGathers, [&](double f) { progress.update(f); });
         }
     } else {
         // Nothing reflects: the solution is complete with no indirect light at all.

@@ -15,6 +15,7 @@ Progress::~Progress() { finish(); }
 
 void Progress::update(double fraction, const std::string& detail) {
     if (!m_enabled) return;
+    std::lock_guard<std::mutex> lock(m_mutex);
     auto now = std::chrono::steady_clock::now();
     if (m_shown && now - m_last < std::chrono::milliseconds(200)) return;
     m_last = now;
@@ -25,7 +26,9 @@ void Progress::update(double fraction, const std::string& detail) {
 }
 
 void Progress::finish() {
-    if (!m_enabled || !m_shown) return;
+    if (!m_enabled) return;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (!m_shown) return;
     fmt::print(stderr, "\r\033[K");
     std::fflush(stderr);
     m_shown = false;

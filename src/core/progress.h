@@ -2,12 +2,14 @@
 #pragma once
 
 #include <chrono>
+#include <mutex>
 #include <string>
 
 namespace rayrad {
 
 /// Rewrites one status line on stderr at most a few times a second. Silent when stderr
-/// is not a terminal or when quiet, so logs and CI output stay clean.
+/// is not a terminal or when quiet, so logs and CI output stay clean. update() may be
+/// called from several threads at once (a parallel stage's workers).
 class Progress {
   public:
     explicit Progress(std::string label, bool quiet = false);
@@ -18,7 +20,8 @@ class Progress {
 
   private:
     std::string m_label;
-    bool m_enabled;
+    const bool m_enabled;
+    std::mutex m_mutex;  ///< guards the line and the fields below
     bool m_shown = false;
     std::chrono::steady_clock::time_point m_last;
 };
