@@ -39,7 +39,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     if (threshold <= 0) return illuminance(x, n, vis, samples, rng);
     struct Candidate {
         double potential;  ///< Y of the unshadowed illuminance, lx
-        double factor;     ///< an area light's unshadowed illuminance over its luminance
+        double factor;     ///< the unshadowed illuminance over the light's colour (colourOf)
         uint32_t light;    ///< points first, then area lights
         bool exact;        ///< a point light, or π F analytic
     };
@@ -47,9 +47,14 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     candidates.clear();
     const size_t points = m_pointLights.size();
     double remaining = 0;  // Σ potential of the lights not yet tested
+    // A light's colour: a point light's intensity, an area light's luminance (cd, cd/m²);
+    // its unshadowed illuminance at x is that colour times a factor.
+    auto colourOf = [&](uint32_t light) {
+        return light < points ? m_pointLights[light].intensity : m_areaLights[light - points].luminance;
+    };
     for (size_t k = 0; k < points; ++k) {
         const double y = luminance(unshadowedFromPointLight(m_pointLights[k], x, n));
-        if (y > 0) candidates.push_back({y, 0.0, static_cast<uint32_t>(k), true}), remaining += y;
+        if (y > 0) candidates.push_back({y, y / luminance(colourOf(k)), static_cast<uint32_t>(k), true}), remaining += y;
     }
     for (size_t k = 0; k < m_areaLights.size(); ++k) {
         bool exact = false;
@@ -84,11 +89,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     }
     // The untested: unshadowed, times the share of their potential the tested lights delivered.
     const double seen = tested > 0 ? std::min(1.0, found / tested) : 1.0;
-    for (; next < candidates.size(); ++next) {
-        const Candidate& c = candidates[next];
-        e += (c.light < points ? unshadowedFromPointLight(m_pointLights[c.light], x, n)
-                               : m_areaLights[c.light - points].luminance * c.factor) * seen;
-    }
+    for (; next < candidates.size(); ++next) e += colourOf(candidates[next].light) * (candidates[next].factor * seen);
     return e + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
 }
 
