@@ -62,22 +62,18 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
         const double y = luminance(m_areaLights[k].luminance) * factor;
         if (y > 0) candidates.push_back({y, factor, static_cast<uint32_t>(points + k), exact}), remaining += y;
     }
-    // A max-heap by potential: the strongest are taken one by one, and only as many as are
-    // tested (a full sort would order the ~20 untested too).
-    auto weaker = [](const Candidate& a, const Candidate& b) {
-        return a.potential != b.potential ? a.potential < b.potential : a.light > b.light;  // deterministic
-    };
-    std::make_heap(candidates.begin(), candidates.end(), weaker);
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.potential != b.potential ? a.potential > b.potential : a.light < b.light;  // deterministic
+    });
     // Test the strongest first, until what is left could add less than the threshold of
     // all x receives: the light found, and what it receives besides (a spot under a desk,
     // where every light is blocked, need not test them all to be within the threshold).
     Rgb e(0.0);
     double found = 0, tested = 0;  // Y of what the tested lights gave, and of their potential
-    auto untested = candidates.end();  // [begin, untested) is the heap of the lights not yet tested
-    while (untested != candidates.begin()) {
-        if (untested != candidates.end() && remaining < threshold * (found + received)) break;
-        std::pop_heap(candidates.begin(), untested, weaker);
-        const Candidate& c = *--untested;
+    size_t next = 0;
+    for (; next < candidates.size(); ++next) {
+        if (next > 0 && remaining < threshold * (found + received)) break;
+        const Candidate& c = candidates[next];
         Rgb v;
         if (c.light < points) {
             v = fromPointLight(m_pointLights[c.light], x, n, vis);
@@ -93,7 +89,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     }
     // The untested: unshadowed, times the share of their potential the tested lights delivered.
     const double seen = tested > 0 ? std::min(1.0, found / tested) : 1.0;
-    for (auto c = candidates.begin(); c != untested; ++c) e += colourOf(c->light) * (c->factor * seen);
+    for (; next < candidates.size(); ++next) e += colourOf(candidates[next].light) * (candidates[next].factor * seen);
     return e + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
 }
 
