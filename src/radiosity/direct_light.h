@@ -40,6 +40,20 @@ double areaLightFormFactor(const AreaLight& light, const Vec3& x, const Vec3& n)
 /// ignoring occluders: onto none of it, all of it, or perhaps some of it.
 enum class ApertureCover { None, Whole, Partial };
 
+/// What adaptive shadow testing found at one primary hit of a pixel, for the pixel's other
+/// samples that land on the same patch (a pixel's width away at most): the far area lights
+/// it tested with the visible fraction their rays found, and its estimate for the untested
+/// lights. Those samples test the near area lights and the point lights again (their
+/// shadows can be sharp within a pixel) and take each far light's F at their own point
+/// times the fraction found here: a far light's soft shadow is traced once per pixel and
+/// patch instead of at every sample. Images (mirrors) are tested at every sample.
+struct PixelLightMemo {
+    int64_t patch = -1;  ///< the patch of the hit that filled it; −1: empty (a new pixel)
+    std::vector<uint32_t> retested;  ///< lights tested at every sample: points first, then area lights
+    std::vector<std::pair<uint32_t, double>> far;  ///< a far area light (same numbering), its visible fraction
+    Rgb untested{0.0};  ///< lx: the untested lights' estimate
+};
+
 /// Evaluates E_direct(x, n) in lx from every primary light, with shadow rays, and from
 /// their images in the scene's mirrors (virtual lights: the light mirrored along each
 /// chain, × Π Ks, seen only through the mirror polygons).
@@ -64,8 +78,11 @@ class DirectLight {
     /// (what the tested ones gave plus `received`, lx: Y of the indirect illuminance there);
     /// those are added unshadowed × the tested ones' visible share. Images are always
     /// tested. threshold 0: every light tested, as illuminance(). See shadow_testing.cpp.
+    /// `pixel` (or null): the pixel's memo, and `patch` the hit's patch: when the memo holds
+    /// the same patch the far lights are taken from it, else it is filled from this hit.
     Rgb illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                              double threshold, double received = 0) const;
+                              double threshold, double received = 0, PixelLightMemo* pixel = nullptr,
+                              int64_t patch = -1) const;
 
     /// Sources: for the real scene and then each mirror image, the point lights and then
     /// the area lights: s = chain · (points + areas) + k, chain 0 the real scene.
@@ -148,6 +165,9 @@ class DirectLight {
     Rgb fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
                       Random* rng, Rgb* open = nullptr) const;
     std::optional<AreaLight> visiblePartOfImage(size_t i, size_t k, const Vec3& x) const;
+    /// illuminanceForDisplay at another sample of the pixel on the memo's patch.
+    Rgb fromPixelMemo(const PixelLightMemo& pixel, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
+                      Random* rng) const;
     /// The light of every image (virtual lights) at x; `perSource`/`perSourceOpen` as for
     /// illuminance().
     Rgb fromImages(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,

@@ -35,8 +35,14 @@ double unshadowedAreaFactor(const AreaLight& light, const Vec3& x, const Vec3& n
 }  // namespace
 
 Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visibility& vis, int samples, Random* rng,
-                                       double threshold, double received) const {
+                                       double threshold, double received, PixelLightMemo* pixel, int64_t patch) const {
     if (threshold <= 0) return illuminance(x, n, vis, samples, rng);
+    if (pixel && patch >= 0 && pixel->patch == patch) return fromPixelMemo(*pixel, x, n, vis, samples, rng);
+    if (pixel) {
+        pixel->patch = patch;
+        pixel->retested.clear();
+        pixel->far.clear();
+    }
     struct Candidate {
         double potential;  ///< Y of the unshadowed illuminance, lx
         double factor;     ///< the unshadowed illuminance over the light's colour (colourOf)
@@ -77,11 +83,17 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
         Rgb v;
         if (c.light < points) {
             v = fromPointLight(m_pointLights[c.light], x, n, vis);
-        } else {
+        } else if (c.exact) {
             const AreaLight& light = m_areaLights[c.light - points];
-            v = c.exact ? light.luminance * (c.factor * visibleFraction(light, x, n, vis, samples, rng))
-                        : fromAreaLight(light, x, n, vis, samples, rng);
+            v = light.luminance * (c.factor * visibleFraction(light, x, n, vis, samples, rng));
+        } else {  // far: π L F at x times the visible fraction, which the pixel's other samples reuse
+            const AreaLight& light = m_areaLights[c.light - points];
+            const double f = std::max(0.0, areaLightFormFactor(light, x, n));
+            const double visible = f > 0 ? visibleFraction(light, x, n, vis, samples, rng) : 0.0;
+            v = light.luminance * (kPi * f * visible);
+            if (pixel) pixel->far.push_back({c.light, visible});
         }
+        if (pixel && (c.light < points || c.exact)) pixel->retested.push_back(c.light);
         e += v;
         found += luminance(v);
         tested += c.potential;
@@ -89,7 +101,30 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     }
     // The untested: unshadowed, times the share of their potential the tested lights delivered.
     const double seen = tested > 0 ? std::min(1.0, found / tested) : 1.0;
-    for (; next < candidates.size(); ++next) e += colourOf(candidates[next].light) * (candidates[next].factor * seen);
+    Rgb untested(0.0);
+    for (; next < candidates.size(); ++next) untested += colourOf(candidates[next].light) * (candidates[next].factor * seen);
+    if (pixel) pixel->untested = untested;
+    return e + untested + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
+}
+
+Rgb DirectLight::fromPixelMemo(const PixelLightMemo& pixel, const Vec3& x, const Vec3& n, const Visibility& vis,
+                               int samples, Random* rng) const {
+    const size_t points = m_pointLights.size();
+    Rgb e = pixel.untested;  // a pixel's width changes it by a fraction of a per cent of itself
+    for (uint32_t k : pixel.retested) {
+        if (k < points) {
+            e += fromPointLight(m_pointLights[k], x, n, vis);
+            continue;
+        }
+        const AreaLight& light = m_areaLights[k - points];
+        bool exact = false;
+        const double factor = unshadowedAreaFactor(light, x, n, exact);
+        if (factor > 0) e += light.luminance * (factor * visibleFraction(light, x, n, vis, samples, rng));
+    }
+    for (const auto& [k, visible] : pixel.far) {
+        const AreaLight& light = m_areaLights[k - points];
+        e += light.luminance * (kPi * std::max(0.0, areaLightFormFactor(light, x, n)) * visible);
+    }
     return e + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
 }
 

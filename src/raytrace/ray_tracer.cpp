@@ -32,7 +32,8 @@ double fresnelDielectric(double cosI, double eta, double& cosT) {
 
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
-             int areaLightSamples, Random& rng, const RayCone& cone, int depth, const HitGather* gather) {
+             int areaLightSamples, Random& rng, const RayCone& cone, int depth, const HitGather* gather,
+             radiosity::PixelLightMemo* pixel) {
     Hit h = embree.intersect(origin, dir, 0.0, std::numeric_limits<double>::infinity());
     if (!h.found) return Rgb(0.0);
     const Vec3 unit = glm::normalize(dir);
@@ -98,7 +99,8 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     }
     // The untested lights' error is bounded relative to all the hit receives, indirect too.
     const Rgb direct = lights.illuminanceForDisplay(x, n, embree, areaLightSamples, &rng, scene.render.directThreshold,
-                                                    std::max(0.0, luminance(indirect)));
+                                                    std::max(0.0, luminance(indirect)), depth == 0 ? pixel : nullptr,
+                                                    static_cast<int64_t>(h.patch));
     return L + rho * (direct + indirect) / kPi;  // L = ρ E / π
 }
 
@@ -137,8 +139,10 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
             radiosity::GatherMemo memo;  // the row's re-gathered corners (render.indirect "gather")
             std::optional<HitGather> gather;
             if (gatherer) gather.emplace(HitGather{*gatherer, memo});
+            radiosity::PixelLightMemo pixelLights;  // emptied at each pixel (its vectors keep their capacity)
             for (int x = 0; x < image.width; ++x) {
                 Random rng(options.seed, static_cast<uint64_t>(y) * image.width + x);
+                pixelLights.patch = -1;
                 Rgb sum(0.0), weighted(0.0);
                 double weights = 0;
                 for (int s = 0; s < spp; ++s) {
@@ -154,7 +158,8 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                     const CameraRay r = camera.ray(x + jx, y + jy);
                     const Rgb sample =
                         r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction, raysPerHit, rng,
-                                           sampleCone, 0, gather ? &*gather : nullptr)
+                                           sampleCone, 0, gather ? &*gather : nullptr,
+                                           options.shareFarShadows ? &pixelLights : nullptr)
                                 : Rgb(0.0);
                     sum += sample;
                     if (Lc > 0) {

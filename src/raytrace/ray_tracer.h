@@ -57,10 +57,12 @@ struct HitGather {
 /// (Ks × the reflected ray) and glass (Fresnel reflection + refraction) recurse up to
 /// render.max_depth; beyond it a ray returns black. `cone` is the ray's footprint, which
 /// filters textures at the hit (zero: a point). `gather` (or null): E_indirect from a
-/// final gather at the hit instead of the mesh.
+/// final gather at the hit instead of the mesh. `pixel` (or null): the pixel's memo of the
+/// far lights' shadows, shared by its samples' first hits on one patch (not by the hits
+/// behind a mirror or glass).
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
              int areaLightSamples, Random& rng, const RayCone& cone = {}, int depth = 0,
-             const HitGather* gather = nullptr);
+             const HitGather* gather = nullptr, radiosity::PixelLightMemo* pixel = nullptr);
 
 }  // namespace rayrad::raytrace

@@ -534,6 +534,7 @@ void parseRender(JsonObject r, SceneDesc& d) {
     d.render.directThreshold = r.number("direct_threshold", d.render.directThreshold);
     if (!(d.render.directThreshold >= 0 && d.render.directThreshold < 1))
         r.error("direct_threshold", "expected a number in [0, 1) (0: every light shadow-tested)");
+    d.render.shareFarShadows = r.boolean("share_far_shadows").value_or(d.render.shareFarShadows);
     d.render.sensorAreaLightSamples =
         r.integer("sensor_area_light_samples", d.render.sensorAreaLightSamples, 1, 1 << 20);
     d.render.maxDepth = r.integer("max_depth", d.render.maxDepth, 0, 64);

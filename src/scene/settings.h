@@ -153,6 +153,10 @@ struct RenderOptions {
     /// shadow-tested strongest first until the rest could add less than this fraction of
     /// all the hit receives: the light found and the indirect light (0 = every light tested).
     double directThreshold = 0.02;
+    /// A pixel's samples that land on one patch share the far area lights' shadow rays,
+    /// traced at the first of them (DirectLight's PixelLightMemo); false: every sample
+    /// traces its own.
+    bool shareFarShadows = true;
     int maxDepth = 8;             ///< Whitted recursion through mirrors and glass
     /// Display images average a pixel's samples after range compression (weights
     /// 1/(1 + L_s/L_c)), so emitter edges and highlights stay smooth; the EXR keeps the

@@ -161,3 +161,50 @@ TEST_CASE("adaptive shadow testing: the strong lights tested, the weak ones esti
     CHECK(withIndirect.rays > 1);  // the bright light alone does not settle it
     CHECK(std::abs(under - 0) <= 0.02 * (0 + received));
 }
+
+TEST_CASE("a pixel's samples on one patch share the far lights' shadow rays", "[direct]") {
+    // A dim emitter just above the point and 24 small bright ones 6–11 m away (far: beyond
+    // five of their diameters), all facing down.
+    auto square = [](double x, double y, double z, double half) {
+        auto v = [&](double a, double b) { return "[" + std::to_string(a) + "," + std::to_string(b) + "," + std::to_string(z) + "]"; };
+        return "[" + v(x - half, y - half) + "," + v(x - half, y + half) + "," + v(x + half, y + half) + "," +
+               v(x + half, y - half) + "]";
+    };
+    std::string emitters = R"(, {"type": "quad", "material": "dim", "vertices": )" + square(0, 0, 1, 0.2) + "}";
+    for (int k = 0; k < 24; ++k)
+        emitters += R"(, {"type": "quad", "material": "bright", "vertices": )" +
+                    square(6 + 0.2 * k, (k % 2 ? 1 : -1) * 0.5 * k, 3, 0.1) + "}";
+    const std::string materials = R"(, "dim": {"type": "emissive", "luminance_cd_m2": 300},
+                                       "bright": {"type": "emissive", "luminance_cd_m2": 20000})";
+    Setup s(withLights(R"({"type": "point", "position": [0, 0, -20], "intensity_cd": 1e-9})", emitters, materials));
+    const Vec3 n(0, 0, 1), x1(0, 0, 0), x2(0.002, 0.001, 0);  // two samples a pixel's width apart
+
+    // The first sample fills the memo; the second, on the same patch, traces the near
+    // light's rays alone and agrees with tracing its own to well under the threshold.
+    CountingVisibility first, second, own;
+    radiosity::PixelLightMemo pixel;
+    const Rgb e1 = s.lights->illuminanceForDisplay(x1, n, first, 16, nullptr, 0.02, 0, &pixel, 7);
+    REQUIRE(!pixel.far.empty());
+    CHECK(pixel.retested.size() == 1);  // the near emitter
+    CHECK(luminance(e1) == Approx(luminance(s.lights->illuminanceForDisplay(x1, n, own, 16, nullptr, 0.02))));
+    const Rgb shared = s.lights->illuminanceForDisplay(x2, n, second, 16, nullptr, 0.02, 0, &pixel, 7);
+    CountingVisibility alone;
+    const Rgb traced = s.lights->illuminanceForDisplay(x2, n, alone, 16, nullptr, 0.02);
+    CHECK(second.rays < first.rays);
+    CHECK(second.rays == first.rays - pixel.far.size());  // one ray per far light, 6 m and more away
+    CHECK(luminance(shared) == Approx(luminance(traced)).epsilon(1e-3));
+
+    // Far lights hidden at the first sample stay hidden for the second (a soft shadow's
+    // value at a pixel's scale), and near ones are tested again.
+    BlockedAbove ceiling(2.0);
+    radiosity::PixelLightMemo hidden;
+    s.lights->illuminanceForDisplay(x1, n, ceiling, 16, nullptr, 0.02, 0, &hidden, 7);
+    const double dimOnly = luminance(s.lights->illuminanceForDisplay(x2, n, ceiling, 16, nullptr, 0.02, 0, &hidden, 7));
+    CHECK(dimOnly == Approx(luminance(s.lights->illuminanceForDisplay(x2, n, ceiling, 16, nullptr, 0.0))).epsilon(0.02));
+
+    // Another patch starts the memo afresh.
+    CountingVisibility other;
+    s.lights->illuminanceForDisplay(x2, n, other, 16, nullptr, 0.02, 0, &pixel, 8);
+    CHECK(other.rays == alone.rays);
+    CHECK(pixel.patch == 8);
+}
