@@ -41,7 +41,7 @@ double areaLightFormFactor(const AreaLight& light, const Vec3& x, const Vec3& n)
 enum class ApertureCover { None, Whole, Partial };
 
 /// What adaptive shadow testing found at one primary hit of a pixel, for the pixel's other
-/// samples that land on the same patch (a pixel's width away at most): the far area lights
+/// samples that land on the same patch (within the pixel's footprint): the far area lights
 /// it tested with the visible fraction their rays found, and its estimate for the untested
 /// lights. Those samples test the near area lights and the point lights again (their
 /// shadows can be sharp within a pixel) and take each far light's F at their own point
