@@ -110,7 +110,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
 Rgb DirectLight::fromPixelMemo(const PixelLightMemo& pixel, const Vec3& x, const Vec3& n, const Visibility& vis,
                                int samples, Random* rng) const {
     const size_t points = m_pointLights.size();
-    Rgb e = pixel.untested;  // a pixel's width changes it by a fraction of a per cent of itself
+    Rgb e = pixel.untested;  // far lights: it changes by the footprint's size over their distance
     for (uint32_t k : pixel.retested) {
         if (k < points) {
             e += fromPointLight(m_pointLights[k], x, n, vis);
