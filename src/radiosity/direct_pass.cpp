@@ -3,6 +3,7 @@
 #include <radiosity/form_factor.h>
 #include <radiosity/light_value.h>
 #include <radiosity/mesher.h>
+#include <radiosity/sealed_solids.h>
 #include <radiosity/shared_corners.h>
 
 #include <tbb/blocked_range.h>
@@ -378,6 +379,7 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     std::vector<double> backReceived(mesh.patches.size(), 0.0);    // lm, per patch
     const auto refined = shadowSamplePoints(kShadowSamples);
     const std::vector<char> shared = sharedCorners(mesh);
+    const std::vector<char> sealed = sealedGroups(scene);  // their backs face a solid's dark inside
     std::atomic<size_t> done{0};
     const size_t n = mesh.patches.size();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkPatches), [&](const tbb::blocked_range<size_t>& chunk) {
@@ -392,8 +394,9 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
             // The back of a one-sided surface is the inside of a solid: light that still
             // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
             // booked. A two-sided surface's back is a patch of its own, and a back covered by
-            // another surface's front (back-to-back quads) receives nothing: that surface does.
-            if (!scene.materials[p.material].twoSided && !vis.backCovered(p.centroid, p.normal)) {
+            // another surface's front (back-to-back quads) receives nothing: that surface does;
+            // nor does the inside of a sealed solid (sealed_solids.h).
+            if (!scene.materials[p.material].twoSided && !sealed[p.group] && !vis.backCovered(p.centroid, p.normal)) {
                 const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, &corners);
                 backReceived[i] = luminance(back.mean) * p.area;
                 mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
