@@ -292,11 +292,14 @@ Rgb DirectLight::fromImages(const Vec3& x, const Vec3& n, const Visibility& vis,
 }
 
 Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
-                               int samples, Random* rng, Rgb* open) const {
+                               int samples, Random* rng, Rgb* open, double* visible) const {
     const double f = areaLightFormFactor(light, x, n);
     if (open) *open = light.luminance * (kPi * std::max(0.0, f));
+    if (visible) *visible = 0;
     if (f <= 0) return Rgb(0.0);
-    return light.luminance * (kPi * f * visibleFraction(light, x, n, vis, samples, rng));  // E = π L F
+    const double v = visibleFraction(light, x, n, vis, samples, rng);
+    if (visible) *visible = v;
+    return light.luminance * (kPi * f * v);  // E = π L F
 }
 
 double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,

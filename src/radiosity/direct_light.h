@@ -152,9 +152,10 @@ class DirectLight {
     static Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis);
     static Rgb fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,
                               const Vec3& x, const Vec3& n);
-    /// `open` (if given) gets the unshadowed value π L F.
+    /// `open` (if given) gets the unshadowed value π L F, `visible` the visible fraction
+    /// its rays found (0 when the light is below x's horizon).
     Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
-                      Random* rng, Rgb* open = nullptr) const;
+                      Random* rng, Rgb* open = nullptr, double* visible = nullptr) const;
     /// The fraction of an area light x sees past occluders (`samples` stratified shadow
     /// rays, fewer for a far light), weighted by the unoccluded integrand cosθ_x cosθ_y / r².
     static double visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,

@@ -86,11 +86,9 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
         } else if (c.exact) {
             const AreaLight& light = m_areaLights[c.light - points];
             v = light.luminance * (c.factor * visibleFraction(light, x, n, vis, samples, rng));
-        } else {  // far: π L F at x times the visible fraction, which the pixel's other samples reuse
-            const AreaLight& light = m_areaLights[c.light - points];
-            const double f = std::max(0.0, areaLightFormFactor(light, x, n));
-            const double visible = f > 0 ? visibleFraction(light, x, n, vis, samples, rng) : 0.0;
-            v = light.luminance * (kPi * f * visible);
+        } else {  // far: its visible fraction is kept for the pixel's other samples
+            double visible = 0;
+            v = fromAreaLight(m_areaLights[c.light - points], x, n, vis, samples, rng, nullptr, &visible);
             if (pixel) pixel->far.push_back({c.light, visible});
         }
         if (pixel && (c.light < points || c.exact)) pixel->retested.push_back(c.light);
@@ -116,10 +114,7 @@ Rgb DirectLight::fromPixelMemo(const PixelLightMemo& pixel, const Vec3& x, const
             e += fromPointLight(m_pointLights[k], x, n, vis);
             continue;
         }
-        const AreaLight& light = m_areaLights[k - points];
-        bool exact = false;
-        const double factor = unshadowedAreaFactor(light, x, n, exact);
-        if (factor > 0) e += light.luminance * (factor * visibleFraction(light, x, n, vis, samples, rng));
+        e += fromAreaLight(m_areaLights[k - points], x, n, vis, samples, rng);  // near: Lambert's F, own rays
     }
     for (const auto& [k, visible] : pixel.far) {
         const AreaLight& light = m_areaLights[k - points];
