@@ -33,47 +33,56 @@ std::vector<char> sealedGroups(const scene::Scene& scene) {
         const Key key{std::llround(p.x / cell), std::llround(p.y / cell), std::llround(p.z / cell)};
         return vertexAt.emplace(key, static_cast<uint32_t>(vertexAt.size())).first->second;
     };
-    // Every diffuse polygon (emitters too), and per undirected edge the polygons on it and
-    // how often it is used each way.
+    // Every diffuse polygon (emitters too) as its bounds and its directed edges.
     struct Polygon {
         size_t group;
-        std::vector<uint32_t> v;
         Vec3 lo{1e300}, hi{-1e300};  ///< bounds, m
     };
+    struct HalfEdge {
+        uint32_t low, high;  ///< its welded vertices, the lower index first
+        bool forward;        ///< runs from `low` to `high`
+        uint32_t polygon;
+    };
     std::vector<Polygon> polygons;
+    std::vector<HalfEdge> halfEdges;
+    std::vector<uint32_t> welded;  // one polygon's vertices
     for (size_t g = 0; g < scene.groups.size(); ++g) {
         const scene::SurfaceGroup& group = scene.groups[g];
         if (!scene.materials[group.material].isDiffuse()) continue;
         for (const auto& poly : group.polygons) {
-            Polygon p{g, {}};
+            Polygon p{g};
+            const auto k = static_cast<uint32_t>(polygons.size());
+            welded.clear();
             for (uint32_t i : poly) {
-                p.v.push_back(vertexOf(group.positions[i]));
                 p.lo = glm::min(p.lo, group.positions[i]), p.hi = glm::max(p.hi, group.positions[i]);
+                welded.push_back(vertexOf(group.positions[i]));
             }
-            polygons.push_back(std::move(p));
+            for (size_t i = 0; i < welded.size(); ++i) {
+                const uint32_t a = welded[i], b = welded[(i + 1) % welded.size()];
+                if (a != b) halfEdges.push_back({std::min(a, b), std::max(a, b), a < b, k});
+            }
+            polygons.push_back(p);
         }
     }
-    struct EdgeUse {
-        int forward = 0, backward = 0;  ///< uses from the lower vertex index to the higher, and back
-        size_t polygon = 0;             ///< one polygon on it
-    };
-    std::map<std::pair<uint32_t, uint32_t>, EdgeUse> edges;
+    // The polygons on one edge are joined; a component is closed when each of its edges is
+    // used exactly once each way.
+    std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return std::tie(x.low, x.high) < std::tie(y.low, y.high);
+    });
     Components components(polygons.size());
-    for (size_t k = 0; k < polygons.size(); ++k) {
-        const auto& v = polygons[k].v;
-        for (size_t i = 0; i < v.size(); ++i) {
-            const uint32_t a = v[i], b = v[(i + 1) % v.size()];
-            if (a == b) continue;
-            auto [it, added] = edges.try_emplace({std::min(a, b), std::max(a, b)});
-            (a < b ? it->second.forward : it->second.backward) += 1;
-            if (added) it->second.polygon = k;
-            else components.join(k, it->second.polygon);
+    std::vector<std::pair<size_t, bool>> edgeClosed;  // per edge: one polygon on it, and whether it closes
+    for (size_t i = 0; i < halfEdges.size();) {
+        size_t end = i, forward = 0;
+        for (; end < halfEdges.size() && halfEdges[end].low == halfEdges[i].low && halfEdges[end].high == halfEdges[i].high; ++end) {
+            forward += halfEdges[end].forward;
+            components.join(halfEdges[end].polygon, halfEdges[i].polygon);
         }
+        edgeClosed.push_back({halfEdges[i].polygon, end - i == 2 && forward == 1});
+        i = end;
     }
-    // A component is closed when each of its edges is used once each way.
     std::vector<char> closed(polygons.size(), 1);  // per component root
-    for (const auto& [edge, use] : edges)
-        if (use.forward != 1 || use.backward != 1) closed[components.find(use.polygon)] = 0;
+    for (const auto& [polygon, closes] : edgeClosed)
+        if (!closes) closed[components.find(polygon)] = 0;
     // Its bounds, and whether a light source lies within them (on the boundary too).
     std::vector<Vec3> lo(polygons.size(), Vec3(1e300)), hi(polygons.size(), Vec3(-1e300));  // per component root
     for (size_t k = 0; k < polygons.size(); ++k) {
@@ -98,13 +107,9 @@ std::vector<char> sealedGroups(const scene::Scene& scene) {
     }
     // A group is sealed when every one of its polygons is in a sealed component.
     std::vector<char> sealed(scene.groups.size(), 0);
-    std::vector<char> seen(scene.groups.size(), 0);
-    for (size_t k = 0; k < polygons.size(); ++k) {
-        const size_t g = polygons[k].group;
-        const bool in = closed[components.find(k)] != 0;
-        sealed[g] = seen[g] ? (sealed[g] && in) : in;
-        seen[g] = 1;
-    }
+    for (const Polygon& p : polygons) sealed[p.group] = 1;
+    for (size_t k = 0; k < polygons.size(); ++k)
+        if (!closed[components.find(k)]) sealed[polygons[k].group] = 0;
     return sealed;
 }
 
