@@ -1,6 +1,7 @@
 #include <radiosity/form_factor.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -29,19 +30,33 @@ int clipToFront(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* o
     return m;
 }
 
-/// The angle (radians) between two unit vectors whose cross product has length s and dot
-/// product c: atan2(s, c). Most edges of a light seen from a receiver subtend small
-/// angles; for those (s < c / 8) the series atan t = t − t³/3 + t⁵/5 − … to t¹⁵ (the rest
-/// is below 2e-16 of t, double rounding) costs a fraction of the library's atan2.
-double edgeAngle(double s, double c) {
-    if (!(c > 0 && s < 0.125 * c)) return std::atan2(s, c);
-    const double t = s / c, t2 = t * t;
-    const double series =
-        1 - t2 * (1. / 3 - t2 * (1. / 5 - t2 * (1. / 7 - t2 * (1. / 9 - t2 * (1. / 11 - t2 * (1. / 13 - t2 / 15))))));
-    return t * series;
-}
+/// atan(k / 16) for k = 0 … 16: the points the angle is reduced to.
+const std::array<double, 17> kAtanTable = [] {
+    std::array<double, 17> t{};
+    for (int k = 0; k <= 16; ++k) t[k] = std::atan(k / 16.0);
+    return t;
+}();
 
 }  // namespace
+
+double edgeAngle(double s, double c) {
+    // θ = atan2(s, c), s ≥ 0. With a = min(s, |c|), b = max(s, |c|), t = a / b ≤ 1:
+    // atan t = atan t₀ + atan v, t₀ = k/16 the nearest table point, v = (t − t₀)/(1 + t t₀),
+    // |v| ≤ 1/32, and atan v = v − v³/3 + … to v¹³ (the rest is below 1e-19 of v);
+    // then π/2 − θ when s > |c|, π − θ when c < 0.
+    const double ac = std::abs(c);
+    const bool steep = s > ac;
+    const double a = steep ? ac : s, b = steep ? s : ac;
+    const double t = a / b;
+    if (!(t >= 0 && t <= 1)) return std::atan2(s, c);  // 0/0, NaN, a negative s
+    const int k = static_cast<int>(16 * t + 0.5);
+    const double t0 = k / 16.0;
+    const double v = k == 0 ? t : (t - t0) / (1 + t * t0), v2 = v * v;  // small angles: one division
+    const double series = 1 - v2 * (1. / 3 - v2 * (1. / 5 - v2 * (1. / 7 - v2 * (1. / 9 - v2 * (1. / 11 - v2 / 13)))));
+    double theta = kAtanTable[k] + v * series;
+    if (steep) theta = 0.5 * kPi - theta;
+    return c < 0 ? kPi - theta : theta;
+}
 
 double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal) {
     // One-sided source: x must be in front of the polygon's plane by more than rounding.

@@ -159,3 +159,27 @@ TEST_CASE("second-order polygon form factor against Lambert's formula", "[form_f
     CHECK(formFactorSecondOrder({0, 0, 5}, {0, 0, -1}, square, down, 0.36) == 0.0);
     CHECK(formFactorSecondOrder({0, 0, -5}, {0, 0, -1}, square, down, 0.36) == 0.0);
 }
+
+TEST_CASE("the edge angle agrees with atan2 over the whole half turn", "[form_factor]") {
+    // Angles from 1e-12 rad to π − 1e-9, on both sides of every table point (k/16) and of
+    // π/4 and π/2, as the unit vectors' cross length s and dot product c.
+    std::vector<double> angles = {1e-12, 1e-6, 0.01, kPi / 4, kPi / 2, kPi - 1e-3, kPi - 1e-9};
+    for (int k = 0; k <= 16; ++k)
+        for (double d : {-1e-9, 0.0, 1e-9, 0.5 / 32})
+            angles.push_back(std::atan(k / 16.0) + d);
+    Random rng(7);
+    for (int i = 0; i < 10000; ++i) angles.push_back(kPi * rng.nextDouble());
+    double worst = 0;
+    for (double theta : angles) {
+        if (!(theta > 0 && theta < kPi)) continue;
+        for (double scale : {1.0, 0.37, 2.9}) {  // unnormalised pairs too
+            const double s = scale * std::sin(theta), c = scale * std::cos(theta);
+            const double expected = std::atan2(s, c);
+            worst = std::max(worst, std::abs(edgeAngle(s, c) - expected) / expected);
+        }
+    }
+    CHECK(worst < 4e-16);
+    CHECK(edgeAngle(0.0, 1.0) == 0.0);
+    CHECK(edgeAngle(0.0, -1.0) == Approx(kPi));
+    CHECK(std::isnan(edgeAngle(std::nan(""), 1.0)));
+}
