@@ -288,7 +288,7 @@ int main(int argc, char** argv) {
     tonemap::DisplayOptions display;
     auto addReports = [](CLI::App* cmd, app::ReportArgs& r) {
         cmd->add_option("--convergence", r.convergence,
-                        "Log error against time at every push-pull as CSV (seconds, shots, unshot %, and the "
+                        "Log error against time at every push-pull as CSV (seconds, shots, unshot % of the emitted flux, and the "
                         "indirect error at every sensor with a reference: vertex values always, the gather each "
                         "time the unshot energy has halved)");
         cmd->add_option("--report", r.report, "Write a JSON account of the run (stages, time, memory, sensors)");

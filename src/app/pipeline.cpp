@@ -77,12 +77,15 @@ class PushPullObserver {
     }
 
     void operator()(const radiosity::RadiositySolution& solution) {
-        double fraction = solution.initialUnshotFlux > 0 ? solution.remainingUnshotFlux / solution.initialUnshotFlux : 0;
+        const double fraction = solution.unshotFraction();
         bool last = solution.converged;
         bool log = m_options.logConvergence;
+        // Snapshot k of K when the unshot fraction has come k/K of the way (in log) from
+        // where the solve started to radiosity.stop_unshot.
+        const double start = solution.initialUnshotFlux / std::max(1e-300, solution.unshotReference());
+        const double stop = m_run.scene.solver.stopUnshot;
         bool snapshot = m_options.snapshots > 0 && m_nextSnapshot <= m_options.snapshots &&
-                        (last || fraction <= std::pow(m_run.scene.solver.stopUnshot,
-                                                      double(m_nextSnapshot) / m_options.snapshots));
+                        (last || fraction <= start * std::pow(stop / start, double(m_nextSnapshot) / m_options.snapshots));
         if (!log && !snapshot) return;
         radiosity::RadiositySolution copy = solution;
         radiosity::reconstructVertices(m_run.mesh, copy, m_run.scene.solver.linearReconstruction);
@@ -148,13 +151,14 @@ void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
                                      run.scene.clusters);
     solver.initialize(run.solution);
     Progress progress("secondary pass", options.quiet);
-    double target = run.scene.solver.stopUnshot;
     PushPullObserver observer(run, options);
     solver.solve(run.solution, std::ref(observer), [&](const radiosity::RadiositySolution& s) {
-        double frac = s.initialUnshotFlux > 0 ? s.remainingUnshotFlux / s.initialUnshotFlux : 0;
-        // Progress in log space from 1 down to the stopping threshold.
-        double done = frac > 0 ? std::log(frac) / std::log(target) : 1.0;
-        progress.update(done, fmt::format("{} shots, unshot {:.3g}%", s.shots, 100 * frac));
+        // Progress in log space from the first reflection down to the stopping threshold
+        // (radiosity.stop_unshot × the emitted flux).
+        const double left = s.remainingUnshotFlux / s.initialUnshotFlux;
+        const double target = run.scene.solver.stopUnshot * s.unshotReference() / s.initialUnshotFlux;
+        const double done = left > 0 && target < 1 ? std::log(left) / std::log(target) : 1.0;
+        progress.update(done, fmt::format("{} shots, unshot {:.3g}%", s.shots, 100 * s.unshotFraction()));
     });
     run.shooting = solver.statistics();
     run.maxIlluminanceStep = solver.maxIlluminanceStep();

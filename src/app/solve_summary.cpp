@@ -9,9 +9,9 @@ namespace rayrad::app {
 void printSolveSummary(const PipelineRun& run) {
     const auto& s = run.solution;
     auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
-    fmt::print(stderr, "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of {:.6g} lm ({})\n",
-               run.mesh.patches.size(), run.singleChannel ? "1 (grey scene)" : "3", s.shots,
-               s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0, s.initialUnshotFlux,
+    fmt::print(stderr, "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of the {:.6g} lm emitted ({:.4g}% of the first reflection; {})\n",
+               run.mesh.patches.size(), run.singleChannel ? "1 (grey scene)" : "3", s.shots, 100 * s.unshotFraction(),
+               s.unshotReference(), s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0,
                s.converged ? "converged" : "NOT converged: " + run.shooting.stopReason);
     if (run.shooting.overshootStalled)
         fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");

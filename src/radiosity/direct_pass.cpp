@@ -373,6 +373,7 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
 
 void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
                    int areaSamples, RadiositySolution& solution, const std::function<void(double)>& onProgress) {
+    solution.emittedFlux = lights.emittedFlux();
     solution.directMean.assign(mesh.patches.size(), Rgb(0.0));
     solution.directCorner.assign(3 * mesh.patches.size(), RgbF(0.0f));
     std::vector<double> mirrorAbsorbed(mesh.patches.size(), 0.0);  // lm, per patch

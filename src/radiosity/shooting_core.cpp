@@ -546,7 +546,7 @@ bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
         if (power > bestPower) bestPower = power, best = c;
     }
     s.remainingUnshotFlux = kPi * total;
-    if (s.remainingUnshotFlux <= m_options.stopUnshot * s.initialUnshotFlux || bestPower <= 0) {
+    if (s.remainingUnshotFlux <= m_options.stopUnshot * s.unshotReference() || bestPower <= 0) {
         s.converged = true;
         return false;
     }

@@ -26,8 +26,15 @@ struct RadiositySolution {
 
     // Statistics of the solve.
     int64_t shots = 0;
+    double emittedFlux = 0;           ///< lm the lights emit (set by the direct pass)
     double initialUnshotFlux = 0;     ///< lm left to distribute after the direct pass
     double remainingUnshotFlux = 0;   ///< lm still unshot at the end
+    /// The flux the unshot fractions are of, lm: the emitted flux (radiosity.stop_unshot),
+    /// or, in a solution without lights (tests that set the direct light by hand), the
+    /// first reflection.
+    double unshotReference() const { return emittedFlux > 0 ? emittedFlux : initialUnshotFlux; }
+    /// The unshot flux still to distribute as a fraction of unshotReference().
+    double unshotFraction() const { return unshotReference() > 0 ? remainingUnshotFlux / unshotReference() : 0.0; }
     bool converged = false;
     double seconds = 0;
     /// lm absorbed by mirrors on the way, booked by the source that delivers through

@@ -15,7 +15,7 @@ namespace rayrad::radiosity {
 namespace {
 
 constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
-constexpr uint32_t kVersion = 3;  // 2: light groups' parts; 3: seam profiles
+constexpr uint32_t kVersion = 4;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux
 constexpr uint32_t kByteOrder = 0x01020304;
 
 /// 64-bit FNV-1a over values' bytes.
@@ -234,7 +234,7 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
     w.putArray(sol.indirect);
     w.putArray(sol.unshot);
     w.putArray(sol.vertexIndirect);
-    w.put(sol.shots), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(static_cast<uint8_t>(sol.converged));
+    w.put(sol.shots), w.put(sol.emittedFlux), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(static_cast<uint8_t>(sol.converged));
     w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary), w.put(sol.backAbsorbedDirect);
     w.putArray(sol.backFlux);
     putProfiles(w, sol.seamProfiles);
@@ -296,6 +296,7 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     sol.unshot = r.getArray<Rgb>(patchCount, "the unshot light");
     sol.vertexIndirect = r.getArray<Rgb>(vertexCount, "the vertex values");
     sol.shots = r.get<int64_t>("the statistics");
+    sol.emittedFlux = r.get<double>("the statistics");
     sol.initialUnshotFlux = r.get<double>("the statistics");
     sol.remainingUnshotFlux = r.get<double>("the statistics");
     sol.converged = r.get<uint8_t>("the statistics") != 0;

@@ -65,8 +65,9 @@ struct ClusterOptions {
 
 /// The secondary (indirect) pass: progressive shooting.
 struct SolverOptions {
-    /// Stop when the unshot flux falls below this fraction of the flux the direct pass
-    /// left to distribute (the first reflection).
+    /// Stop when the unshot flux falls below this fraction of the flux the lights emit
+    /// (the paper's rule): shot, it would raise the illuminance, averaged over the
+    /// surfaces, by about this fraction.
     double stopUnshot = 1e-3;
     /// Upper bound on shots (0 = none).
     int64_t maxShots = 0;

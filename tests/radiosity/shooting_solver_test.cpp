@@ -100,3 +100,24 @@ TEST_CASE("the solve is deterministic and independent of the thread count", "[so
     CHECK(a.solution.shots == b->solution.shots);
     for (size_t i = 0; i < a.solution.indirect.size(); ++i) REQUIRE(a.solution.indirect[i] == b->solution.indirect[i]);
 }
+
+TEST_CASE("the solve stops at the first shot that leaves less than stop_unshot of the emitted flux unshot",
+          "[solver]") {
+    // A dark box (ρ = 0.2): its first reflection is a fifth of the emitted flux, so a stop
+    // relative to it (the rule before) would shoot on to a fifth of the unshot flux.
+    std::string json = test::boxScene(R"({"type": "diffuse", "reflectance": 0.2})",
+                                      R"({"type": "point", "position": [0.3, 0.6, 0.45], "intensity_cd": 100})");
+    const std::string path = test::writeTempScene("dark_box", json);
+    auto run = app::runPipeline(path, quiet({{"radiosity.max_edge", "0.125"}, {"radiosity.stop_unshot", "0.02"}}));
+    const auto& s = run.solution;
+    REQUIRE(s.converged);
+    CHECK(s.emittedFlux == Approx(4 * kPi * 100));
+    CHECK(s.initialUnshotFlux == Approx(0.2 * s.emittedFlux).epsilon(0.01));
+    CHECK(s.remainingUnshotFlux <= 0.02 * s.emittedFlux);
+    CHECK(s.unshotFraction() == Approx(s.remainingUnshotFlux / s.emittedFlux));
+    REQUIRE(s.shots > 1);
+    auto before = app::runPipeline(path, quiet({{"radiosity.max_edge", "0.125"}, {"radiosity.stop_unshot", "0.02"},
+                                                {"radiosity.max_shots", std::to_string(s.shots - 1)}}));
+    CHECK_FALSE(before.solution.converged);
+    CHECK(before.solution.remainingUnshotFlux > 0.02 * s.emittedFlux);
+}

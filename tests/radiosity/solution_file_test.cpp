@@ -22,6 +22,7 @@ RadiositySolution smallSolution(size_t patches, size_t vertices) {
     }
     for (size_t v = 0; v < vertices; ++v) s.vertexIndirect.push_back(Rgb(v * 0.1));
     s.shots = 42;
+    s.emittedFlux = 350;
     s.initialUnshotFlux = 100;
     s.remainingUnshotFlux = 0.09;
     s.converged = true;
@@ -54,6 +55,8 @@ TEST_CASE("a saved solution reads back exactly, and any damage is refused", "[so
     CHECK(back.unshot == s.unshot);
     CHECK(back.vertexIndirect == s.vertexIndirect);
     CHECK(back.shots == 42);
+    CHECK(back.emittedFlux == 350);
+    CHECK(back.initialUnshotFlux == 100);
     CHECK(back.converged);
     CHECK(back.backFlux == s.backFlux);
     CHECK(back.seamProfiles.seamVertices() == s.seamProfiles.seamVertices());
