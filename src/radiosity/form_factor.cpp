@@ -58,6 +58,36 @@ double edgeAngle(double s, double c) {
     return c < 0 ? kPi - theta : theta;
 }
 
+namespace {
+
+/// Lambert's sum 1/(2π) Σ_i γ_i n·(R_i × R_{i+1}) / |R_i × R_{i+1}| over the unit
+/// directions to a polygon's vertices (all in front of x), clamped to [0, 1].
+double lambertSum(const Vec3& n, const Vec3* dir, int count) {
+    double sum = 0;
+    Vec3 ri = dir[0];
+    for (int i = 0; i < count; ++i) {
+        Vec3 rj = (i + 1 < count) ? dir[i + 1] : dir[0];
+        Vec3 c = glm::cross(ri, rj);
+        double s = glm::length(c);
+        if (s > 1e-15) {
+            double gamma = edgeAngle(s, glm::dot(ri, rj));  // accurate for small and near-π angles
+            sum += gamma * glm::dot(n, c) / s;
+        }
+        ri = rj;
+    }
+    return std::clamp(std::abs(sum) / (2.0 * kPi), 0.0, 1.0);
+}
+
+}  // namespace
+
+VertexView viewFrom(const Vec3& x, const Vec3& v) {
+    VertexView view;
+    view.d = v - x;
+    view.r = glm::length(view.d);
+    view.dir = view.r > 0 ? view.d / view.r : view.d;
+    return view;
+}
+
 double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal) {
     // One-sided source: x must be in front of the polygon's plane by more than rounding.
     // A point in the plane itself (on the source, or on a coplanar neighbour of it) would
@@ -77,11 +107,10 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
     double reach = 0;
     bool allFront = true;
     for (int i = 0; i < count; ++i) {
-        const Vec3 d = vertices[i] - x;
-        const double r = glm::length(d);
-        reach = std::max(reach, r);
-        allFront &= glm::dot(d, n) >= 0;
-        dir[i] = r > 0 ? d / r : d;
+        const VertexView view = viewFrom(x, vertices[i]);
+        reach = std::max(reach, view.r);
+        allFront &= glm::dot(view.d, n) >= 0;
+        dir[i] = view.dir;
     }
     if (height <= kCoplanar * reach) return 0.0;
     if (!allFront) {
@@ -93,19 +122,22 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
         if (count < 3) return 0.0;
         for (int i = 0; i < count; ++i) dir[i] = glm::normalize(clipped[i] - x);
     }
-    double sum = 0;
-    Vec3 ri = dir[0];
-    for (int i = 0; i < count; ++i) {
-        Vec3 rj = (i + 1 < count) ? dir[i + 1] : dir[0];
-        Vec3 c = glm::cross(ri, rj);
-        double s = glm::length(c);
-        if (s > 1e-15) {
-            double gamma = edgeAngle(s, glm::dot(ri, rj));  // accurate for small and near-π angles
-            sum += gamma * glm::dot(n, c) / s;
-        }
-        ri = rj;
-    }
-    return std::clamp(std::abs(sum) / (2.0 * kPi), 0.0, 1.0);
+    return lambertSum(n, dir, count);
+}
+
+double formFactorToTriangle(const Vec3& x, const Vec3& n, const Vec3 vertices[3], const VertexView view[3],
+                            const Vec3& polyNormal) {
+    // The exits of formFactorToPolygon, in its order; a triangle x's horizon cuts is
+    // clipped there.
+    const double height = glm::dot(x - vertices[0], polyNormal);
+    if (height <= 0) return 0.0;
+    if (!(glm::dot(view[0].d, n) > 0 || glm::dot(view[1].d, n) > 0 || glm::dot(view[2].d, n) > 0)) return 0.0;
+    const double reach = std::max({view[0].r, view[1].r, view[2].r});
+    if (height <= kCoplanar * reach) return 0.0;
+    if (!(glm::dot(view[0].d, n) >= 0 && glm::dot(view[1].d, n) >= 0 && glm::dot(view[2].d, n) >= 0))
+        return formFactorToPolygon(x, n, vertices, 3, polyNormal);
+    const Vec3 dir[3] = {view[0].dir, view[1].dir, view[2].dir};
+    return lambertSum(n, dir, 3);
 }
 
 double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal,

@@ -23,6 +23,20 @@ double edgeAngle(double s, double c);
 /// polygon's front face. The illuminance from a uniform polygon of luminance L is π L F.
 double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal);
 
+/// A polygon's vertex v as a receiving point x sees it: d = v − x, r = |d|, dir = d / r
+/// (what Lambert's formula starts from; a subdivision shares its vertices' views).
+struct VertexView {
+    Vec3 d{0.0};
+    double r = 0;
+    Vec3 dir{0.0};
+};
+VertexView viewFrom(const Vec3& x, const Vec3& v);
+
+/// formFactorToPolygon for a triangle whose vertices' views from x are known: the same
+/// value to the bit.
+double formFactorToTriangle(const Vec3& x, const Vec3& n, const Vec3 vertices[3], const VertexView view[3],
+                            const Vec3& polyNormal);
+
 /// Point approximation of the same quantity for a small source of area A at `center`:
 ///   F ≈ A cosθ_x cosθ_s / (π r²), valid when r ≫ the source size.
 double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal, double area);

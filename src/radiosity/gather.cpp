@@ -220,19 +220,28 @@ void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePo
 
 Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
                               int depth, double knownF) const {
+    const VertexView view[3] = {viewFrom(x, p[0]), viewFrom(x, p[1]), viewFrom(x, p[2])};
+    return integrateLinear(x, n, p, view, L, normal, depth, knownF);
+}
+
+Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const VertexView view[3], const Rgb L[3],
+                              const Vec3& normal, int depth, double knownF) const {
     Vec3 c = (p[0] + p[1] + p[2]) / 3.0;
     double size = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
-    double dist = std::min({glm::length(c - x), glm::length(p[0] - x), glm::length(p[1] - x), glm::length(p[2] - x)});
+    double dist = std::min({glm::length(c - x), view[0].r, view[1].r, view[2].r});
     if (depth < m_options.maxSplitDepth && dist < kSplitRatio * size) {
+        // Each new vertex is seen from x once, for the two or three children it is a corner of.
         Vec3 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
+        const VertexView v01 = viewFrom(x, m01), v12 = viewFrom(x, m12), v20 = viewFrom(x, m20);
         Rgb l01 = 0.5 * (L[0] + L[1]), l12 = 0.5 * (L[1] + L[2]), l20 = 0.5 * (L[2] + L[0]);
         const Vec3 t[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};
+        const VertexView tv[4][3] = {{view[0], v01, v20}, {v01, view[1], v12}, {v20, v12, view[2]}, {v01, v12, v20}};
         const Rgb l[4][3] = {{L[0], l01, l20}, {l01, L[1], l12}, {l20, l12, L[2]}, {l01, l12, l20}};
         Rgb sum(0.0);
-        for (int k = 0; k < 4; ++k) sum += integrateLinear(x, n, t[k], l[k], normal, depth + 1);
+        for (int k = 0; k < 4; ++k) sum += integrateLinear(x, n, t[k], tv[k], l[k], normal, depth + 1);
         return sum;
     }
-    const double f = knownF >= 0 ? knownF : formFactorToPolygon(x, n, p, 3, normal);
+    const double f = knownF >= 0 ? knownF : formFactorToTriangle(x, n, p, view, normal);
     if (f <= 0 || !m_vis.visibleFromSurface(x, n, c)) return Rgb(0.0);
     return (L[0] + L[1] + L[2]) / 3.0 * (kPi * f);  // E = π L(centroid) F
 }

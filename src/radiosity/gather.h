@@ -5,6 +5,7 @@
 #include <core/visibility.h>
 #include <radiosity/clusters.h>
 #include <radiosity/far_field.h>
+#include <radiosity/form_factor.h>
 #include <radiosity/member_tree.h>
 #include <radiosity/mirror_images.h>
 #include <radiosity/patch_mesh.h>
@@ -219,7 +220,10 @@ class Gatherer {
                     std::vector<NearPiece>& pieces) const;
     /// E at x from the triangle p of linear luminance L, split toward x while closer than
     /// its size. `knownF` ≥ 0: the triangle's form factor, already computed (a near
-    /// patch left whole), used when it is not split.
+    /// patch left whole), used when it is not split. `view`: p's vertices as x sees them
+    /// (viewFrom), shared by a split's children.
+    Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const VertexView view[3], const Rgb L[3],
+                        const Vec3& normal, int depth, double knownF = -1) const;
     Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
                         int depth, double knownF = -1) const;
 
