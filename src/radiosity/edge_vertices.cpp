@@ -162,6 +162,9 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
     };
     std::atomic<size_t> done{0};
     const double total = static_cast<double>(seams) * levels + static_cast<double>(points.size() - seams);
+    // Each point's near patches, found once for its two parts and its rounds (the search
+    // visits every cluster).
+    std::vector<std::vector<uint32_t>> nearSets(points.size());
     for (int round = 0; round < levels; ++round) {
         tbb::parallel_for(size_t(0), points.size(), [&](size_t k) {
             const GatherPoint& g = points[k];
@@ -170,10 +173,14 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
                 current[k] = previous[k];
                 return;
             }
-            if (round == 0)
+            if (round == 0) {
+                nearSets[k] = gatherer.nearPatches({g.at, g.at});
                 rest[k] = gatherer.gatherWith(g.at, g.normal, &corners, false, nullptr, 1, Part::AllButNear,
-                                              luminance(solution.vertexIndirect[g.vertex]));
-            current[k] = rest[k] + gatherer.gatherWith(g.at, g.normal, &corners, /*parallel=*/false, nullptr, 1, Part::Near);
+                                              luminance(solution.vertexIndirect[g.vertex]), &nearSets[k]);
+            }
+            current[k] = rest[k] + gatherer.gatherWith(g.at, g.normal, &corners, /*parallel=*/false, nullptr, 1,
+                                                       Part::Near, 0, &nearSets[k]);
+            if (round + 1 == levels || k >= seams) std::vector<uint32_t>().swap(nearSets[k]);  // not needed again
             size_t n = ++done;
             if (onProgress && n % 16 == 0) onProgress(static_cast<double>(n) / total);
         });

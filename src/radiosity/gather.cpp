@@ -342,6 +342,11 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         }
         for (const Candidate& e : candidates) {
             const uint32_t j = e.patch;
+            if (nearClusters.empty() || nearClusters.back().cluster != e.cluster)
+                nearClusters.push_back({e.cluster, near.size(), near.size()});
+            near.push_back({j, m_treePosition[j], {}, e.F});
+            nearClusters.back().end = near.size();
+            if (part == Part::AllButNear) continue;  // which patches are near is all it needs
             const Patch& p = m_mesh.patches[j];
             const Rgb rho = patchReflectance(m_scene, m_mesh, j);
             const bool sliver = 2 * p.area < m_options.minRefineWidth * p.diameter;
@@ -352,9 +357,6 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 const Rgb indirect = detailed ? (*cornerIndirectOf)(j, k, e.share) : solutionCorner(j, k);
                 corners[k] = {m_mesh.corner(p, k), p.v[k], rho * (E + indirect) / kPi, E};
             }
-            if (nearClusters.empty() || nearClusters.back().cluster != e.cluster)
-                nearClusters.push_back({e.cluster, near.size(), near.size()});
-            near.push_back({j, m_treePosition[j], {}, e.F});
             // A piece is refined while its midpoints depart from linear by more than the
             // tolerance; patches holding less than 1/kRefineShares of the near field's share
             // may depart more, in proportion (400 slivers of a sofa do not each need it), and
@@ -363,7 +365,6 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                                      std::max(1.0, shareSum / (kRefineShares * e.share)) /
                                      (m_options.minWeight > 0 ? weight : 1.0);
             refineNear(x, j, corners, 0, detailed && !sliver ? midpoints : nullptr, e.share, tolerance, near.back().pieces);
-            nearClusters.back().end = near.size();
         }
         for (const NearCluster& c : nearClusters)
             std::sort(near.begin() + static_cast<std::ptrdiff_t>(c.begin), near.begin() + static_cast<std::ptrdiff_t>(c.end),
