@@ -155,6 +155,7 @@ void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
     solver.solve(run.solution, std::ref(observer), [&](const radiosity::RadiositySolution& s) {
         // Progress in log space from the first reflection down to the stopping threshold
         // (radiosity.stop_unshot × the emitted flux).
+        if (!(s.initialUnshotFlux > 0)) return;  // nothing to shoot: converged at once
         const double left = s.remainingUnshotFlux / s.initialUnshotFlux;
         const double target = run.scene.solver.stopUnshot * s.unshotReference() / s.initialUnshotFlux;
         const double done = left > 0 && target < 1 ? std::log(left) / std::log(target) : 1.0;

@@ -88,7 +88,13 @@ VertexView viewFrom(const Vec3& x, const Vec3& v) {
     return view;
 }
 
-double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal) {
+namespace {
+
+/// Lambert's formula with the vertices' views from x given by viewOf(i) (computed, or
+/// known from a subdivision): formFactorToPolygon's exits, clipping and sum.
+template <class ViewOf>
+double lambertFormFactor(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal,
+                         ViewOf viewOf) {
     // One-sided source: x must be in front of the polygon's plane by more than rounding.
     // A point in the plane itself (on the source, or on a coplanar neighbour of it) would
     // otherwise see the polygon fill its whole hemisphere (F = 1) whenever rounding puts
@@ -107,7 +113,7 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
     double reach = 0;
     bool allFront = true;
     for (int i = 0; i < count; ++i) {
-        const VertexView view = viewFrom(x, vertices[i]);
+        const VertexView view = viewOf(i);
         reach = std::max(reach, view.r);
         allFront &= glm::dot(view.d, n) >= 0;
         dir[i] = view.dir;
@@ -125,19 +131,15 @@ double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, i
     return lambertSum(n, dir, count);
 }
 
+}  // namespace
+
+double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal) {
+    return lambertFormFactor(x, n, vertices, count, polyNormal, [&](int i) { return viewFrom(x, vertices[i]); });
+}
+
 double formFactorToTriangle(const Vec3& x, const Vec3& n, const Vec3 vertices[3], const VertexView view[3],
                             const Vec3& polyNormal) {
-    // The exits of formFactorToPolygon, in its order; a triangle x's horizon cuts is
-    // clipped there.
-    const double height = glm::dot(x - vertices[0], polyNormal);
-    if (height <= 0) return 0.0;
-    if (!(glm::dot(view[0].d, n) > 0 || glm::dot(view[1].d, n) > 0 || glm::dot(view[2].d, n) > 0)) return 0.0;
-    const double reach = std::max({view[0].r, view[1].r, view[2].r});
-    if (height <= kCoplanar * reach) return 0.0;
-    if (!(glm::dot(view[0].d, n) >= 0 && glm::dot(view[1].d, n) >= 0 && glm::dot(view[2].d, n) >= 0))
-        return formFactorToPolygon(x, n, vertices, 3, polyNormal);
-    const Vec3 dir[3] = {view[0].dir, view[1].dir, view[2].dir};
-    return lambertSum(n, dir, 3);
+    return lambertFormFactor(x, n, vertices, 3, polyNormal, [&](int i) { return view[i]; });
 }
 
 double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal,
