@@ -16,8 +16,8 @@ constexpr double kCoplanar = 1e-9;
 /// Clipped polygons of up to this many vertices stay on the stack.
 constexpr int kStackClipped = 32;
 
-/// Sutherland–Hodgman: keeps the part of the polygon with dot(p − x, n) ≥ 0. Each input
-/// edge adds at most two output vertices, so `out` needs room for 2·count.
+}  // namespace
+
 int clipToFront(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* out) {
     int m = 0;
     for (int i = 0; i < count; ++i) {
@@ -29,6 +29,8 @@ int clipToFront(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* o
     }
     return m;
 }
+
+namespace {
 
 /// atan(k / 16) for k = 0 … 16: the points the angle is reduced to.
 const std::array<double, 17> kAtanTable = [] {

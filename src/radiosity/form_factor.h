@@ -23,6 +23,10 @@ double edgeAngle(double s, double c);
 /// polygon's front face. The illuminance from a uniform polygon of luminance L is π L F.
 double formFactorToPolygon(const Vec3& x, const Vec3& n, const Vec3* vertices, int count, const Vec3& polyNormal);
 
+/// Sutherland–Hodgman: the part of the polygon with (p − x)·n ≥ 0, written to `out`
+/// (room for 2·count vertices); returns its vertex count.
+int clipToFront(const Vec3& x, const Vec3& n, const Vec3* in, int count, Vec3* out);
+
 /// A polygon's vertex v as a receiving point x sees it: d = v − x, r = |d|, dir = d / r
 /// (what Lambert's formula starts from; a subdivision shares its vertices' views).
 struct VertexView {

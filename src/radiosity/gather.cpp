@@ -3,6 +3,7 @@
 
 #include <core/ray_batch.h>
 #include <radiosity/form_factor.h>
+#include <radiosity/form_factor_centroid.h>
 #include <radiosity/mesher.h>
 #include <radiosity/patch_transfer.h>
 #include <radiosity/visibility_share.h>
@@ -221,15 +222,40 @@ void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePo
 Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
                               int depth, double knownF) const {
     const VertexView view[3] = {viewFrom(x, p[0]), viewFrom(x, p[1]), viewFrom(x, p[2])};
-    return integrateLinear(x, n, p, view, L, normal, depth, knownF);
+    return integrateLinear(x, n, p, view, L, normal, depth, knownF, /*wholeIfSeen=*/true);
+}
+
+bool Gatherer::seenWhole(const Vec3& x, const Vec3& n, const Vec3 p[3], const Vec3& lightCentre) const {
+    // Where its light comes from first (the likeliest to be hidden), then a point toward
+    // each corner (barycentrics 2/3, 1/6, 1/6); points behind x's plane send nothing and
+    // are not asked.
+    const Vec3 targets[4] = {lightCentre, (4.0 * p[0] + p[1] + p[2]) / 6.0, (p[0] + 4.0 * p[1] + p[2]) / 6.0,
+                             (p[0] + p[1] + 4.0 * p[2]) / 6.0};
+    for (const Vec3& y : targets)
+        if (glm::dot(y - x, n) > 0 && !m_vis.visibleFromSurface(x, n, y)) return false;
+    return true;
 }
 
 Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const VertexView view[3], const Rgb L[3],
-                              const Vec3& normal, int depth, double knownF) const {
+                              const Vec3& normal, int depth, double knownF, bool wholeIfSeen) const {
     Vec3 c = (p[0] + p[1] + p[2]) / 3.0;
     double size = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
     double dist = std::min({glm::length(c - x), view[0].r, view[1].r, view[2].r});
-    if (depth < m_options.maxSplitDepth && dist < kSplitRatio * size) {
+    const bool close = depth < m_options.maxSplitDepth && dist < kSplitRatio * size;
+    if (close && wholeIfSeen) {
+        // Wholly seen, a close piece needs no split: its linear luminance integrates exactly,
+        // E = π F L(c_F) (form_factor_centroid.h). Partly hidden, it is split as below, and
+        // its pieces are not asked again.
+        const FormFactorCentroid light = formFactorCentroid(x, n, p, 3, normal);
+        if (!(light.F > 0)) return Rgb(0.0);
+        if (seenWhole(x, n, p, light.centroid)) {
+            // c_F lies in the triangle: barycentrics outside it are rounding, clamped.
+            Vec3 w = glm::max(barycentric(p[0], p[1], p[2], light.centroid), Vec3(0.0));
+            w /= w[0] + w[1] + w[2];
+            return (w[0] * L[0] + w[1] * L[1] + w[2] * L[2]) * (kPi * light.F);
+        }
+    }
+    if (close) {
         // Each new vertex is seen from x once, for the two or three children it is a corner of.
         Vec3 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
         const VertexView v01 = viewFrom(x, m01), v12 = viewFrom(x, m12), v20 = viewFrom(x, m20);
@@ -238,7 +264,7 @@ Rgb Gatherer::integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], con
         const VertexView tv[4][3] = {{view[0], v01, v20}, {v01, view[1], v12}, {v20, v12, view[2]}, {v01, v12, v20}};
         const Rgb l[4][3] = {{L[0], l01, l20}, {l01, L[1], l12}, {l20, l12, L[2]}, {l01, l12, l20}};
         Rgb sum(0.0);
-        for (int k = 0; k < 4; ++k) sum += integrateLinear(x, n, t[k], tv[k], l[k], normal, depth + 1);
+        for (int k = 0; k < 4; ++k) sum += integrateLinear(x, n, t[k], tv[k], l[k], normal, depth + 1, -1, false);
         return sum;
     }
     const double f = knownF >= 0 ? knownF : formFactorToTriangle(x, n, p, view, normal);

@@ -222,8 +222,14 @@ class Gatherer {
     /// its size. `knownF` ≥ 0: the triangle's form factor, already computed (a near
     /// patch left whole), used when it is not split. `view`: p's vertices as x sees them
     /// (viewFrom), shared by a split's children.
+    /// `wholeIfSeen`: a piece closer than its size that x sees wholly (seenWhole) is
+    /// integrated exactly in one step, π F L(c_F); one partly hidden is split, and its
+    /// pieces are not asked again.
     Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const VertexView view[3], const Rgb L[3],
-                        const Vec3& normal, int depth, double knownF = -1) const;
+                        const Vec3& normal, int depth, double knownF, bool wholeIfSeen) const;
+    /// True when the visibility rays from x to the triangle's `lightCentre` (its form
+    /// factor's centroid) and to a point toward each corner all pass.
+    bool seenWhole(const Vec3& x, const Vec3& n, const Vec3 p[3], const Vec3& lightCentre) const;
     Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
                         int depth, double knownF = -1) const;
 
