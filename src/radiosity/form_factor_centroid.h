@@ -8,7 +8,7 @@
 
 namespace rayrad::radiosity {
 
-/// F(dA_x → polygon), unoccluded (Lambert's formula, as formFactorToPolygon: the polygon
+/// F(dA_x → polygon), unoccluded (Lambert's formula, formFactorToPolygon, on the polygon
 /// clipped to the half space in front of x), and the kernel-weighted centroid
 ///   c_F = ∫_P y K(x, y) dA / F,  K = cosθ_x cosθ_y / (π r²),
 /// a point of the (clipped) polygon.

@@ -96,8 +96,8 @@ class GatherMemo {
 /// nearly all of that wall's contribution comes from right beside the point): L_j linear
 /// over the triangle from its corner values, integrated exactly (π F L(c_F),
 /// form_factor_centroid.h) where x sees a piece whole and over sub-triangles refined
-/// toward x where it is partly hidden. Corner values are exact direct light plus indirect light gathered at the
-/// corner itself, recursively `levels` deep (memoised), which removes the bias of
+/// toward x where it is partly hidden. Corner values are exact direct light plus indirect
+/// light gathered at the corner itself, recursively `levels` deep (memoised), which removes the bias of
 /// patch-constant luminance at edges and corners.
 /// Near patches of the top `refineLevels` gathers are refined further: a linear
 /// luminance misses the indirect light's fall-off into concave edges and corners (a
