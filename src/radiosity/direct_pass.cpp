@@ -53,8 +53,13 @@ constexpr int kShadowSamples = 64;
 /// Sample points for an area light whose shadow edge crosses a patch: kShadowSamples for
 /// the patch's strongest light, fewer (the first of the same sequence) in proportion to
 /// a weaker light's unshadowed illuminance, so each light's error in lx is about the
-/// strongest one's; at least this many.
-constexpr int kMinAreaShadowSamples = 16;
+/// strongest one's; at least this many. (In the bench hall, 100 troffers, a floor patch
+/// is crossed by the shadow edges of a dozen weak lights: a floor of 16 gave them 2.5
+/// times the points the rule asks for and cost 2.2 of the direct pass's 12 CPU-s. Against
+/// 256 points for every light, the image is within 0.03 % at the 95th percentile with 4,
+/// 0.016 % with 16, and grids of 200 sensors on floor and ceiling within 0.17 % with
+/// either.)
+constexpr int kMinAreaShadowSamples = 4;
 
 /// The direct light at one evaluation point: where it is, the total E (lx) and each
 /// source's share and unshadowed value (DirectLight::illuminance's perSource/perSourceOpen).
