@@ -47,10 +47,21 @@ enum class ApertureCover { None, Whole, Partial };
 /// shadows can be sharp within a pixel) and take each far light's F at their own point
 /// times the fraction found here: a far light's soft shadow is traced once per pixel and
 /// patch instead of at every sample. Images (mirrors) are tested at every sample.
+/// A far light's F at another sample is its point approximation there, A cosθ_x cosθ_y /
+/// (π r²), times the ratio F / point approximation found at the first: beyond five
+/// diameters that ratio is 1 + O((size / r)²) and changes across a pixel by a further
+/// factor footprint / r, and the second-order F (form_factor.h) costs several times more.
 struct PixelLightMemo {
+    /// A far area light (numbered as `retested`) and what its point approximation at
+    /// another sample is multiplied by: visible fraction × F / point approximation, both
+    /// at the first sample.
+    struct Far {
+        uint32_t light;
+        double scale;
+    };
     int64_t patch = -1;  ///< the patch of the hit that filled it; −1: empty (a new pixel)
     std::vector<uint32_t> retested;  ///< lights tested at every sample: points first, then area lights
-    std::vector<std::pair<uint32_t, double>> far;  ///< a far area light (same numbering), its visible fraction
+    std::vector<Far> far;
     Rgb untested{0.0};  ///< lx: the untested lights' estimate
 };
 

@@ -88,8 +88,10 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
             v = light.luminance * (c.factor * visibleFraction(light, x, n, vis, samples, rng));
         } else {  // far: its visible fraction is kept for the pixel's other samples
             double visible = 0;
-            v = fromAreaLight(m_areaLights[c.light - points], x, n, vis, samples, rng, nullptr, &visible);
-            if (pixel) pixel->far.push_back({c.light, visible});
+            Rgb open(0.0);
+            v = fromAreaLight(m_areaLights[c.light - points], x, n, vis, samples, rng, &open, &visible);
+            // c.factor is its point approximation A cosθ_x cosθ_y / r² = π F_point (> 0: a candidate).
+            if (pixel) pixel->far.push_back({c.light, visible * luminance(open) / (luminance(colourOf(c.light)) * c.factor)});
         }
         if (pixel && (c.light < points || c.exact)) pixel->retested.push_back(c.light);
         e += v;
@@ -116,9 +118,10 @@ Rgb DirectLight::fromPixelMemo(const PixelLightMemo& pixel, const Vec3& x, const
         }
         e += fromAreaLight(m_areaLights[k - points], x, n, vis, samples, rng);  // near: Lambert's F, own rays
     }
-    for (const auto& [k, visible] : pixel.far) {
-        const AreaLight& light = m_areaLights[k - points];
-        e += light.luminance * (kPi * std::max(0.0, areaLightFormFactor(light, x, n)) * visible);
+    for (const PixelLightMemo::Far& f : pixel.far) {
+        const AreaLight& light = m_areaLights[f.light - points];
+        bool exact = false;  // far from this sample too: its point approximation
+        e += light.luminance * (unshadowedAreaFactor(light, x, n, exact) * f.scale);
     }
     return e + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
 }
