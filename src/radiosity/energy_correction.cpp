@@ -47,7 +47,7 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
         for (size_t k = 0; k < D.patches.size(); ++k) {
             uint32_t j = D.patches[k];
             receive(j, -(received * shape[k]));
-            moved.removed += received * shape[k] * m_mesh.patches[j].area;
+            moved.removed += received * shape[k] * m_patchArea[j];
         }
     }
     int64_t terms = 0;

@@ -40,6 +40,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];
         m_reflectance.push_back(fromRgb<V>(patchReflectance(scene, mesh, i)));
+        m_patchArea.push_back(p.area);
         m_meanReflectance += m_reflectance.back() * p.area;
         m_area += p.area;
     }
@@ -74,7 +75,7 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     for (size_t i = 0; i < n; ++i) {
         m_direct[i] = fromRgb<V>(s.directMean[i]);
         m_unshot[i] = m_reflectance[i] * m_direct[i] / kPi;  // ΔL = ρ E / π
-        meanDirect += lum(m_direct[i]) * m_mesh.patches[i].area;
+        meanDirect += lum(m_direct[i]) * m_patchArea[i];
     }
     if (m_area > 0) meanDirect /= m_area;
     // Mean illuminance with all bounces, estimated as Ē_dir / (1 − ρ̄).
@@ -84,7 +85,7 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     // Is the scene closed for the light that is in it? Rays leave from the patches in
     // proportion to their first reflected flux ρ E A.
     std::vector<double> firstFlux(n);
-    for (size_t i = 0; i < n; ++i) firstFlux[i] = lum(m_unshot[i]) * m_mesh.patches[i].area;
+    for (size_t i = 0; i < n; ++i) firstFlux[i] = lum(m_unshot[i]) * m_patchArea[i];
     m_stats.escapeFraction = escapeFraction(m_mesh, m_vis, 4 * m_scene.diagonal() + 1.0, firstFlux);
     // With mirrors, every path through them must be modelled (complete chains) for the
     // light shot to be accounted: delivered / Π Ks summed over images.
@@ -137,7 +138,7 @@ std::vector<ClusterLight> ShootingCore<V>::clusterLight() const {
 template <class V>
 double ShootingCore<V>::unshotFlux() const {
     double flux = 0;
-    for (size_t i = 0; i < m_mesh.patches.size(); ++i) flux += kPi * std::abs(lum(m_unshot[i])) * m_mesh.patches[i].area;
+    for (size_t i = 0; i < m_mesh.patches.size(); ++i) flux += kPi * std::abs(lum(m_unshot[i])) * m_patchArea[i];
     return flux;
 }
 
@@ -172,7 +173,7 @@ void ShootingCore<V>::receive(size_t j, const V& deltaE) {
     double before = std::abs(lum(m_unshot[j]));
     m_unshot[j] += deltaL;
     size_t c = m_clustering.clusterOf[j];
-    double w = m_mesh.patches[j].area / m_clustering.clusters[c].area;
+    double w = m_patchArea[j] / m_clustering.clusters[c].area;
     m_light[c].unshot += deltaL * w;  // pull up incrementally (eq. 1)
     m_light[c].total += deltaL * w;
     m_light[c].absUnshot += (std::abs(lum(m_unshot[j])) - before) * w;
@@ -184,7 +185,7 @@ void ShootingCore<V>::pull(size_t c) {
     V unshot(0.0), total(0.0), litReflectance(0.0);
     double absUnshot = 0;
     for (uint32_t j : C.patches) {
-        double a = m_mesh.patches[j].area;
+        double a = m_patchArea[j];
         unshot += m_unshot[j] * a;
         total += reflected(j) * a;
         absUnshot += std::abs(lum(m_unshot[j])) * a;
@@ -208,7 +209,7 @@ V ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e
     for (size_t k = 0; k < D.patches.size(); ++k) {
         uint32_t j = D.patches[k];
         m_shotPending[j] += e * shape[k];
-        flux += e * shape[k] * m_mesh.patches[j].area;
+        flux += e * shape[k] * m_patchArea[j];
     }
     return flux;
 }
@@ -287,7 +288,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         for (size_t k = 0; k < C.patches.size(); ++k) {
             uint32_t i = C.patches[k];
             total[k] = reflected(i) + overshoot[k];
-            shotPower[k] = lum(reflected(i) - m_unshot[i]) * m_mesh.patches[i].area;
+            shotPower[k] = lum(reflected(i) - m_unshot[i]) * m_patchArea[i];
         }
         const ClusterSamples shotSamples = powerSamples(C, shotPower);
         for (size_t si = 0; si < m_sources.size(); ++si) {
@@ -334,7 +335,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         uint32_t i = C.patches[k];
         unshot[k] = m_unshot[i] + overshoot[k];
         m_unshot[i] = -overshoot[k];
-        double a = m_mesh.patches[i].area;
+        double a = m_patchArea[i];
         unshotPower[k] = lum(unshot[k]) * a;
         shotFlux += kPi * unshotPower[k];
         deltaLC += unshot[k] * a;
@@ -450,7 +451,7 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
                 for (size_t k = range.begin(); k != range.end(); ++k)
                     for (uint32_t j : m_clustering.clusters[reached[k]].patches)
                         for (const V& e : {m_shotE[j], m_shotPending[j]}) {
-                            double flux = lum(e) * m_mesh.patches[j].area;
+                            double flux = lum(e) * m_patchArea[j];
                             sum.first += flux, sum.second += std::abs(flux);
                         }
                 return sum;
@@ -481,7 +482,7 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
             if (m_shotPending[j] != V(0.0)) {  // I_D joins the pending light, pushed down later
                 V e = adjusted(m_shotPending[j]);
                 m_pending[j] += e;
-                reflectedSum += m_reflectance[j] * e * m_mesh.patches[j].area;
+                reflectedSum += m_reflectance[j] * e * m_patchArea[j];
                 m_shotPending[j] = V(0.0);
             }
         }

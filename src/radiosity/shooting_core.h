@@ -183,6 +183,7 @@ class ShootingCore final : public ShootingCoreBase {
     scene::ClusterOptions m_clusterOptions;
     double m_maxStep = 0;
     std::vector<V> m_reflectance, m_direct, m_indirect, m_unshot, m_pending;
+    std::vector<double> m_patchArea;  ///< m², per patch: the per-shot loops read it apart from the Patch records
     std::vector<Light> m_light;
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
     std::vector<Source> m_sources;  ///< the real scene first, then one per image
