@@ -28,13 +28,14 @@ typename ShootingCore<V>::Emission ShootingCore<V>::emission(const Shooter& from
 }
 
 template <class V>
-V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, const Emission& light,
-                                size_t receiver, std::vector<V>& into, int64_t& terms) {
+typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c,
+                                                                 const Emission& light, size_t receiver,
+                                                                 std::vector<V>& into, int64_t& terms) {
     const Cluster& D = m_clustering.clusters[receiver];
     const Cluster& C = from.cluster();
     const MemberTree& tree = m_trees[c];
     const std::vector<V>& amount = light.amount;
-    V flux(0.0);
+    Delivery out;
     bool reached = false;
     for (uint32_t j : D.patches) {
         const Patch& rec = m_mesh.patches[j];
@@ -93,11 +94,12 @@ V ShootingCore<V>::shootPatches(const Source& s, const Shooter& from, size_t c, 
         });
         rays.flush();
         into[j] += deltaE;
-        flux += deltaE * rec.area;
-        reached |= deltaE != V(0.0);  // deliveries of both signs may cancel in `flux`
+        out.flux += deltaE * m_patchArea[j];
+        out.magnitude += std::abs(lum(deltaE)) * m_patchArea[j];
+        reached |= deltaE != V(0.0);  // deliveries of both signs may cancel in the flux
     }
     if (reached) m_reached[receiver] = 1;
-    return flux;
+    return out;
 }
 
 template <class V>
@@ -129,9 +131,9 @@ double ShootingCore<V>::intoMirrorBacks(const Cluster& C, const std::vector<doub
 template ShootingCore<double>::Emission ShootingCore<double>::emission(const Shooter&, size_t,
                                                                       const std::vector<double>&) const;
 template ShootingCore<Rgb>::Emission ShootingCore<Rgb>::emission(const Shooter&, size_t, const std::vector<Rgb>&) const;
-template double ShootingCore<double>::shootPatches(const Source&, const Shooter&, size_t, const Emission&, size_t,
+template ShootingCore<double>::Delivery ShootingCore<double>::shootPatches(const Source&, const Shooter&, size_t, const Emission&, size_t,
                                                    std::vector<double>&, int64_t&);
-template Rgb ShootingCore<Rgb>::shootPatches(const Source&, const Shooter&, size_t, const Emission&, size_t,
+template ShootingCore<Rgb>::Delivery ShootingCore<Rgb>::shootPatches(const Source&, const Shooter&, size_t, const Emission&, size_t,
                                              std::vector<Rgb>&, int64_t&);
 template ShootingCore<double>::Shooter ShootingCore<double>::shooter(const Source&, size_t) const;
 template ShootingCore<Rgb>::Shooter ShootingCore<Rgb>::shooter(const Source&, size_t) const;

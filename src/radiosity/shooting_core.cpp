@@ -198,20 +198,22 @@ void ShootingCore<V>::pull(size_t c) {
 }
 
 template <class V>
-V ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e, const std::vector<double>* visible) {
+typename ShootingCore<V>::Delivery ShootingCore<V>::addPending(const Cluster& source, size_t receiver, const V& e,
+                                                               const std::vector<double>* visible) {
     const Cluster& D = m_clustering.clusters[receiver];
     thread_local std::vector<double> shape;
     receiverShape(m_mesh, source, D, m_clusterOptions.receiverDetail, shape);
     if (visible)
         for (size_t k = 0; k < shape.size(); ++k) shape[k] *= (*visible)[k];
-    V flux(0.0);
+    Delivery out;
     m_reached[receiver] = 1;
     for (size_t k = 0; k < D.patches.size(); ++k) {
         uint32_t j = D.patches[k];
         m_shotPending[j] += e * shape[k];
-        flux += e * shape[k] * m_patchArea[j];
+        out.flux += e * shape[k] * m_patchArea[j];
     }
-    return flux;
+    out.magnitude = std::abs(lum(out.flux));  // every member's share has the sign of e (shape ≥ 0)
+    return out;
 }
 
 template <class V>
@@ -278,7 +280,16 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
     double redelivered = 0;  // lm (at the source) of earlier shots the corrections took away
     const bool throughMirrors = m_sources.size() > 1;
-    AtSource delivered;      // with mirrors: this shot's deliveries at the source
+    AtSource delivered;      // this shot's deliveries at the source
+    // A receiver's delivery in the account: its net flux at the source, and its magnitude
+    // per patch (exact: without mirrors each receiver gets one delivery per shot) or, through
+    // mirrors, per receiver and source.
+    auto book = [&](const Source& s, const Delivery& d) {
+        const double net = lum(atSource(d.flux, s.weight));
+        delivered.net += net;
+        delivered.magnitude += throughMirrors ? std::abs(net) : d.magnitude;
+        if (s.image) delivered.mirrorLoss += lum(mirrorLoss(d.flux, s.weight));
+    };
 
     if (correcting && light.radius > 0 && r > light.radius) {
         // r_v grew: the ring old ≤ d < new switches from cluster→cluster to patch→patch,
@@ -313,11 +324,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
             }
             for (const Correction& m : moved) {
                 redelivered += lum(atSource(m.removed, s.weight));
-                if (throughMirrors) delivered.add(lum(atSource(m.delivered, s.weight)));
-                if (s.image) {
-                    m_stats.mirrorAbsorbed -= lum(mirrorLoss(m.removed, s.weight));
-                    delivered.mirrorLoss += lum(mirrorLoss(m.delivered, s.weight));
-                }
+                book(s, m.delivered);
+                if (s.image) m_stats.mirrorAbsorbed -= lum(mirrorLoss(m.removed, s.weight));
             }
             for (size_t d : ring) corrected[si][d] = 1;
             m_stats.corrections += static_cast<int64_t>(ring.size());
@@ -355,9 +363,9 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         const Cluster& Cs = from.cluster();
         const ClusterSamples localSamples = from.local(samples);
         std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, patchPairs{0}, lit{0};
-        // Deliveries per receiver when shooting through mirrors too, for the mirrors'
-        // account and the conservation (summed in order).
-        std::vector<V> deliveredTo(throughMirrors ? n : 0, V(0.0));
+        // Deliveries per receiver, for the conservation and the mirrors' account (summed
+        // in order: deterministic).
+        std::vector<Delivery> deliveredTo(n);
         // Through a mirror chain, the voxels light can reach at all.
         std::vector<char> regionOpen(s.image ? m_regions.regions.size() : 0);
         for (size_t k = 0; k < regionOpen.size(); ++k)
@@ -381,16 +389,14 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 SplitTransfer parts;
                 double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
                                            m_clusterOptions.receiverDetail, &from.geometry, &parts);
-                V flux(0.0);
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V
                     thread_local std::vector<double> visible;
                     memberVisibility(from.mesh(), localSamples, m_mesh, D, *s.vis, visible);
-                    flux = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++split;
-                    if (flux != V(0.0)) ++carried;  // every member's rays may have been blocked
+                    deliveredTo[d] = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++split;
+                    if (deliveredTo[d].flux != V(0.0)) ++carried;  // every member's rays may have been blocked
                 } else if (t > 0) {
-                    flux = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
+                    deliveredTo[d] = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
                 }
-                if (throughMirrors) deliveredTo[d] = flux;
                 ++cc;
             }
             clusterTransfers += cc;
@@ -407,8 +413,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 int64_t pp = 0;
                 for (size_t k = range.begin(); k != range.end(); ++k) {
                     const size_t d = nearReceivers[k];
-                    V flux = shootPatches(s, from, c, shotLight, d, m_shotE, pp);
-                    if (throughMirrors) deliveredTo[d] = flux;
+                    deliveredTo[d] = shootPatches(s, from, c, shotLight, d, m_shotE, pp);
                 }
                 patchPairs += pp;
             });
@@ -417,22 +422,19 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         m_stats.splitTransfers += splitTransfers;
         if (s.image) m_stats.imageTransfers += clusterTransfers, m_stats.imageTransfersLit += lit;
         m_stats.patchPairs += patchPairs;
-        for (const V& flux : deliveredTo) {
-            delivered.add(lum(atSource(flux, s.weight)));
-            if (s.image) delivered.mirrorLoss += lum(mirrorLoss(flux, s.weight));
-        }
+        for (const Delivery& d : deliveredTo) book(s, d);
     }
     if (!m_mirrorBacks.empty()) {  // what goes into a mirror's back is absorbed there, not delivered
         double back = intoMirrorBacks(C, unshotPower);
         shotFlux -= back;
         m_stats.mirrorAbsorbed += back;
     }
-    deliver(shotFlux, redelivered, throughMirrors ? &delivered : nullptr);
+    deliver(shotFlux, redelivered, delivered);
     light.radius = r;
 }
 
 template <class V>
-void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSource* delivered) {
+void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSource& delivered) {
     std::vector<uint32_t> reached;  // the clusters with deliveries waiting, in index order
     for (size_t d = 0; d < m_reached.size(); ++d)
         if (m_reached[d]) reached.push_back(static_cast<uint32_t>(d)), m_reached[d] = 0;
@@ -444,32 +446,18 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     // cluster ships light of both signs.
     double adjust = 0;  // δ / Σ|ΔE_k| A_k
     if (m_conserve) {
-        using Sums = std::pair<double, double>;  // signed and absolute received flux, lm
-        Sums received = delivered ? Sums{delivered->net, delivered->magnitude} : tbb::parallel_deterministic_reduce(
-            tbb::blocked_range<size_t>(0, reached.size(), 16), Sums{0.0, 0.0},
-            [&](const tbb::blocked_range<size_t>& range, Sums sum) {
-                for (size_t k = range.begin(); k != range.end(); ++k)
-                    for (uint32_t j : m_clustering.clusters[reached[k]].patches)
-                        for (const V& e : {m_shotE[j], m_shotPending[j]}) {
-                            double flux = lum(e) * m_patchArea[j];
-                            sum.first += flux, sum.second += std::abs(flux);
-                        }
-                return sum;
-            },
-            [](const Sums& a, const Sums& b) { return Sums{a.first + b.first, a.second + b.second}; });
-        double deficit = shotFlux + redelivered - received.first;
-        if (received.second > 0 && std::abs(deficit) <= kConservationBound * received.second) {
-            adjust = deficit / received.second;
+        const double deficit = shotFlux + redelivered - delivered.net;
+        if (delivered.magnitude > 0 && std::abs(deficit) <= kConservationBound * delivered.magnitude) {
+            adjust = deficit / delivered.magnitude;
             m_stats.largestRescale = std::max(m_stats.largestRescale, std::abs(adjust));
         } else if (shotFlux != 0) {
             ++m_stats.unbalancedShots;
         }
     }
     auto adjusted = [adjust](const V& e) { return e * (1.0 + (lum(e) < 0 ? -adjust : adjust)); };
-    if (delivered) {  // the mirrors absorb in proportion to what they pass on
-        const double loss = delivered->mirrorLoss;
-        m_stats.mirrorAbsorbed += loss * (1.0 + (loss < 0 ? -adjust : adjust));
-    }
+    // The mirrors absorb in proportion to what they pass on.
+    const double loss = delivered.mirrorLoss;
+    m_stats.mirrorAbsorbed += loss * (1.0 + (loss < 0 ? -adjust : adjust));
     tbb::parallel_for(size_t(0), reached.size(), [&](size_t k) {
         const size_t d = reached[k];
         const Cluster& D = m_clustering.clusters[d];

@@ -118,35 +118,44 @@ class ShootingCore final : public ShootingCoreBase {
     int radiusFor(size_t c) const;
     void pushPull(size_t c);
     void pull(size_t c);
+    /// What one call delivered to a receiver cluster's members: the flux Σ ΔE_j A_j (lm
+    /// per channel) and its magnitude Σ |Y(ΔE_j)| A_j (lm; larger where deliveries of both
+    /// signs meet, which overshooting ships). Summed as they are made, so that a shot's
+    /// conservation needs no pass over the patches it reached.
+    struct Delivery {
+        V flux{0.0};
+        double magnitude = 0;
+    };
     /// A cluster→cluster shot: adds e · shape_k (see receiverShape), × visible[k] when
     /// given (memberVisibility), to this shot's pending illuminance of the receiver's
-    /// members (m_shotPending). Returns the flux delivered, Σ e shape_k A_k (lm per channel).
-    V addPending(const Cluster& source, size_t receiver, const V& e, const std::vector<double>* visible = nullptr);
+    /// members (m_shotPending).
+    Delivery addPending(const Cluster& source, size_t receiver, const V& e, const std::vector<double>* visible = nullptr);
     void receive(size_t j, const V& deltaE);
     /// Patch→patch from cluster c of source s (as `from` shows it) to the receiver's
-    /// patches: adds ΔE_j to into[j]. Returns the flux delivered, Σ ΔE_j A_j (lm per channel).
-    /// `terms` counts the source terms evaluated (members and far nodes, per receiver patch).
-    V shootPatches(const Source& s, const Shooter& from, size_t c, const Emission& light, size_t receiver,
-                   std::vector<V>& into, int64_t& terms);
+    /// patches: adds ΔE_j to into[j]. `terms` counts the source terms evaluated (members
+    /// and far nodes, per receiver patch).
+    Delivery shootPatches(const Source& s, const Shooter& from, size_t c, const Emission& light, size_t receiver,
+                          std::vector<V>& into, int64_t& terms);
     /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
     /// the flux shot when conserving.
     /// Flux a shot delivered, counted where it left the shooter (through mirrors:
-    /// delivered / Π Ks), lm: signed, and Σ of magnitudes per receiver and source; and
-    /// what the mirrors absorbed of it (lm, before the conservation's adjustment).
+    /// delivered / Π Ks), lm: signed, and its magnitude — per patch (Delivery) when the
+    /// scene has no mirrors, so the conservation below is exact; through mirrors per
+    /// receiver and source — and what the mirrors absorbed of it (lm, before the
+    /// conservation's adjustment).
     struct AtSource {
         double net = 0, magnitude = 0, mirrorLoss = 0;
-        void add(double flux) { net += flux, magnitude += std::abs(flux); }
     };
     /// `redelivered`: the flux (lm, at the source) this shot's corrections took away to
-    /// deliver again. `delivered`: the shot's deliveries at the source, when it shot
-    /// through mirrors too (else they are summed from the per-patch buffers).
-    void deliver(double shotFlux, double redelivered, const AtSource* delivered);
+    /// deliver again; `delivered`: the shot's deliveries at the source.
+    void deliver(double shotFlux, double redelivered, const AtSource& delivered);
     /// E_amb in lx: the illuminance the unshot power will still add everywhere (overshooting).
     V ambientIlluminance() const;
     /// What a correction moved, lm per channel: the history taken away, and the flux
     /// delivered patch→patch in its place.
     struct Correction {
-        V removed{0.0}, delivered{0.0};
+        V removed{0.0};
+        Delivery delivered;
     };
     Correction correct(const Source& s, const Shooter& from, size_t c, size_t d, const ClusterSamples& shotSamples,
                        const Emission& totalOfSource);  // energy_correction.cpp
