@@ -2,6 +2,8 @@
 #include <radiosity/cluster_transfer.h>
 #include <radiosity/shooting_core.h>
 
+#include <tbb/parallel_for.h>
+
 namespace rayrad::radiosity {
 
 /// When the shooter C's radius r_v grows, a receiver cluster D in the ring between the
@@ -56,10 +58,65 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
     return moved;
 }
 
+template <class V>
+double ShootingCore<V>::correctRing(size_t c, int r, const std::vector<V>& overshoot,
+                                    const std::vector<std::optional<Shooter>>& shooters,
+                                    std::vector<std::vector<char>>& corrected, AtSource& delivered) {
+    // The ring old ≤ d < new switches from cluster→cluster to patch→patch, for the real
+    // shooter and for each of its mirror images.
+    const Cluster& C = m_clustering.clusters[c];
+    const int old = m_light[c].radius;
+    std::vector<V> total(C.patches.size());  // what member i will have shipped after this shot
+    std::vector<double> shotPower(C.patches.size());  // what earlier shots carried, ≈ (L_i − ΔL_i) A_i
+    for (size_t k = 0; k < C.patches.size(); ++k) {
+        uint32_t i = C.patches[k];
+        total[k] = reflected(i) + overshoot[k];
+        shotPower[k] = lum(reflected(i) - m_unshot[i]) * m_patchArea[i];
+    }
+    const ClusterSamples shotSamples = powerSamples(C, shotPower);
+    double redelivered = 0;
+    for (size_t si = 0; si < m_sources.size(); ++si) {
+        const Source& s = m_sources[si];
+        if (!shooters[si]) continue;
+        const Shooter& from = *shooters[si];
+        const Cluster& Cs = from.cluster();
+        const ClusterSamples localShotSamples = from.local(shotSamples);
+        std::vector<size_t> ring;
+        for (size_t d = 0; d < m_clustering.clusters.size(); ++d) {
+            if (d == c && !s.image) continue;
+            if (inNearField(s, Cs, c, d, r) && !inNearField(s, Cs, c, d, old) &&
+                !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, Cs, c, d))
+                ring.push_back(d);
+        }
+        std::vector<Correction> moved(ring.size());
+        if (!ring.empty()) {
+            const Emission totalLight = emission(from, c, total);
+            tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) {
+                moved[k] = correct(s, from, c, ring[k], localShotSamples, totalLight);
+            });
+        }
+        for (const Correction& m : moved) {
+            redelivered += lum(atSource(m.removed, s.weight));
+            delivered.add(s, m.delivered);
+            if (s.image) m_stats.mirrorAbsorbed -= lum(mirrorLoss(m.removed, s.weight));
+        }
+        for (size_t d : ring) corrected[si][d] = 1;
+        m_stats.corrections += static_cast<int64_t>(ring.size());
+    }
+    return redelivered;
+}
+
 template ShootingCore<double>::Correction ShootingCore<double>::correct(const Source&, const Shooter&, size_t, size_t,
                                                                        const ClusterSamples&,
                                                                        const Emission&);
 template ShootingCore<Rgb>::Correction ShootingCore<Rgb>::correct(const Source&, const Shooter&, size_t, size_t,
                                                                  const ClusterSamples&, const Emission&);
+
+template double ShootingCore<double>::correctRing(size_t, int, const std::vector<double>&,
+                                                  const std::vector<std::optional<Shooter>>&,
+                                                  std::vector<std::vector<char>>&, AtSource&);
+template double ShootingCore<Rgb>::correctRing(size_t, int, const std::vector<Rgb>&,
+                                               const std::vector<std::optional<Shooter>>&,
+                                               std::vector<std::vector<char>>&, AtSource&);
 
 }  // namespace rayrad::radiosity

@@ -280,57 +280,10 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
     double redelivered = 0;  // lm (at the source) of earlier shots the corrections took away
     const bool throughMirrors = m_sources.size() > 1;
-    AtSource delivered;      // this shot's deliveries at the source
-    // A receiver's delivery in the account: its net flux at the source, and its magnitude
-    // per patch (exact: without mirrors each receiver gets one delivery per shot) or, through
-    // mirrors, per receiver and source.
-    auto book = [&](const Source& s, const Delivery& d) {
-        const double net = lum(atSource(d.flux, s.weight));
-        delivered.net += net;
-        delivered.magnitude += throughMirrors ? std::abs(net) : d.magnitude;
-        if (s.image) delivered.mirrorLoss += lum(mirrorLoss(d.flux, s.weight));
-    };
+    AtSource delivered{throughMirrors};  // this shot's deliveries at the source
 
-    if (correcting && light.radius > 0 && r > light.radius) {
-        // r_v grew: the ring old ≤ d < new switches from cluster→cluster to patch→patch,
-        // for the real shooter and for each of its mirror images.
-        std::vector<V> total(C.patches.size());  // what member i will have shipped after this shot
-        std::vector<double> shotPower(C.patches.size());  // what earlier shots carried, ≈ (L_i − ΔL_i) A_i
-        for (size_t k = 0; k < C.patches.size(); ++k) {
-            uint32_t i = C.patches[k];
-            total[k] = reflected(i) + overshoot[k];
-            shotPower[k] = lum(reflected(i) - m_unshot[i]) * m_patchArea[i];
-        }
-        const ClusterSamples shotSamples = powerSamples(C, shotPower);
-        for (size_t si = 0; si < m_sources.size(); ++si) {
-            const Source& s = m_sources[si];
-            if (!shooters[si]) continue;
-            const Shooter& from = *shooters[si];
-            const Cluster& Cs = from.cluster();
-            const ClusterSamples localShotSamples = from.local(shotSamples);
-            std::vector<size_t> ring;
-            for (size_t d = 0; d < n; ++d) {
-                if (d == c && !s.image) continue;
-                if (inNearField(s, Cs, c, d, r) && !inNearField(s, Cs, c, d, light.radius) &&
-                    !coplanar(Cs, m_clustering.clusters[d]) && canReach(s, Cs, c, d))
-                    ring.push_back(d);
-            }
-            std::vector<Correction> moved(ring.size());
-            if (!ring.empty()) {
-                const Emission totalLight = emission(from, c, total);
-                tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) {
-                    moved[k] = correct(s, from, c, ring[k], localShotSamples, totalLight);
-                });
-            }
-            for (const Correction& m : moved) {
-                redelivered += lum(atSource(m.removed, s.weight));
-                book(s, m.delivered);
-                if (s.image) m_stats.mirrorAbsorbed -= lum(mirrorLoss(m.removed, s.weight));
-            }
-            for (size_t d : ring) corrected[si][d] = 1;
-            m_stats.corrections += static_cast<int64_t>(ring.size());
-        }
-    }
+    if (correcting && light.radius > 0 && r > light.radius)
+        redelivered = correctRing(c, r, overshoot, shooters, corrected, delivered);
     if (correcting) r = std::max(r, light.radius);  // r_v never shrinks: each receiver switches once
 
     // The shooter's unshot light (plus the overshoot) leaves now; it may receive some of
@@ -422,7 +375,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         m_stats.splitTransfers += splitTransfers;
         if (s.image) m_stats.imageTransfers += clusterTransfers, m_stats.imageTransfersLit += lit;
         m_stats.patchPairs += patchPairs;
-        for (const Delivery& d : deliveredTo) book(s, d);
+        for (const Delivery& d : deliveredTo) delivered.add(s, d);
     }
     if (!m_mirrorBacks.empty()) {  // what goes into a mirror's back is absorbed there, not delivered
         double back = intoMirrorBacks(C, unshotPower);

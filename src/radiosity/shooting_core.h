@@ -144,7 +144,15 @@ class ShootingCore final : public ShootingCoreBase {
     /// receiver and source — and what the mirrors absorbed of it (lm, before the
     /// conservation's adjustment).
     struct AtSource {
+        bool throughMirrors = false;  ///< the scene has mirror images (more than one source)
         double net = 0, magnitude = 0, mirrorLoss = 0;
+        /// Books a delivery to one receiver from source s.
+        void add(const Source& s, const Delivery& d) {
+            const double atS = lum(atSource(d.flux, s.weight));
+            net += atS;
+            magnitude += throughMirrors ? std::abs(atS) : d.magnitude;
+            if (s.image) mirrorLoss += lum(radiosity::mirrorLoss(d.flux, s.weight));
+        }
     };
     /// `redelivered`: the flux (lm, at the source) this shot's corrections took away to
     /// deliver again; `delivered`: the shot's deliveries at the source.
@@ -159,6 +167,14 @@ class ShootingCore final : public ShootingCoreBase {
     };
     Correction correct(const Source& s, const Shooter& from, size_t c, size_t d, const ClusterSamples& shotSamples,
                        const Emission& totalOfSource);  // energy_correction.cpp
+    /// Shooter c's radius r_v grew to r: corrects every receiver in the ring between the
+    /// old and the new radius (correct()), for each source `shooters` holds, marks them in
+    /// corrected[source][receiver] and books their deliveries in `delivered`. Returns the
+    /// flux (lm, at the source) the corrections took away, to be delivered again.
+    /// `overshoot`: what each member ships beyond its unshot light this shot.
+    double correctRing(size_t c, int r, const std::vector<V>& overshoot,
+                       const std::vector<std::optional<Shooter>>& shooters,
+                       std::vector<std::vector<char>>& corrected, AtSource& delivered);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
     /// False when no light of cluster c (as source s shows it: Cs) can pass through s's
     /// mirrors to cluster d: c lies behind the chain's first mirror, d behind its last,
