@@ -225,12 +225,21 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     struct Near {
         uint32_t patch;
         uint32_t position;  ///< in its cluster's member tree order
-        std::vector<NearPiece> pieces;
+        uint32_t first, count;  ///< its pieces in `pieces`
         double F;  ///< the whole patch's form factor seen from x
         /// The form factor of `piece`, when it is the whole patch, else −1 (not known).
-        double known(const NearPiece& piece) const { return pieces.size() == 1 && piece.depth == 0 ? F : -1; }
+        double known(const NearPiece& piece) const { return count == 1 && piece.depth == 0 ? F : -1; }
     };
     std::vector<Near> near;
+    std::vector<NearPiece> pieces;  ///< every near patch's pieces, one run each (one allocation, not one per patch)
+    // Adds near patch e's light at x to `into`, piece by piece.
+    auto addNear = [&](const Near& e, Rgb& into) {
+        for (uint32_t k = e.first; k < e.first + e.count; ++k) {
+            const NearPiece& piece = pieces[k];
+            into += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[e.patch].normal, piece.depth,
+                                    e.known(piece));
+        }
+    };
     /// The clusters holding near patches, in increasing order, and their range in `near`
     /// (sorted by tree position: a node's near patches are a contiguous run).
     struct NearCluster {
@@ -277,7 +286,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const uint32_t j = e.patch;
             if (nearClusters.empty() || nearClusters.back().cluster != e.cluster)
                 nearClusters.push_back({e.cluster, near.size(), near.size()});
-            near.push_back({j, m_treePosition[j], {}, e.F});
+            near.push_back({j, m_treePosition[j], 0, 0, e.F});
             nearClusters.back().end = near.size();
             if (part == Part::AllButNear) continue;  // which patches are near is all it needs
             const Patch& p = m_mesh.patches[j];
@@ -297,7 +306,10 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             const double tolerance = m_options.refineTolerance *
                                      std::max(1.0, shareSum / (kRefineShares * e.share)) /
                                      (m_options.minWeight > 0 ? weight : 1.0);
-            refineNear(x, j, corners, 0, detailed && !sliver ? midpoints : nullptr, e.share, tolerance, near.back().pieces);
+            const size_t first = pieces.size();
+            refineNear(x, j, corners, 0, detailed && !sliver ? midpoints : nullptr, e.share, tolerance, pieces);
+            near.back().first = static_cast<uint32_t>(first);
+            near.back().count = static_cast<uint32_t>(pieces.size() - first);
         }
         for (const NearCluster& c : nearClusters)
             std::sort(near.begin() + static_cast<std::ptrdiff_t>(c.begin), near.begin() + static_cast<std::ptrdiff_t>(c.end),
@@ -305,10 +317,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     }
     if (part == Part::Near) {
         Rgb sum(0.0);
-        for (const Near& e : near)
-            for (const NearPiece& piece : e.pieces)
-                sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[e.patch].normal, piece.depth,
-                                       e.known(piece));
+        for (const Near& e : near) addNear(e, sum);
         return sum;
     }
 
@@ -407,9 +416,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             auto it = hasNear ? nearFrom(m_treePosition[j]) : nearLast;
             if (it != nearLast && it->patch == j) {
                 if (part == Part::AllButNear) return;
-                for (const NearPiece& piece : it->pieces)
-                    sum += integrateLinear(x, n, piece.p.data(), piece.L.data(), m_mesh.patches[j].normal, piece.depth,
-                                           it->known(piece));
+                addNear(*it, sum);
                 return;
             }
             const Rgb L = mirrorWeight * m_solution.reflectedLuminance(m_scene, m_mesh, j);
