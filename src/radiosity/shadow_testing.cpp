@@ -16,19 +16,24 @@ namespace {
 /// analytic or second-order F: areaLightFormFactor).
 constexpr double kRankPointDiameters = 5.0;
 
-/// An area light's unshadowed illuminance at x over its luminance (lx per cd/m²), for
-/// ranking and for the untested: π F with the analytic F (`exact`, near) or the point
-/// approximation A cosθ_x cosθ_y / r² (far).
-double unshadowedAreaFactor(const AreaLight& light, const Vec3& x, const Vec3& n, bool& exact) {
+/// The point approximation of an area light's π F at x, about its centre:
+/// A cosθ_x cosθ_y / r² (lx per cd/m²).
+double pointAreaFactor(const AreaLight& light, const Vec3& x, const Vec3& n) {
     const Vec3 d = light.centre - x;
     const double r2 = glm::dot(d, d);
+    // cosθ_x cosθ_y / r² = (n·d)(−N·d) / r⁴
+    const double nd = glm::dot(n, d), ld = -glm::dot(light.normal, d);
+    return nd > 0 && ld > 0 ? light.area * nd * ld / (r2 * r2) : 0.0;
+}
+
+/// An area light's unshadowed illuminance at x over its luminance (lx per cd/m²), for
+/// ranking and for the untested: π F with the analytic F (`exact`, near) or the point
+/// approximation (far).
+double unshadowedAreaFactor(const AreaLight& light, const Vec3& x, const Vec3& n, bool& exact) {
+    const Vec3 d = light.centre - x;
     const double far = kRankPointDiameters * 2 * light.radius;
-    exact = r2 <= far * far;
-    if (!exact) {
-        // cosθ_x cosθ_y / r² = (n·d)(−N·d) / r⁴
-        const double nd = glm::dot(n, d), ld = -glm::dot(light.normal, d);
-        return nd > 0 && ld > 0 ? light.area * nd * ld / (r2 * r2) : 0.0;
-    }
+    exact = glm::dot(d, d) <= far * far;
+    if (!exact) return pointAreaFactor(light, x, n);
     const double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
     return kPi * std::max(0.0, f);  // π F
 }
@@ -120,8 +125,7 @@ Rgb DirectLight::fromPixelMemo(const PixelLightMemo& pixel, const Vec3& x, const
     }
     for (const PixelLightMemo::Far& f : pixel.far) {
         const AreaLight& light = m_areaLights[f.light - points];
-        bool exact = false;  // far from this sample too: its point approximation
-        e += light.luminance * (unshadowedAreaFactor(light, x, n, exact) * f.scale);
+        e += light.luminance * (pointAreaFactor(light, x, n) * f.scale);  // the ratio was taken to this
     }
     return e + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
 }

@@ -136,8 +136,6 @@ class ShootingCore final : public ShootingCoreBase {
     /// and far nodes, per receiver patch).
     Delivery shootPatches(const Source& s, const Shooter& from, size_t c, const Emission& light, size_t receiver,
                           std::vector<V>& into, int64_t& terms);
-    /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
-    /// the flux shot when conserving.
     /// Flux a shot delivered, counted where it left the shooter (through mirrors:
     /// delivered / Π Ks), lm: signed, and its magnitude — per patch (Delivery) when the
     /// scene has no mirrors, so the conservation below is exact; through mirrors per
@@ -154,8 +152,10 @@ class ShootingCore final : public ShootingCoreBase {
             if (s.image) mirrorLoss += lum(radiosity::mirrorLoss(d.flux, s.weight));
         }
     };
-    /// `redelivered`: the flux (lm, at the source) this shot's corrections took away to
-    /// deliver again; `delivered`: the shot's deliveries at the source.
+    /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
+    /// the flux shot when conserving. `redelivered`: the flux (lm, at the source) this
+    /// shot's corrections took away to deliver again; `delivered`: the shot's deliveries
+    /// at the source.
     void deliver(double shotFlux, double redelivered, const AtSource& delivered);
     /// E_amb in lx: the illuminance the unshot power will still add everywhere (overshooting).
     V ambientIlluminance() const;
