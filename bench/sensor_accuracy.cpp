@@ -63,14 +63,18 @@ int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstS
     app::PipelineOptions options;
     options.quiet = true;
     if (!addSettings(argc, argv, firstSetting, options)) return 2;
+    // A sensor on the back wall facing into the cube, appended to a scene's sensor list.
+    auto addSensor = [](std::string& list, const std::string& name, const Vec3& x) {
+        list += fmt::format("{}{{\"name\": \"{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], "
+                            "\"normal\": [0, 0, -1]}}",
+                            list.empty() ? "" : ", ", name, x.x, x.y, x.z);
+    };
     std::vector<Vec3> points;
     std::string sensors;
     for (int j = 0; j < k; ++j)
         for (int i = 0; i < k; ++i) {
             const Vec3 x((i + 0.5) * cube::kSide / k, (j + 0.5) * cube::kSide / k, cube::kSide);
-            sensors += fmt::format("{}{{\"name\": \"g{}_{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], "
-                                   "\"normal\": [0, 0, -1]}}",
-                                   points.empty() ? "" : ", ", i, j, x.x, x.y, x.z);
+            addSensor(sensors, fmt::format("g{}_{}", i, j), x);
             points.push_back(x);
         }
     const std::string path = "/tmp/rayrad_bench_sensor_grid.json";
@@ -88,10 +92,7 @@ int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstS
     for (int j = 0; j < k; ++j)
         for (int i = 0; i < k; ++i) {
             if (i != 0 && j != 0 && i != k - 1 && j != k - 1) continue;
-            const Vec3& x = points[static_cast<size_t>(j * k + i)];
-            ring += fmt::format("{}{{\"name\": \"r{}_{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], "
-                                "\"normal\": [0, 0, -1]}}",
-                                ring.empty() ? "" : ", ", i, j, x.x, x.y, x.z);
+            addSensor(ring, fmt::format("r{}_{}", i, j), points[static_cast<size_t>(j * k + i)]);
             ++ringCount;
         }
     std::ofstream(path) << cube::scene(ring, maxEdge);
