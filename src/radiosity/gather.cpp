@@ -128,6 +128,11 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         m_rootFar.push_back(m_far.back().front());
         m_trees.push_back(std::move(tree));
     }
+    m_groupCone = std::cos(glm::radians(scene.clusters.normalToleranceDeg));
+    // Groups of clusters only where there are clusters: without them the gather, as the
+    // transfers, does not depend on the light (light groups' parts then add up exactly).
+    if (clustering.enabled)
+        m_clusterTree = clusterTree(mesh, clustering, [&](uint32_t j) { return solution.reflectedLuminance(scene, mesh, j); });
     m_mirrorViews = mirrorViewsFor(scene, vis);
     m_sourceKeys.push_back(0);
     for (const auto& view : m_mirrorViews) {
@@ -470,14 +475,59 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             sum += sharedSum * sharedVisibility.share(visiblePatch, raysFor(sharedSum), offset(kCluster));
         return sum;
     };
-    // Every (source, cluster) pair, source by source: k = source's place × clusters + c.
+    // The scene's own clusters: in a re-gather (weight < 1), groups of clusters far from x
+    // (ClusterTree), holding no near patch, count as one source each, seen through one
+    // visibility ray; item clusters + g stands for group g. In the sensor's own gather,
+    // every cluster on its own.
     const size_t clusters = m_clustering.clusters.size();
-    const size_t count = clusters * sources.size();
+    std::vector<uint32_t> sceneItems;
+    if (weight < 1 && farDiameters > 0 && !m_clusterTree.groups.empty()) {
+        std::vector<uint32_t> nearAt;  // tree positions of the clusters holding near patches
+        for (const NearCluster& c : nearClusters) nearAt.push_back(m_clusterTree.position[c.cluster]);
+        std::sort(nearAt.begin(), nearAt.end());
+        auto holdsNear = [&](const ClusterGroup& g) {
+            auto it = std::lower_bound(nearAt.begin(), nearAt.end(), g.begin);
+            return it != nearAt.end() && *it < g.end;
+        };
+        std::vector<uint32_t> stack{0};
+        while (!stack.empty()) {
+            const uint32_t index = stack.back();
+            stack.pop_back();
+            const ClusterGroup& g = m_clusterTree.groups[index];
+            if (g.leaf()) {
+                sceneItems.push_back(m_clusterTree.order[g.begin]);
+                continue;
+            }
+            const double limit = farDiameters * g.far.reach;
+            if (!g.far.mixed && g.normalCone >= m_groupCone && glm::dot(g.far.at - x, g.far.at - x) > limit * limit && !holdsNear(g)) {
+                sceneItems.push_back(static_cast<uint32_t>(clusters + index));
+                continue;
+            }
+            stack.push_back(g.right), stack.push_back(g.left);
+        }
+    }
+    const bool grouped = !sceneItems.empty();
+    // A far group's light times the share of its visibility samples seen.
+    auto groupContribution = [&](uint32_t index) {
+        const ClusterGroup& g = m_clusterTree.groups[index];
+        const Rgb e = farField(g.far, x, n, nullptr);
+        if (e == Rgb(0.0)) return e;
+        auto seen = [&](uint32_t i) { return m_vis.visibleFromSurface(x, n, m_mesh.patches[g.rayPatch[i]].centroid); };
+        return e * visibleShare(g.far, seen, raysFor(e), visibilityOffset(x, 0, (uint64_t(1) << 63) | index));
+    };
+    // Every item: source 0's clusters (or items), then (image, cluster) pairs image by
+    // image: k = scene items + (image's place − 1) × clusters + c.
+    const size_t sceneCount = grouped ? sceneItems.size() : clusters;
+    const size_t count = sceneCount + clusters * (sources.size() - 1);
     auto sumOver = [&](size_t begin, size_t end, Rgb sum) {
-        size_t place = begin / clusters, c = begin % clusters;
         for (size_t k = begin; k != end; ++k) {
+            if (k < sceneCount) {
+                const uint32_t item = grouped ? sceneItems[k] : static_cast<uint32_t>(k);
+                sum += item < clusters ? contribution(0, item) : groupContribution(static_cast<uint32_t>(item - clusters));
+                continue;
+            }
+            const size_t place = 1 + (k - sceneCount) / clusters, c = (k - sceneCount) % clusters;
             if (open(sources[place], c)) sum += contribution(sources[place], c);
-            if (++c == clusters) c = 0, ++place;
         }
         return sum;
     };

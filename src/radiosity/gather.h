@@ -3,6 +3,7 @@
 #pragma once
 
 #include <core/visibility.h>
+#include <radiosity/cluster_tree.h>
 #include <radiosity/clusters.h>
 #include <radiosity/far_field.h>
 #include <radiosity/form_factor.h>
@@ -120,7 +121,12 @@ class Gatherer {
     /// (visibleShare). Nodes holding a near patch are always opened.
     /// A re-gather of weight w < 1 counts nodes as far from farDiameters · ∛w of their
     /// diameters (at least 2): the far field's error falls as the cube of the distance, and
-    /// reaches the sensor times w.
+    /// reaches the sensor times w. It also takes whole groups of clusters (ClusterTree)
+    /// that far as one source each, seen through one visibility ray, where the group faces
+    /// one way (its normals within the clusters' normal tolerance; and only where there are
+    /// clusters). The re-gathers of the cube grid's edge sensors take 212 sources each
+    /// (104 clusters, 108 groups) instead of 600 clusters: the grid's sensor stage went
+    /// from 0.86–0.89 to 0.59–0.60 × the solve, its error against the path tracer unchanged.
     /// `options.minWeight` > 0: corner and midpoint values are re-gathered only where an
     /// error in them can still reach the sensor by that fraction. Without it, a point
     /// beside a dense mesh (near patches by the hundred, each re-gathering its corners,
@@ -246,6 +252,8 @@ class Gatherer {
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
     std::vector<FarSource> m_rootFar;                ///< per cluster, its root's (m_far[c][0]), contiguous
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
+    ClusterTree m_clusterTree;                       ///< groups of clusters, far sources in re-gathers
+    double m_groupCone = 1;  ///< a group is one source only while its normals are this close (cos; ClusterGroup::normalCone)
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
     /// Per image i, per cluster: some member faces the chain's first mirror (clustersFacing);
     /// the others send nothing into the image.

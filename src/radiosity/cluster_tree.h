@@ -1,0 +1,49 @@
+// Cluster tree: the clusters grouped by position into a binary tree, the levels of the
+// hierarchy above clusters. Far from a point, a whole group of clusters counts as one
+// source in the final gather's re-gathers (gather.h), as a far node of a cluster's member
+// tree does below it: a gather then visits O(log clusters) groups for the far part of the
+// scene instead of every cluster.
+#pragma once
+
+#include <radiosity/clusters.h>
+#include <radiosity/far_field.h>
+#include <radiosity/patch_mesh.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace rayrad::radiosity {
+
+/// A group of clusters: order[begin, end) of its tree.
+struct ClusterGroup {
+    uint32_t begin = 0, end = 0;   ///< range in ClusterTree::order
+    uint32_t left = 0, right = 0;  ///< child groups; 0 for a leaf, a single cluster (the root is never a child)
+    FarSource far;                 ///< the group's light as one source (none for a leaf: its cluster has its own)
+    /// Where its visibility samples go: patch indices (far.rayTo[i] is i, a sample's own index).
+    std::array<uint32_t, 4> rayPatch{};
+    /// The cosine of the widest angle between a member patch's normal and the group's light
+    /// direction (far.normal): near 1 for a part of one wall, 0 or less where the group
+    /// turns a corner. A group of one direction is one source as well as a cluster is (its
+    /// members lie within the clusters' normal tolerance, and the far field's turning term
+    /// covers that); around a corner, members that face away from a point still count
+    /// in its summed flux (2 % of a group's light at 4 of its reaches, cluster_tree_test).
+    double normalCone = -1;
+    bool leaf() const { return left == 0; }
+    uint32_t size() const { return end - begin; }
+};
+
+/// Clusters split at the median of their centroids along the longest extent, down to one
+/// cluster per leaf. groups[0] is the root; children follow their parent.
+struct ClusterTree {
+    std::vector<uint32_t> order;      ///< cluster indices, leaf by leaf
+    std::vector<uint32_t> position;   ///< per cluster, its place in `order`
+    std::vector<ClusterGroup> groups;
+};
+
+/// The tree of `clustering`'s clusters, each group's far source built from its patches'
+/// luminance `luminanceOf(patch)` (cd/m², RGB).
+ClusterTree clusterTree(const PatchMesh& mesh, const Clustering& clustering,
+                        const std::function<Rgb(uint32_t patch)>& luminanceOf);
+
+}  // namespace rayrad::radiosity
