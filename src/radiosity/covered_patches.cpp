@@ -1,6 +1,6 @@
 #include <radiosity/covered_patches.h>
 
-#include <radiosity/gather.h>  // nudgeInside
+#include <radiosity/mesh_location.h>  // nudgeInside
 
 #include <tbb/parallel_for.h>
 
