@@ -19,16 +19,20 @@ namespace rayrad::radiosity {
 struct ClusterGroup {
     uint32_t begin = 0, end = 0;   ///< range in ClusterTree::order
     uint32_t left = 0, right = 0;  ///< child groups; 0 for a leaf, a single cluster (the root is never a child)
-    FarSource far;                 ///< the group's light as one source (none for a leaf: its cluster has its own)
-    /// Where its visibility samples go: patch indices (far.rayTo[i] is i, a sample's own index).
+    FarSource far;                 ///< the group's light as one source (a leaf: its cluster's root)
+    /// Where its visibility samples go: patch indices (far.rayTo[i] is i for a group, a
+    /// sample's own index).
     std::array<uint32_t, 4> rayPatch{};
+    double weight = 0;             ///< Σ |Y(L_j)| A_j of its patches (cd), the power its samples split
     /// The cosine of the widest angle between a member patch's normal and the group's light
-    /// direction (far.normal): near 1 for a part of one wall, 0 or less where the group
-    /// turns a corner. A group of one direction is one source as well as a cluster is (its
-    /// members lie within the clusters' normal tolerance, and the far field's turning term
-    /// covers that); around a corner, members that face away from a point still count
-    /// in its summed flux (2 % of a group's light at 4 of its reaches, cluster_tree_test).
+    /// direction (far.normal), bounded from its halves' (coneAngle: that angle, radians):
+    /// near 1 for a part of one wall, 0 or less where the group turns a corner. A group of
+    /// one direction is one source as well as a cluster is (its members lie within the
+    /// clusters' normal tolerance, and the far field's turning term covers that); around
+    /// a corner, members that face away from a point still count in its summed flux (2 % of
+    /// a group's light at 4 of its reaches, cluster_tree_test).
     double normalCone = -1;
+    double coneAngle = kPi;
     bool leaf() const { return left == 0; }
     uint32_t size() const { return end - begin; }
 };
@@ -41,9 +45,11 @@ struct ClusterTree {
     std::vector<ClusterGroup> groups;
 };
 
-/// The tree of `clustering`'s clusters, each group's far source built from its patches'
-/// luminance `luminanceOf(patch)` (cd/m², RGB).
-ClusterTree clusterTree(const PatchMesh& mesh, const Clustering& clustering,
+/// The tree of `clustering`'s clusters. `clusterFar[c]`: cluster c's own far source (its
+/// member tree's root, FarRayTargets::PowerSamples); `luminanceOf(patch)`: the patches'
+/// luminance (cd/m², RGB) it was built from. Each group's far source is merged from its
+/// halves', in O(clusters) time and memory (not a pass over the patches per level).
+ClusterTree clusterTree(const PatchMesh& mesh, const Clustering& clustering, const std::vector<FarSource>& clusterFar,
                         const std::function<Rgb(uint32_t patch)>& luminanceOf);
 
 }  // namespace rayrad::radiosity

@@ -71,7 +71,8 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
     // Groups of clusters only where there are clusters: without them the gather, as the
     // transfers, does not depend on the light (light groups' parts then add up exactly).
     if (clustering.enabled)
-        m_clusterTree = clusterTree(mesh, clustering, [&](uint32_t j) { return solution.reflectedLuminance(scene, mesh, j); });
+        m_clusterTree = clusterTree(mesh, clustering, m_rootFar,
+                                    [&](uint32_t j) { return solution.reflectedLuminance(scene, mesh, j); });
     m_mirrorViews = mirrorViewsFor(scene, vis);
     m_sourceKeys.push_back(0);
     for (const auto& view : m_mirrorViews) {

@@ -2,6 +2,7 @@
 #include <radiosity/cluster_tree.h>
 #include <radiosity/clusters.h>
 #include <radiosity/form_factor.h>
+#include <radiosity/member_tree.h>
 #include <radiosity/mesher.h>
 #include <scene/scene_parser.h>
 
@@ -23,7 +24,13 @@ TEST_CASE("the cluster tree holds every cluster once, and a far coherent group's
     const Clustering clustering = buildClusters(s, mesh, s.clusters);
     // Luminance rising across the cube (cd/m²), so the groups' centres of light are not their centroids.
     auto luminanceOf = [&](uint32_t j) { return Rgb(1.0 + 0.2 * mesh.patches[j].centroid.x); };
-    const ClusterTree tree = clusterTree(mesh, clustering, luminanceOf);
+    std::vector<FarSource> clusterFar;  // each cluster's root, as the gather has them
+    for (const Cluster& C : clustering.clusters) {
+        std::vector<Rgb> L;
+        for (uint32_t j : C.patches) L.push_back(luminanceOf(j));
+        clusterFar.push_back(farSources(mesh, C, memberTree(mesh, C, 8), L, FarRayTargets::PowerSamples).front());
+    }
+    const ClusterTree tree = clusterTree(mesh, clustering, clusterFar, luminanceOf);
 
     std::vector<uint32_t> sorted = tree.order;
     std::sort(sorted.begin(), sorted.end());
@@ -39,6 +46,33 @@ TEST_CASE("the cluster tree holds every cluster once, and a far coherent group's
         REQUIRE(tree.groups[g.left].end == tree.groups[g.right].begin);
         REQUIRE(tree.groups[g.right].end == g.end);
     }
+    // A group's far source, merged from its halves', is the one built from all its patches
+    // (its reach an upper bound, its normal cone a lower bound on the cosine).
+    for (const ClusterGroup& g : tree.groups) {
+        if (g.leaf()) continue;
+        std::vector<uint32_t> members;
+        std::vector<Rgb> L;
+        for (uint32_t k = g.begin; k < g.end; ++k)
+            for (uint32_t j : clustering.clusters[tree.order[k]].patches) members.push_back(j), L.push_back(luminanceOf(j));
+        const FarSource direct = farSource(mesh, members, L, Vec3(0.0), FarRayTargets::PowerSamples);
+        const double size = 0.5 * direct.reach;
+        REQUIRE(glm::length(g.far.at - direct.at) < 1e-9 * size);
+        double cone = 1;
+        for (uint32_t j : members) cone = std::min(cone, glm::dot(mesh.patches[j].normal, Vec3(direct.normal)));
+        CHECK(g.normalCone <= cone + 1e-6);  // the directions are kept in float
+        CHECK(g.far.reach >= direct.reach * (1 - 1e-9));
+        for (int a = 0; a < 3; ++a) {
+            for (int ch = 0; ch < 3; ++ch) CHECK(g.far.flux[ch][a] == Approx(direct.flux[ch][a]).margin(1e-4 * glm::length(direct.flux[ch])));
+            CHECK(g.far.normal[a] == Approx(direct.normal[a]).margin(1e-5));
+            for (int b = 0; b < 3; ++b) {
+                const double scale = std::abs(direct.moment[0][0]) + std::abs(direct.moment[1][1]) + std::abs(direct.moment[2][2]);
+                CHECK(g.far.moment[a][b] == Approx(direct.moment[a][b]).margin(1e-5 * scale));
+                const double turningScale = glm::length(direct.flux[0]) * size + 1e-12;
+                CHECK(g.far.turning[a][b] == Approx(direct.turning[a][b]).margin(1e-5 * turningScale));
+            }
+        }
+    }
+
     // The whole closed cube sends its light every way; a group on one wall in one.
     CHECK(tree.groups[0].normalCone < 0);
     const double tolerance = std::cos(glm::radians(s.clusters.normalToleranceDeg));
