@@ -416,8 +416,8 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         return sum;
     };
     // The scene's own clusters: in a re-gather (weight < 1), groups of clusters far from x
-    // (ClusterTree), holding no near patch, count as one source each, seen through one
-    // visibility ray; item clusters + g stands for group g. In the sensor's own gather,
+    // (ClusterTree), holding no near patch, count as one source each, seen through two
+    // visibility rays, four where they disagree; item clusters + g stands for group g. In the sensor's own gather,
     // every cluster on its own.
     const size_t clusters = m_clustering.clusters.size();
     std::vector<uint32_t> sceneItems;
@@ -453,7 +453,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         const Rgb e = farField(g.far, x, n, nullptr);
         if (e == Rgb(0.0)) return e;
         auto seen = [&](uint32_t i) { return m_vis.visibleFromSurface(x, n, m_mesh.patches[g.rayPatch[i]].centroid); };
-        return e * visibleShare(g.far, seen, raysFor(e), visibilityOffset(x, 0, (uint64_t(1) << 63) | index));
+        return e * visibleShare(g.far, seen, VisibilityRays::UpToFour, visibilityOffset(x, 0, (uint64_t(1) << 63) | index));
     };
     // Every item: source 0's clusters (or items), then (image, cluster) pairs image by
     // image: k = scene items + (image's place − 1) × clusters + c.
