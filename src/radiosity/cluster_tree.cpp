@@ -97,8 +97,7 @@ void mergeHalves(const ClusterGroup& a, const ClusterGroup& b, ClusterGroup& g) 
     double cone = 0;
     for (const ClusterGroup* h : {&a, &b})
         if (h->weight > 0) cone = std::max(cone, angleBetween(Vec3(f.normal), Vec3(h->far.normal)) + h->coneAngle);
-    g.coneAngle = cone;
-    g.normalCone = std::cos(std::min(cone, kPi));
+    g.coneAngle = std::min(cone, kPi);
     for (uint32_t i = 0; i < 4; ++i) {
         const double target = (i + 0.5) / 4 * g.weight;
         const bool first = target < a.weight || !(b.weight > 0);
@@ -136,7 +135,6 @@ ClusterTree clusterTree(const PatchMesh& mesh, const Clustering& clustering, con
             cosine = std::min(cosine, glm::dot(p.normal, Vec3(g.far.normal)));
         }
         g.coneAngle = std::acos(std::clamp(cosine, -1.0, 1.0));
-        g.normalCone = cosine;
         for (uint32_t i = 0; i < 4; ++i) g.rayPatch[i] = C.patches[g.far.rayTo[i]];
     });
     // Groups: children follow their parent, so from the last group back every child is done.

@@ -1,4 +1,4 @@
-// Cluster tree: the clusters grouped by position into a binary tree, the levels of the
+// Cluster tree: the clusters grouped by normal and position into a binary tree, the levels of the
 // hierarchy above clusters. Far from a point, a whole group of clusters counts as one
 // source in the final gather's re-gathers (gather.h), as a far node of a cluster's member
 // tree does below it: a gather then visits O(log clusters) groups for the far part of the
@@ -24,21 +24,20 @@ struct ClusterGroup {
     /// sample's own index).
     std::array<uint32_t, 4> rayPatch{};
     double weight = 0;             ///< Σ |Y(L_j)| A_j of its patches (cd), the power its samples split
-    /// The cosine of the widest angle between a member patch's normal and the group's light
-    /// direction (far.normal), bounded from its halves' (coneAngle: that angle, radians):
-    /// near 1 for a part of one wall, 0 or less where the group turns a corner. A group of
+    /// The widest angle (radians) between a member patch's normal and the group's light
+    /// direction (far.normal), bounded from its halves': near 0 for a part of one wall,
+    /// 90° or more where the group turns a corner. A group of
     /// one direction is one source as well as a cluster is (its members lie within the
     /// clusters' normal tolerance, and the far field's turning term covers that); around
     /// a corner, members that face away from a point still count in its summed flux (2 % of
     /// a group's light at 4 of its reaches, cluster_tree_test).
-    double normalCone = -1;
     double coneAngle = kPi;
     bool leaf() const { return left == 0; }
     uint32_t size() const { return end - begin; }
 };
 
-/// Clusters split at the median of their centroids along the longest extent, down to one
-/// cluster per leaf. groups[0] is the root; children follow their parent.
+/// Clusters split by normal where their normals spread by more than about 20°, then at the
+/// median of their centroids along the longest extent, down to one cluster per leaf. groups[0] is the root; children follow their parent.
 struct ClusterTree {
     std::vector<uint32_t> order;      ///< cluster indices, leaf by leaf
     std::vector<uint32_t> position;   ///< per cluster, its place in `order`

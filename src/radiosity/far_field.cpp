@@ -7,12 +7,14 @@
 
 namespace rayrad::radiosity {
 
-FarSource farSource(const PatchMesh& mesh, const std::vector<uint32_t>& members, const std::vector<Rgb>& luminance,
-                    const Vec3& fallback, FarRayTargets targets) {
+namespace {
+
+FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& tree, const MemberNode& node,
+                    const std::vector<Rgb>& luminance, FarRayTargets targets) {
     FarSource f;
     bool positive = false, negative = false;
-    for (const Rgb& L : luminance) {
-        const double y = rayrad::luminance(L);
+    for (uint32_t k = node.begin; k < node.end; ++k) {
+        const double y = rayrad::luminance(luminance[tree.order[k]]);
         positive |= y > 0, negative |= y < 0;
     }
     f.mixed = positive && negative;
@@ -23,39 +25,41 @@ FarSource farSource(const PatchMesh& mesh, const std::vector<uint32_t>& members,
     Rgb power(0.0);
     std::array<Vec3, 3> flux{};  // summed in double, kept in float
     glm::dmat3 moment(0.0), turning(0.0);
-    const auto count = static_cast<uint32_t>(members.size());
-    for (uint32_t k = 0; k < count; ++k) {
-        const Patch& p = mesh.patches[members[k]];
-        const Rgb pj = double(f.sign) * luminance[k] * p.area;  // cd
+    for (uint32_t k = node.begin; k < node.end; ++k) {
+        const uint32_t m = tree.order[k];
+        const Patch& p = mesh.patches[C.patches[m]];
+        const Rgb pj = double(f.sign) * luminance[m] * p.area;  // cd
         const double y = rayrad::luminance(pj);
         for (int ch = 0; ch < 3; ++ch) flux[ch] += pj[ch] * p.normal;
         power += pj;
         weight += y;
         at += y * p.centroid;
-        if (y > brightestPower) brightestPower = y, f.brightest = k;
+        if (y > brightestPower) brightestPower = y, f.brightest = m;
     }
-    f.at = weight > 0 ? at / weight : fallback;
+    f.at = weight > 0 ? at / weight : node.centroid;
     // Visibility samples stratified by power: sample i where the running sum reaches (i + ½)/4 of it.
-    if (targets == FarRayTargets::PowerSamples && count > 0) {
+    if (targets == FarRayTargets::PowerSamples) {
         double sum = 0;
-        uint32_t k = 0;
+        uint32_t k = node.begin;
         for (int i = 0; i < 4; ++i) {
             const double target = (i + 0.5) / 4 * weight;
-            for (; k + 1 < count; ++k) {
-                const double y = double(f.sign) * rayrad::luminance(luminance[k]) * mesh.patches[members[k]].area;
+            for (; k + 1 < node.end; ++k) {
+                const uint32_t m = tree.order[k];
+                const double y = double(f.sign) * rayrad::luminance(luminance[m]) * mesh.patches[C.patches[m]].area;
                 if (sum + y >= target) break;
                 sum += y;
             }
-            f.rayTo[i] = k;
+            f.rayTo[i] = tree.order[k];
         }
     }
     f.share = glm::vec3(weight > 0 ? power / weight : Rgb(0.0));
     double r = 0;
-    for (uint32_t k = 0; k < count; ++k) {
-        const Patch& p = mesh.patches[members[k]];
+    for (uint32_t k = node.begin; k < node.end; ++k) {
+        const uint32_t m = tree.order[k];
+        const Patch& p = mesh.patches[C.patches[m]];
         const Vec3 v0 = mesh.corner(p, 0), v1 = mesh.corner(p, 1), v2 = mesh.corner(p, 2);
         for (const Vec3& v : {v0, v1, v2}) r = std::max(r, glm::length(v - f.at));
-        const double y = double(f.sign) * rayrad::luminance(luminance[k]) * p.area;  // cd
+        const double y = double(f.sign) * rayrad::luminance(luminance[m]) * p.area;  // cd
         moment += y * triangleSecondMoment(v0, v1, v2, f.at);  // ∫ (y − at)(y − at)ᵀ dA, weighted
         turning += y * glm::outerProduct(p.centroid - f.at, p.normal);
     }
@@ -71,25 +75,13 @@ FarSource farSource(const PatchMesh& mesh, const std::vector<uint32_t>& members,
     return f;
 }
 
+}  // namespace
+
 std::vector<FarSource> farSources(const PatchMesh& mesh, const Cluster& cluster, const MemberTree& tree,
                                   const std::vector<Rgb>& luminance, FarRayTargets targets) {
     std::vector<FarSource> out(tree.nodes.size());
-    std::vector<uint32_t> members;
-    std::vector<Rgb> memberLuminance;
-    for (size_t i = 0; i < tree.nodes.size(); ++i) {
-        const MemberNode& node = tree.nodes[i];
-        members.clear(), memberLuminance.clear();
-        for (uint32_t k = node.begin; k < node.end; ++k) {
-            members.push_back(cluster.patches[tree.order[k]]);
-            memberLuminance.push_back(luminance[tree.order[k]]);
-        }
-        FarSource& f = out[i];
-        f = farSource(mesh, members, memberLuminance, node.centroid, targets);
-        // Positions in the node, k, to positions in the cluster, order[begin + k].
-        f.brightest = tree.order[node.begin + f.brightest];
-        if (targets == FarRayTargets::PowerSamples)
-            for (uint32_t& k : f.rayTo) k = tree.order[node.begin + k];
-    }
+    for (size_t i = 0; i < tree.nodes.size(); ++i)
+        out[i] = farSource(mesh, cluster, tree, tree.nodes[i], luminance, targets);
     return out;
 }
 

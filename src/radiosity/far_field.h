@@ -53,12 +53,6 @@ enum class FarRayTargets { Brightest, PowerSamples };
 std::vector<FarSource> farSources(const PatchMesh& mesh, const Cluster& cluster, const MemberTree& tree,
                                   const std::vector<Rgb>& luminance, FarRayTargets targets);
 
-/// The far source of any set of patches: `members` (patch indices) with luminance
-/// `luminance[k]` (cd/m², RGB); `fallback` is its centre when it sends no light. Its
-/// `brightest` and `rayTo` are positions k in `members`.
-FarSource farSource(const PatchMesh& mesh, const std::vector<uint32_t>& members, const std::vector<Rgb>& luminance,
-                    const Vec3& fallback, FarRayTargets targets);
-
 /// The node's light at x with normal n (lx, RGB): g expanded about its luminance-weighted
 /// centroid to second order, E ≈ cosθ_x (−Φ·u)/r³ + ½ tr(H_g M) − tr(J P) (the
 /// first-order term in position vanishes there; P carries the first order in the normals);

@@ -67,7 +67,7 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         m_rootFar.push_back(m_far.back().front());
         m_trees.push_back(std::move(tree));
     }
-    m_groupCone = std::cos(glm::radians(scene.clusters.normalToleranceDeg));
+    m_groupCone = glm::radians(scene.clusters.normalToleranceDeg);
     // Groups of clusters only where there are clusters: without them the gather, as the
     // transfers, does not depend on the light (light groups' parts then add up exactly).
     if (clustering.enabled)
@@ -439,7 +439,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
                 continue;
             }
             const double limit = farDiameters * g.far.reach;
-            if (!g.far.mixed && g.normalCone >= m_groupCone && glm::dot(g.far.at - x, g.far.at - x) > limit * limit && !holdsNear(g)) {
+            if (!g.far.mixed && g.coneAngle <= m_groupCone && glm::dot(g.far.at - x, g.far.at - x) > limit * limit && !holdsNear(g)) {
                 sceneItems.push_back(static_cast<uint32_t>(clusters + index));
                 continue;
             }
@@ -460,14 +460,16 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     const size_t sceneCount = grouped ? sceneItems.size() : clusters;
     const size_t count = sceneCount + clusters * (sources.size() - 1);
     auto sumOver = [&](size_t begin, size_t end, Rgb sum) {
+        const size_t imageItems = begin > sceneCount ? begin - sceneCount : 0;
+        size_t place = 1 + imageItems / clusters, c = imageItems % clusters;
         for (size_t k = begin; k != end; ++k) {
             if (k < sceneCount) {
                 const uint32_t item = grouped ? sceneItems[k] : static_cast<uint32_t>(k);
                 sum += item < clusters ? contribution(0, item) : groupContribution(static_cast<uint32_t>(item - clusters));
                 continue;
             }
-            const size_t place = 1 + (k - sceneCount) / clusters, c = (k - sceneCount) % clusters;
             if (open(sources[place], c)) sum += contribution(sources[place], c);
+            if (++c == clusters) c = 0, ++place;
         }
         return sum;
     };

@@ -116,7 +116,7 @@ class Gatherer {
     /// one way (its normals within the clusters' normal tolerance; and only where there are
     /// clusters). The re-gathers of the cube grid's edge sensors take 212 sources each
     /// (104 clusters, 108 groups) instead of 600 clusters: the grid's sensor stage went
-    /// from 0.86–0.89 to 0.59–0.65 × the solve, its error against the path tracer unchanged.
+    /// from 0.86–0.89 to 0.54–0.73 × the solve, its error against the path tracer unchanged.
     /// `options.minWeight` > 0: corner and midpoint values are re-gathered only where an
     /// error in them can still reach the sensor by that fraction. Without it, a point
     /// beside a dense mesh (near patches by the hundred, each re-gathering its corners,
@@ -243,7 +243,7 @@ class Gatherer {
     std::vector<FarSource> m_rootFar;                ///< per cluster, its root's (m_far[c][0]), contiguous
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
     ClusterTree m_clusterTree;                       ///< groups of clusters, far sources in re-gathers
-    double m_groupCone = 1;  ///< a group is one source only while its normals are this close (cos; ClusterGroup::normalCone)
+    double m_groupCone = 0;  ///< a group is one source only while its normals are this close (radians; ClusterGroup::coneAngle)
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
     /// Per image i, per cluster: some member faces the chain's first mirror (clustersFacing);
     /// the others send nothing into the image.
