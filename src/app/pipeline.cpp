@@ -76,16 +76,16 @@ class PushPullObserver {
             }
     }
 
+    /// Whether this push-pull is logged or snapshot (the solver then fills the arrays).
+    bool wants(const radiosity::RadiositySolution& solution) const {
+        return m_options.logConvergence || snapshotDue(solution);
+    }
+
     void operator()(const radiosity::RadiositySolution& solution) {
         const double fraction = solution.unshotFraction();
         bool last = solution.converged;
         bool log = m_options.logConvergence;
-        // Snapshot k of K when the unshot fraction has come k/K of the way (in log) from
-        // where the solve started to radiosity.stop_unshot.
-        const double start = solution.initialUnshotFlux / std::max(1e-300, solution.unshotReference());
-        const double stop = m_run.scene.solver.stopUnshot;
-        bool snapshot = m_options.snapshots > 0 && m_nextSnapshot <= m_options.snapshots &&
-                        (last || fraction <= start * std::pow(stop / start, double(m_nextSnapshot) / m_options.snapshots));
+        bool snapshot = snapshotDue(solution);
         if (!log && !snapshot) return;
         radiosity::RadiositySolution copy = solution;
         radiosity::reconstructVertices(m_run.mesh, copy, m_run.scene.solver.linearReconstruction);
@@ -94,6 +94,16 @@ class PushPullObserver {
     }
 
   private:
+    /// Snapshot k of K when the unshot fraction has come k/K of the way (in log) from
+    /// where the solve started to radiosity.stop_unshot, and at the end.
+    bool snapshotDue(const radiosity::RadiositySolution& solution) const {
+        const double start = solution.initialUnshotFlux / std::max(1e-300, solution.unshotReference());
+        const double stop = m_run.scene.solver.stopUnshot;
+        return m_options.snapshots > 0 && m_nextSnapshot <= m_options.snapshots &&
+               (solution.converged ||
+                solution.unshotFraction() <= start * std::pow(stop / start, double(m_nextSnapshot) / m_options.snapshots));
+    }
+
     void logRow(const radiosity::RadiositySolution& copy, double fraction, bool last) {
         ConvergenceRow row;
         row.seconds = copy.seconds;
@@ -152,7 +162,8 @@ void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
     solver.initialize(run.solution);
     Progress progress("secondary pass", options.quiet);
     PushPullObserver observer(run, options);
-    solver.solve(run.solution, std::ref(observer), [&](const radiosity::RadiositySolution& s) {
+    radiosity::ShootingSolver::PushPullHook hook{[&](const auto& s) { return observer.wants(s); }, std::ref(observer)};
+    solver.solve(run.solution, hook, [&](const radiosity::RadiositySolution& s) {
         // Progress in log space from the first reflection down to the stopping threshold
         // (radiosity.stop_unshot × the emitted flux).
         if (!(s.initialUnshotFlux > 0)) return;  // nothing to shoot: converged at once
@@ -238,7 +249,6 @@ void solveLighting(PipelineRun& run, const std::string& sceneFile, const Pipelin
     } else {
         // Nothing reflects: the solution is complete with no indirect light at all.
         run.solution.indirect.assign(run.mesh.patches.size(), Rgb(0.0));
-        run.solution.unshot.assign(run.mesh.patches.size(), Rgb(0.0));
         run.solution.converged = true;
         radiosity::reconstructVertices(run.mesh, run.solution);
         run.skipped.push_back("secondary pass (no surface reflects light)");

@@ -223,9 +223,9 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
             size_t n2 = ++done;
             if (onProgress && n2 % 16 == 0) onProgress(static_cast<double>(n2) / total);
         });
-        SeamProfiles next(seamVertices, std::move(edges));
-        next.index(mesh);
-        profiles = std::move(next);
+        // The last round's per-patch index goes before the next one is built.
+        profiles = SeamProfiles(seamVertices, std::move(edges));
+        profiles.index(mesh);
     }
     if (gathers) *gathers = taken;
     return profiles;

@@ -1,4 +1,5 @@
 #include <radiosity/shooting_core.h>
+#include <core/check.h>
 #include <radiosity/patch_reflectance.h>
 
 #include <radiosity/cluster_transfer.h>
@@ -37,6 +38,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(solver),
       m_clusterOptions(clusters) {
     m_reflectance.reserve(mesh.patches.size());
+    m_patchArea.reserve(mesh.patches.size());
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];
         m_reflectance.push_back(fromRgb<V>(patchReflectance(scene, mesh, i)));
@@ -113,18 +115,31 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     m_bestResidual = std::numeric_limits<double>::infinity();
     m_shotsSinceBest = 0;
     m_start = std::chrono::steady_clock::now();
-    sync(s);
 }
 
 template <class V>
 void ShootingCore<V>::sync(RadiositySolution& s) const {
+    CHECK(!m_finished);
     const size_t n = m_mesh.patches.size();
     s.indirect.resize(n);
-    s.unshot.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        s.indirect[i] = toRgb(m_indirect[i]);
-        s.unshot[i] = toRgb(m_unshot[i]);
-    }
+    for (size_t i = 0; i < n; ++i) s.indirect[i] = toRgb(m_indirect[i]);
+    s.unshotNetFlux = unshotNetFlux();
+    s.mirrorAbsorbedSecondary = m_stats.mirrorAbsorbed;
+}
+
+template <class V>
+void ShootingCore<V>::finish(RadiositySolution& s) {
+    m_finishedUnshotFlux = unshotFlux();
+    s.unshotNetFlux = unshotNetFlux();
+    m_finished = true;
+    auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
+    release(m_shotE), release(m_shotPending), release(m_pending), release(m_patchArea), release(m_reflectance);
+    release(m_direct);
+    const size_t n = m_mesh.patches.size();
+    s.indirect.resize(n);
+    for (size_t i = 0; i < n; ++i) s.indirect[i] = toRgb(m_indirect[i]);
+    release(m_indirect);
+    release(m_unshot);
     s.mirrorAbsorbedSecondary = m_stats.mirrorAbsorbed;
 }
 
@@ -137,8 +152,16 @@ std::vector<ClusterLight> ShootingCore<V>::clusterLight() const {
 
 template <class V>
 double ShootingCore<V>::unshotFlux() const {
+    if (m_finished) return m_finishedUnshotFlux;
     double flux = 0;
     for (size_t i = 0; i < m_mesh.patches.size(); ++i) flux += kPi * std::abs(lum(m_unshot[i])) * m_patchArea[i];
+    return flux;
+}
+
+template <class V>
+double ShootingCore<V>::unshotNetFlux() const {
+    double flux = 0;
+    for (size_t i = 0; i < m_mesh.patches.size(); ++i) flux += kPi * luminance(toRgb(m_unshot[i])) * m_patchArea[i];
     return flux;
 }
 
@@ -229,13 +252,13 @@ void ShootingCore<V>::pushPull(size_t c) {
 }
 
 template <class V>
-void ShootingCore<V>::pushPullAll(RadiositySolution& s) {
+void ShootingCore<V>::pushPullAll() {
+    CHECK(!m_finished);
     tbb::parallel_for(size_t(0), m_light.size(), [&](size_t c) { pushPull(c); });
     ++m_stats.pushPulls;
     m_shotSincePushPull = 0;
     m_powerAtPushPull = 0;
     for (size_t c = 0; c < m_light.size(); ++c) m_powerAtPushPull += clusterResidual(c);
-    sync(s);
 }
 
 template <class V>
@@ -256,6 +279,7 @@ V ShootingCore<V>::ambientIlluminance() const {
 
 template <class V>
 void ShootingCore<V>::shootCluster(size_t c, int radius) {
+    CHECK(!m_finished);
     Light& light = m_light[c];
     int r = radius >= 0 ? radius : radiusFor(c);
     const size_t n = m_clustering.clusters.size();
@@ -461,6 +485,7 @@ bool ShootingCore<V>::progressing(double residual) {
 
 template <class V>
 bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
+    CHECK(!m_finished);
     if (s.converged) return false;
     if (m_options.maxShots > 0 && s.shots >= m_options.maxShots) {
         m_stats.stopReason = "radiosity.max_shots reached";

@@ -23,7 +23,7 @@ class ShootingCoreBase {
     virtual ~ShootingCoreBase() = default;
     virtual void initialize(RadiositySolution& s) = 0;
     virtual bool step(RadiositySolution& s, bool sync) = 0;
-    virtual void pushPullAll(RadiositySolution& s) = 0;
+    virtual void pushPullAll() = 0;
     virtual void shootCluster(size_t c, int radius) = 0;
     /// Unshot flux in lm: Σ π |Y(ΔL_i)| A_i over patches.
     virtual double unshotFlux() const = 0;
@@ -31,12 +31,19 @@ class ShootingCoreBase {
     virtual double maxIlluminanceStep() const = 0;
     virtual std::vector<ClusterLight> clusterLight() const = 0;
     virtual const ShootingStatistics& statistics() const = 0;
-    /// Writes the working values (indirect, unshot) into the solution's RGB arrays.
+    /// Writes the working values into the solution: its indirect array (RGB) and unshot
+    /// net flux.
     virtual void sync(RadiositySolution& s) const = 0;
+    /// sync() for the last time: frees the per-patch working arrays first (the shot's
+    /// scratch, reflectances, ΔL once its net flux is taken), then the indirect light as
+    /// soon as the solution has its copy, so the solution's array never coexists with
+    /// all of the solver's. The core cannot shoot after this; statistics and cluster
+    /// values stay.
+    virtual void finish(RadiositySolution& s) = 0;
 };
 
 /// The solver's state and steps for light values of type V (double or Rgb). Working
-/// arrays are the solver's own; the solution gets them at sync().
+/// arrays are the solver's own; the solution gets them at sync() and finish().
 template <class V>
 class ShootingCore final : public ShootingCoreBase {
   public:
@@ -45,7 +52,7 @@ class ShootingCore final : public ShootingCoreBase {
 
     void initialize(RadiositySolution& s) override;
     bool step(RadiositySolution& s, bool sync) override;
-    void pushPullAll(RadiositySolution& s) override;
+    void pushPullAll() override;
     void shootCluster(size_t c, int radius) override;
     double unshotFlux() const override;
     bool pushPullDue() const override { return m_shotSincePushPull > m_clusterOptions.pushPullFraction * m_powerAtPushPull; }
@@ -53,6 +60,9 @@ class ShootingCore final : public ShootingCoreBase {
     std::vector<ClusterLight> clusterLight() const override;
     const ShootingStatistics& statistics() const override { return m_stats; }
     void sync(RadiositySolution& s) const override;
+    void finish(RadiositySolution& s) override;
+    /// Σ π Y(ΔL_i) A_i in lm, signed (RadiositySolution::unshotNetFlux).
+    double unshotNetFlux() const;
 
   private:
     /// Where a shot comes from: the real scene, or its image in a chain of mirrors
@@ -226,6 +236,8 @@ class ShootingCore final : public ShootingCoreBase {
     /// their centroids mirrored.
     std::vector<MemberTree> m_trees;
     bool m_conserve = false;
+    bool m_finished = false;            ///< finish() has run: the per-patch arrays are gone
+    double m_finishedUnshotFlux = 0;    ///< lm, unshotFlux() when finish() ran
     /// The mirrors' back faces (vertices reversed, normal −n): light shot into them is
     /// absorbed (a mirror's back is not a patch).
     std::vector<std::vector<Vec3>> m_mirrorBacks;

@@ -33,7 +33,10 @@ ShootingSolver::~ShootingSolver() = default;
 
 void ShootingSolver::initialize(RadiositySolution& s) { m_core->initialize(s); }
 bool ShootingSolver::step(RadiositySolution& s) { return m_core->step(s, /*sync=*/true); }
-void ShootingSolver::pushPullAll(RadiositySolution& s) { m_core->pushPullAll(s); }
+void ShootingSolver::pushPullAll(RadiositySolution& s) {
+    m_core->pushPullAll();
+    m_core->sync(s);
+}
 
 void ShootingSolver::shootCluster(size_t c, RadiositySolution& s, int radius) {
     m_core->shootCluster(c, radius);
@@ -46,20 +49,26 @@ const ShootingStatistics& ShootingSolver::statistics() const { return m_core->st
 
 double ShootingSolver::unshotFlux() const { return m_core->unshotFlux(); }
 
-void ShootingSolver::solve(RadiositySolution& s, const std::function<void(const RadiositySolution&)>& onPushPull,
+void ShootingSolver::solve(RadiositySolution& s, const PushPullHook& onPushPull,
                            const std::function<void(const RadiositySolution&)>& onProgress) {
     auto start = std::chrono::steady_clock::now();
     auto lastReport = start;
     double paused = 0;  // seconds spent in callbacks, not counted as solve time
+    auto report = [&](bool last) {
+        if (!onPushPull.call) return;
+        auto t0 = std::chrono::steady_clock::now();
+        s.seconds = std::chrono::duration<double>(t0 - start).count() - paused;
+        if (!onPushPull.wants || onPushPull.wants(s)) {
+            if (!last) m_core->sync(s);
+            onPushPull.call(s);
+            if (!last) std::vector<Rgb>().swap(s.indirect);  // the solver's own copy goes on
+        }
+        paused += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
     while (m_core->step(s, /*sync=*/false)) {
         if (m_core->pushPullDue()) {
-            m_core->pushPullAll(s);  // also fills the solution's arrays
-            if (onPushPull) {
-                auto t0 = std::chrono::steady_clock::now();
-                s.seconds = std::chrono::duration<double>(t0 - start).count() - paused;
-                onPushPull(s);
-                paused += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            }
+            m_core->pushPullAll();
+            report(false);
         }
         auto now = std::chrono::steady_clock::now();
         if (onProgress && now - lastReport > std::chrono::milliseconds(250)) {
@@ -67,10 +76,11 @@ void ShootingSolver::solve(RadiositySolution& s, const std::function<void(const 
             onProgress(s);
         }
     }
-    m_core->pushPullAll(s);
+    m_core->pushPullAll();
     s.remainingUnshotFlux = m_core->unshotFlux();
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - paused;
-    if (onPushPull) onPushPull(s);
+    m_core->finish(s);
+    report(true);
     if (onProgress) onProgress(s);
 }
 
@@ -84,8 +94,8 @@ EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, co
         Rgb e = s.directMean[i] + (s.indirect.empty() ? Rgb(0.0) : s.indirect[i]);
         b.absorbed += luminance((Rgb(1.0) - rho) * e) * p.area;
         b.directReceived += luminance(s.directMean[i]) * p.area;
-        if (!s.unshot.empty()) b.unshot += kPi * luminance(s.unshot[i]) * p.area;
     }
+    b.unshot = s.unshotNetFlux;
     b.mirrorAbsorbedDirect = s.mirrorAbsorbedDirect;
     b.backAbsorbed = s.backAbsorbedDirect;
     b.mirrorAbsorbed = s.mirrorAbsorbedDirect + s.mirrorAbsorbedSecondary;

@@ -67,8 +67,8 @@ class ShootingCoreBase;
 /// in parallel over receiver clusters and the result does not depend on thread count.
 /// Without clusters every patch is its own cluster and every transfer patch→patch.
 /// When every reflectance and every light is grey, one channel is solved instead of
-/// three (shooting_core.h); the solution's RGB arrays are filled at push-pulls and at
-/// the end of every public call.
+/// three (shooting_core.h); the solution's RGB arrays are filled at the end of step(),
+/// pushPullAll(), shootCluster() and solve() (initialize() leaves them to those).
 class ShootingSolver {
   public:
     ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
@@ -79,9 +79,21 @@ class ShootingSolver {
     void initialize(RadiositySolution& solution);
     /// One shot; false (and nothing done) once converged or out of shots.
     bool step(RadiositySolution& solution);
-    /// Iterates to the stopping rule. `onPushPull` runs after every global push-pull
-    /// (the solution is consistent then); `onProgress` now and then.
-    void solve(RadiositySolution& solution, const std::function<void(const RadiositySolution&)>& onPushPull = {},
+    /// What solve() calls after every global push-pull (the solution is consistent then).
+    /// `wants` sees the solution's figures (shots, unshot flux, converged) and says
+    /// whether this push-pull needs the per-patch arrays; only then are `indirect` and
+    /// `unshot` filled for `call`, and released after it: while it shoots, the solver
+    /// holds the light in its own arrays, and a second set would add 48 bytes per patch.
+    /// No `wants`: every push-pull.
+    struct PushPullHook {
+        std::function<bool(const RadiositySolution&)> wants;
+        std::function<void(const RadiositySolution&)> call;
+    };
+    /// Iterates to the stopping rule and fills the solution's arrays at the end (the
+    /// solver's own are freed then: it cannot shoot after solve()). `onPushPull` as
+    /// above, the last time after the arrays are filled; `onProgress` now and then, with
+    /// the solution's figures only.
+    void solve(RadiositySolution& solution, const PushPullHook& onPushPull = {},
                const std::function<void(const RadiositySolution&)>& onProgress = {});
     /// Pushes every pending I_C down to the patches and pulls ΔL_C, L_C up.
     void pushPullAll(RadiositySolution& solution);

@@ -18,7 +18,6 @@ struct RadiositySolution {
     std::vector<Rgb> directMean;      ///< mean direct illuminance over each patch
     std::vector<RgbF> directCorner;   ///< direct illuminance at each patch's 3 corners (3·i + k), float
     std::vector<Rgb> indirect;        ///< indirect illuminance received at each patch (centroid)
-    std::vector<Rgb> unshot;          ///< ΔL, unshot luminance (may be negative after corrections)
     std::vector<Rgb> vertexIndirect;  ///< indirect at each mesh vertex (average of its triangles)
     /// Corrections graded toward concave seams, added to the vertex interpolation (empty:
     /// none; seam_profiles.h).
@@ -28,7 +27,11 @@ struct RadiositySolution {
     int64_t shots = 0;
     double emittedFlux = 0;           ///< lm the lights emit (set by the direct pass)
     double initialUnshotFlux = 0;     ///< lm left to distribute after the direct pass
-    double remainingUnshotFlux = 0;   ///< lm still unshot at the end
+    double remainingUnshotFlux = 0;   ///< lm still unshot at the end: Σ π |Y(ΔL_i)| A_i
+    /// The same net of sign, Σ π Y(ΔL_i) A_i (lm; ΔL_i may be negative after corrections
+    /// and overshooting): the unshot term of the energy balance. The solve keeps no
+    /// per-patch ΔL beyond its own end (24 bytes per patch nothing else reads).
+    double unshotNetFlux = 0;
     /// The flux the unshot fractions are of, lm: the emitted flux (radiosity.stop_unshot),
     /// or, in a solution without lights (tests that set the direct light by hand), the
     /// first reflection.

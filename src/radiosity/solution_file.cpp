@@ -15,7 +15,7 @@ namespace rayrad::radiosity {
 namespace {
 
 constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
-constexpr uint32_t kVersion = 4;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux
+constexpr uint32_t kVersion = 5;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux; 5: unshot net flux, not ΔL per patch
 constexpr uint32_t kByteOrder = 0x01020304;
 
 /// 64-bit FNV-1a over values' bytes.
@@ -232,9 +232,9 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
     w.putArray(sol.directMean);
     w.putArray(sol.directCorner);
     w.putArray(sol.indirect);
-    w.putArray(sol.unshot);
     w.putArray(sol.vertexIndirect);
-    w.put(sol.shots), w.put(sol.emittedFlux), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(static_cast<uint8_t>(sol.converged));
+    w.put(sol.shots), w.put(sol.emittedFlux), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(sol.unshotNetFlux);
+    w.put(static_cast<uint8_t>(sol.converged));
     w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary), w.put(sol.backAbsorbedDirect);
     w.putArray(sol.backFlux);
     putProfiles(w, sol.seamProfiles);
@@ -293,12 +293,12 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     sol.directMean = r.getArray<Rgb>(patchCount, "the direct illuminance");
     sol.directCorner = r.getArray<RgbF>(3 * patchCount, "the corner direct illuminance", true);
     sol.indirect = r.getArray<Rgb>(patchCount, "the indirect illuminance");
-    sol.unshot = r.getArray<Rgb>(patchCount, "the unshot light");
     sol.vertexIndirect = r.getArray<Rgb>(vertexCount, "the vertex values");
     sol.shots = r.get<int64_t>("the statistics");
     sol.emittedFlux = r.get<double>("the statistics");
     sol.initialUnshotFlux = r.get<double>("the statistics");
     sol.remainingUnshotFlux = r.get<double>("the statistics");
+    sol.unshotNetFlux = r.get<double>("the statistics");
     sol.converged = r.get<uint8_t>("the statistics") != 0;
     sol.seconds = r.get<double>("the statistics");
     sol.mirrorAbsorbedDirect = r.get<double>("the statistics");
@@ -319,7 +319,7 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     sol.directCorner.assign(3 * patchCount, RgbF(0.0f));
     sol.indirect.assign(patchCount, Rgb(0.0));
     sol.vertexIndirect.assign(vertexCount, Rgb(0.0));
-    sol.unshot.assign(patchCount, Rgb(0.0));
+    sol.unshotNetFlux = 0;
     sol.seamProfiles = SeamProfiles();
     for (uint64_t g = 0; g < groupCount; ++g) {
         const std::string name = r.getString("a light group's name");
