@@ -73,18 +73,23 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
         const double y = luminance(m_areaLights[k].luminance) * factor;
         if (y > 0) candidates.push_back({y, factor, static_cast<uint32_t>(points + k), exact}), remaining += y;
     }
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return a.potential != b.potential ? a.potential > b.potential : a.light < b.light;  // deterministic
-    });
+    // The strongest first (ties: the lower index, so the order is deterministic), taken
+    // from a heap: a hit tests a few of a hundred lights, and sorting them all cost more
+    // than the selection.
+    auto weaker = [](const Candidate& a, const Candidate& b) {
+        return a.potential != b.potential ? a.potential < b.potential : a.light > b.light;
+    };
+    std::make_heap(candidates.begin(), candidates.end(), weaker);
+    auto untestedEnd = candidates.end();  // [begin, untestedEnd) is the heap of lights not yet tested
     // Test the strongest first, until what is left could add less than the threshold of
     // all x receives: the light found, and what it receives besides (a spot under a desk,
     // where every light is blocked, need not test them all to be within the threshold).
     Rgb e(0.0);
     double found = 0, tested = 0;  // Y of what the tested lights gave, and of their potential
-    size_t next = 0;
-    for (; next < candidates.size(); ++next) {
-        if (next > 0 && remaining < threshold * (found + received)) break;
-        const Candidate& c = candidates[next];
+    for (; untestedEnd != candidates.begin(); --untestedEnd) {
+        if (untestedEnd != candidates.end() && remaining < threshold * (found + received)) break;
+        std::pop_heap(candidates.begin(), untestedEnd, weaker);
+        const Candidate& c = *(untestedEnd - 1);
         Rgb v;
         if (c.light < points) {
             v = fromPointLight(m_pointLights[c.light], x, n, vis);
@@ -107,7 +112,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     // The untested: unshadowed, times the share of their potential the tested lights delivered.
     const double seen = tested > 0 ? std::min(1.0, found / tested) : 1.0;
     Rgb untested(0.0);
-    for (; next < candidates.size(); ++next) untested += colourOf(candidates[next].light) * (candidates[next].factor * seen);
+    for (auto c = candidates.begin(); c != untestedEnd; ++c) untested += colourOf(c->light) * (c->factor * seen);
     if (pixel) pixel->untested = untested;
     return e + untested + fromImages(x, n, vis, samples, rng, nullptr, nullptr);
 }
