@@ -1,5 +1,6 @@
 // Clusters and the two-level shooting: invariants, push-pull, the energy correction.
 #include <app/pipeline.h>
+#include <core/check.h>
 #include <radiosity/cluster_transfer.h>
 #include <radiosity/clusters.h>
 #include <radiosity/form_factor.h>
@@ -87,6 +88,40 @@ TEST_CASE("push-pull conserves energy", "[clusters]") {
     // ρ = 2/3 everywhere: the pushed illuminance flux is pending / ρ.
     CHECK(indirectAfter - indirectBefore == Approx(pending * 1.5).epsilon(1e-9));
     for (size_t c = 0; c < clustering.clusters.size(); ++c) REQUIRE(solver.clusterLight()[c].pendingReflected == Rgb(0.0));
+}
+
+TEST_CASE("solve() hands the solution the indirect light only at the push-pulls that want it and at the end",
+          "[clusters]") {
+    // While it shoots, the solver holds the light in its own arrays; a second copy in the
+    // solution would cost 24 bytes per patch (and the unshot ΔL another 24).
+    auto s = scene::buildScene(scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "1"}}));
+    auto mesh = premesh(s, s.meshing);
+    auto clustering = buildClusters(s, mesh, s.clusters);
+    raytrace::EmbreeScene embree(mesh, 1e-5 * s.diagonal());
+    DirectLight lights(s);
+    RadiositySolution sol;
+    computeDirect(s, mesh, lights, embree, 4, sol);
+    ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
+    solver.initialize(sol);
+    int asked = 0, wanted = 0, askedWithArrays = 0;
+    std::vector<size_t> sizes;  // the indirect array's size at each call
+    ShootingSolver::PushPullHook hook{[&](const RadiositySolution& x) {
+                                          if (!x.converged && !x.indirect.empty()) ++askedWithArrays;
+                                          return ++asked % 2 == 0;
+                                      },
+                                      [&](const RadiositySolution& x) { ++wanted, sizes.push_back(x.indirect.size()); }};
+    solver.solve(sol, hook);
+    REQUIRE(sol.converged);
+    REQUIRE(asked >= 3);
+    CHECK(wanted == asked / 2);  // the last call counts as asked, too
+    for (size_t n : sizes) CHECK(n == mesh.patches.size());
+    CHECK(askedWithArrays == 0);  // between the calls that want them, the arrays are released
+    REQUIRE(sol.indirect.size() == mesh.patches.size());
+    // The net unshot flux stays with the solution; |it| ≤ the unshot flux Σ π |Y(ΔL)| A.
+    CHECK(std::abs(sol.unshotNetFlux) <= sol.remainingUnshotFlux * (1 + 1e-12));
+    CHECK(sol.remainingUnshotFlux > 0);
+    // The solver has handed its arrays over: it cannot shoot on.
+    CHECK_THROWS_AS(solver.step(sol), InternalError);
 }
 
 TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the total energy", "[clusters]") {
