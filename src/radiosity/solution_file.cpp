@@ -266,7 +266,10 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     Reader r(bytes, end, path);
     r.skip(sizeof kMagic);
     const auto version = r.get<uint32_t>("the version");
-    if (version != kVersion) throw fail(fmt::format("a solution of format version {}; this rayrad reads version {}", version, kVersion));
+    if (version != kVersion)
+        throw fail(fmt::format("a solution of format version {}; this rayrad reads version {}: solve the scene again "
+                               "(rayrad solve SCENE --save FILE)",
+                               version, kVersion));
     if (r.get<uint32_t>("the byte-order mark") != kByteOrder) throw fail("written on a machine of another byte order");
     uint64_t stored;
     std::memcpy(&stored, bytes.data() + end, sizeof stored);

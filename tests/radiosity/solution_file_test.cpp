@@ -74,6 +74,11 @@ TEST_CASE("a saved solution reads back exactly, and any damage is refused", "[so
     CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 9, 4), 5, 7),
                       Catch::Contains("only dimming whole light groups can be applied"));
     CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 3, 9), 5, 7), Catch::Contains("settings differ"));
+    // A file of another format version (the uint32 after the 10-byte magic "RAYRADSOL\0")
+    // says so and what to do.
+    std::string older = bytes;
+    older[10] = static_cast<char>(older[10] - 1);
+    CHECK_THROWS_WITH(decodeSolution(older, "s.rrs", f, 5, 7), Catch::Contains("solve the scene again"));
     // Every truncation and every flipped byte.
     int refused = 0;
     for (size_t n = 0; n < bytes.size(); ++n) {
