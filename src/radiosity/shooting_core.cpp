@@ -129,18 +129,14 @@ void ShootingCore<V>::sync(RadiositySolution& s) const {
 
 template <class V>
 void ShootingCore<V>::finish(RadiositySolution& s) {
-    m_finishedUnshotFlux = unshotFlux();
-    s.unshotNetFlux = unshotNetFlux();
-    m_finished = true;
     auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
-    release(m_shotE), release(m_shotPending), release(m_pending), release(m_patchArea), release(m_reflectance);
-    release(m_direct);
-    const size_t n = m_mesh.patches.size();
-    s.indirect.resize(n);
-    for (size_t i = 0; i < n; ++i) s.indirect[i] = toRgb(m_indirect[i]);
-    release(m_indirect);
-    release(m_unshot);
-    s.mirrorAbsorbedSecondary = m_stats.mirrorAbsorbed;
+    // What only the shots read goes before the solution's array is allocated ...
+    release(m_shotE), release(m_shotPending), release(m_pending), release(m_reflectance), release(m_direct);
+    sync(s);
+    m_finishedUnshotFlux = unshotFlux();
+    m_finished = true;
+    // ... and what sync() read, after.
+    release(m_indirect), release(m_unshot), release(m_patchArea);
 }
 
 template <class V>

@@ -34,11 +34,11 @@ class ShootingCoreBase {
     /// Writes the working values into the solution: its indirect array (RGB) and unshot
     /// net flux.
     virtual void sync(RadiositySolution& s) const = 0;
-    /// sync() for the last time: frees the per-patch working arrays first (the shot's
-    /// scratch, reflectances, ΔL once its net flux is taken), then the indirect light as
-    /// soon as the solution has its copy, so the solution's array never coexists with
-    /// all of the solver's. The core cannot shoot after this; statistics and cluster
-    /// values stay.
+    /// sync() for the last time: frees the per-patch arrays only the shots read first (the
+    /// shot's scratch, pending light, reflectances, direct light), then the rest once the
+    /// solution has its copy, so the solution's array never coexists with all of the
+    /// solver's. The core cannot shoot after this; statistics, the unshot flux and the
+    /// cluster values stay.
     virtual void finish(RadiositySolution& s) = 0;
 };
 
