@@ -37,6 +37,17 @@ const char* kTwoQuads = R"({"materials": {"m": {"reflectance": 0.5}},
     "radiosity": {"max_edge": 0.25},
     "clusters": {"voxel_size": 1.0}})";
 
+/// The empty cube at max_edge 1, clustered, after its direct pass: where a shooting starts.
+struct DirectLitCube {
+    scene::Scene s = scene::buildScene(
+        scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "1"}}));
+    PatchMesh mesh = premesh(s, s.meshing);
+    Clustering clustering = buildClusters(s, mesh, s.clusters);
+    raytrace::EmbreeScene embree{mesh, 1e-5 * s.diagonal()};
+    RadiositySolution sol;
+    DirectLitCube() { computeDirect(s, mesh, DirectLight(s), embree, 4, sol); }
+};
+
 }  // namespace
 
 TEST_CASE("every patch is in exactly one cluster within the normal tolerance and its voxel", "[clusters]") {
@@ -66,13 +77,8 @@ TEST_CASE("every patch is in exactly one cluster within the normal tolerance and
 }
 
 TEST_CASE("push-pull conserves energy", "[clusters]") {
-    auto s = scene::buildScene(scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "1"}}));
-    auto mesh = premesh(s, s.meshing);
-    auto clustering = buildClusters(s, mesh, s.clusters);
-    raytrace::EmbreeScene embree(mesh, 1e-5 * s.diagonal());
-    DirectLight lights(s);
-    RadiositySolution sol;
-    computeDirect(s, mesh, lights, embree, 4, sol);
+    DirectLitCube cube;
+    auto& [s, mesh, clustering, embree, sol] = cube;
     ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
     solver.initialize(sol);
     for (int k = 0; k < 20; ++k) solver.step(sol);
@@ -94,13 +100,8 @@ TEST_CASE("solve() hands the solution the indirect light only at the push-pulls 
           "[clusters]") {
     // While it shoots, the solver holds the light in its own arrays; a second copy in the
     // solution would cost 24 bytes per patch (and the unshot ΔL another 24).
-    auto s = scene::buildScene(scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "1"}}));
-    auto mesh = premesh(s, s.meshing);
-    auto clustering = buildClusters(s, mesh, s.clusters);
-    raytrace::EmbreeScene embree(mesh, 1e-5 * s.diagonal());
-    DirectLight lights(s);
-    RadiositySolution sol;
-    computeDirect(s, mesh, lights, embree, 4, sol);
+    DirectLitCube cube;
+    auto& [s, mesh, clustering, embree, sol] = cube;
     ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
     solver.initialize(sol);
     int asked = 0, wanted = 0, askedWithArrays = 0;
