@@ -16,7 +16,8 @@ namespace {
 /// hierarchical far field grows more slowly than the patch count, so this is an upper bound.
 constexpr double kGatherSecondsPerPatch = 0.5e-6;
 /// Peak memory model, measured: the process with its libraries and Embree (cube runs
-/// start near 130 MiB), and bytes per patch at 1.2 M patches (bench/scale.sh).
+/// start near 130 MiB), and bytes per patch at 1.2 M patches (bench/scale.sh: 387 on
+/// 2026-11-24, 416 and then 382 on 2026-11-27; 400, the bound, errs high).
 constexpr double kBaseBytes = 130.0 * (1 << 20);
 constexpr double kBytesPerPatch = 400;
 /// Voxels per side the cluster grid can index.
