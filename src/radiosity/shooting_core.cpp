@@ -24,9 +24,6 @@ namespace {
 /// Derived ΔI_max: this fraction of the scene's mean illuminance (measured trade-off, see
 /// docs/validation.md).
 constexpr double kDefaultStepFraction = 0.2;
-/// Shots without a new low of the residual before the solve counts as stalled (or a
-/// quarter of the clusters, if more).
-constexpr int64_t kStallShots = 2000;
 /// Members per group (see member_tree.h).
 constexpr size_t kGroupSize = 8;
 }  // namespace
@@ -162,19 +159,6 @@ double ShootingCore<V>::unshotNetFlux() const {
 }
 
 template <class V>
-double ShootingCore<V>::clusterPower(size_t c) const {
-    // Candle power |ΔL|·A, counting what the pending I_C will add once pushed down.
-    const Light& l = m_light[c];
-    return std::abs(lum(l.unshot + l.pendingReflected)) * m_clustering.clusters[c].area;
-}
-
-template <class V>
-double ShootingCore<V>::clusterResidual(size_t c) const {
-    const Light& l = m_light[c];
-    return (std::max(0.0, l.absUnshot) + std::abs(lum(l.pendingReflected))) * m_clustering.clusters[c].area;
-}
-
-template <class V>
 int ShootingCore<V>::radiusFor(size_t c) const {
     if (!m_clustering.enabled) return INT_MAX;
     const Cluster& C = m_clustering.clusters[c];
@@ -262,15 +246,6 @@ bool ShootingCore<V>::coplanar(const Cluster& a, const Cluster& b) const {
     if (!a.planar || !b.planar || glm::dot(a.normal, b.normal) < 1 - 1e-12) return false;
     double scale = 1e-9 * (1 + a.diameter + b.diameter);
     return std::abs(glm::dot(b.centroid - a.centroid, a.normal)) < scale;
-}
-
-template <class V>
-V ShootingCore<V>::ambientIlluminance() const {
-    // E_amb = π ΔΦ (1 − e) / (A (1 − ρ̄ (1 − e))): the unshot power lands on the fraction
-    // 1 − e of the surfaces, is reflected by ρ̄ each bounce, spread over the area A.
-    double stays = 1.0 - m_stats.escapeFraction;
-    V bounce = V(1.0) - m_meanReflectance * stays;
-    return m_area > 0 ? kPi * m_signedUnshot * stays / (m_area * bounce) : V(0.0);
 }
 
 template <class V>
@@ -449,77 +424,6 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
         }
         m_light[d].pendingReflected += reflectedSum / (kPi * D.area);
     });
-}
-
-template <class V>
-bool ShootingCore<V>::progressing(double residual) {
-    // The residual need not fall at every shot (overshooting ships light ahead, and
-    // corrections take some back), but it must reach a new low within a window of
-    // shots. If it does not, overshooting is switched off (its estimate is what can go
-    // round in circles); if it still does not, the solve stops and says so.
-    if (residual < m_bestResidual * (1 - 1e-9)) {
-        m_bestResidual = residual;
-        m_shotsSinceBest = 0;
-    } else if (++m_shotsSinceBest > std::max<int64_t>(kStallShots, static_cast<int64_t>(m_light.size()) / 4)) {
-        m_shotsSinceBest = 0;
-        if (m_options.overshoot) {
-            m_options.overshoot = false;
-            m_stats.overshooting = false;
-            m_stats.overshootStalled = true;
-        } else {
-            m_stats.stopReason = "stalled: the residual stopped falling";
-            return false;
-        }
-    }
-    if (m_options.maxSeconds > 0 &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count() > m_options.maxSeconds) {
-        m_stats.stopReason = "radiosity.max_seconds reached";
-        return false;
-    }
-    return true;
-}
-
-template <class V>
-bool ShootingCore<V>::step(RadiositySolution& s, bool syncAfter) {
-    CHECK(!m_finished);
-    if (s.converged) return false;
-    if (m_options.maxShots > 0 && s.shots >= m_options.maxShots) {
-        m_stats.stopReason = "radiosity.max_shots reached";
-        return false;
-    }
-    // The residual is Σ |ΔL_C| A_C; with overshooting the shooter is the cluster that
-    // would ship the most, |ΔL_C + ρ_C E_amb / π| A_C (a cluster that already shipped its
-    // future light holds minus that and has nothing to ship).
-    double total = 0;
-    m_signedUnshot = V(0.0);
-    for (size_t c = 0; c < m_light.size(); ++c) {
-        total += clusterResidual(c);
-        m_signedUnshot += (m_light[c].unshot + m_light[c].pendingReflected) * m_clustering.clusters[c].area;
-    }
-    const V ambient = m_options.overshoot ? ambientIlluminance() : V(0.0);
-    size_t best = 0;
-    double bestPower = -1;
-    for (size_t c = 0; c < m_light.size(); ++c) {
-        const Cluster& C = m_clustering.clusters[c];
-        const Light& l = m_light[c];
-        // The overshoot only of the lit members, as shootCluster() ships it: counting the
-        // unlit ones picked a dark cluster (the underside of a sofa) whose shots ship
-        // nothing, for ever.
-        double power = std::abs(lum(l.unshot + l.pendingReflected + l.litReflectance * ambient / kPi)) * C.area;
-        if (power > bestPower) bestPower = power, best = c;
-    }
-    s.remainingUnshotFlux = kPi * total;
-    if (s.remainingUnshotFlux <= m_options.stopUnshot * s.unshotReference() || bestPower <= 0) {
-        s.converged = true;
-        return false;
-    }
-    if (!progressing(total)) return false;
-    pushPull(best);  // the shooter's ΔL_C must match its patches' ΔL_i
-    m_shotSincePushPull += clusterPower(best);
-    shootCluster(best, -1);
-    ++s.shots;
-    if (syncAfter) sync(s);
-    return true;
 }
 
 template class ShootingCore<double>;
