@@ -30,6 +30,11 @@ inline double luminance(const Rgb& c) {
     return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
 }
 
+/// The axis (0, 1, 2) of a box's longest side, `extent` its sides (ties: the lower axis).
+inline int longestAxis(const Vec3& extent) {
+    return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+}
+
 inline bool isFinite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }

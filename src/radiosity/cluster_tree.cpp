@@ -22,25 +22,26 @@ uint32_t build(const Clustering& clustering, uint32_t begin, uint32_t end, Clust
     group.begin = begin, group.end = end;
     if (end - begin > 1) {
         const auto first = tree.order.begin() + begin, last = tree.order.begin() + end;
+        // The box of a vector over the group's clusters: its low and high corners.
+        auto box = [&](const Vec3 Cluster::*member) {
+            Vec3 lo(1e300), hi(-1e300);
+            for (auto c = first; c != last; ++c)
+                lo = glm::min(lo, clustering.clusters[*c].*member), hi = glm::max(hi, clustering.clusters[*c].*member);
+            return std::pair{lo, hi};
+        };
         const auto middle = [&]() -> uint32_t {
             // Clusters facing different ways are parted first, at the middle of the widest
             // spread of a normal component: a group facing one way can be one source.
-            Vec3 lo(1e300), hi(-1e300);
-            for (auto c = first; c != last; ++c)
-                lo = glm::min(lo, clustering.clusters[*c].normal), hi = glm::max(hi, clustering.clusters[*c].normal);
-            Vec3 extent = hi - lo;
-            int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
-            if (extent[axis] > kNormalSpread) {
-                const double cut = 0.5 * (lo[axis] + hi[axis]);
-                const auto split = std::partition(first, last, [&](uint32_t c) { return clustering.clusters[c].normal[axis] < cut; });
+            const auto [low, high] = box(&Cluster::normal);
+            const int normalAxis = longestAxis(high - low);
+            if (high[normalAxis] - low[normalAxis] > kNormalSpread) {
+                const double cut = 0.5 * (low[normalAxis] + high[normalAxis]);
+                const auto split = std::partition(first, last, [&](uint32_t c) { return clustering.clusters[c].normal[normalAxis] < cut; });
                 return static_cast<uint32_t>(split - tree.order.begin());
             }
             // Then by position: at the median along the centroids' longest extent.
-            lo = Vec3(1e300), hi = Vec3(-1e300);
-            for (auto c = first; c != last; ++c)
-                lo = glm::min(lo, clustering.clusters[*c].centroid), hi = glm::max(hi, clustering.clusters[*c].centroid);
-            extent = hi - lo;
-            axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+            const auto [lowest, highest] = box(&Cluster::centroid);
+            const int axis = longestAxis(highest - lowest);
             const uint32_t median = begin + (end - begin) / 2;
             std::nth_element(first, tree.order.begin() + median, last, [&](uint32_t a, uint32_t b) {
                 return clustering.clusters[a].centroid[axis] < clustering.clusters[b].centroid[axis];
@@ -55,10 +56,7 @@ uint32_t build(const Clustering& clustering, uint32_t begin, uint32_t end, Clust
 }
 
 /// The luminance vector Σ Y(L_j) A_j n_j of a far source (cd), from its channels' fluxes.
-Vec3 fluxY(const FarSource& f) {
-    return Vec3(luminance(Rgb(f.flux[0].x, f.flux[1].x, f.flux[2].x)), luminance(Rgb(f.flux[0].y, f.flux[1].y, f.flux[2].y)),
-                luminance(Rgb(f.flux[0].z, f.flux[1].z, f.flux[2].z)));
-}
+Vec3 fluxY(const FarSource& f) { return luminanceFlux(Vec3(f.flux[0]), Vec3(f.flux[1]), Vec3(f.flux[2])); }
 
 /// Angle (radians) between two unit directions.
 double angleBetween(const Vec3& a, const Vec3& b) { return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)); }

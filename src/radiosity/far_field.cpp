@@ -67,15 +67,17 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
     f.moment = glm::mat3(moment);
     f.turning = glm::mat3(turning);
     for (int ch = 0; ch < 3; ++ch) f.flux[ch] = glm::vec3(flux[ch]);
-    // Φ of the luminance: each component is Y of the channels' components.
-    const Vec3 fluxY(rayrad::luminance(Rgb(flux[0].x, flux[1].x, flux[2].x)),
-                     rayrad::luminance(Rgb(flux[0].y, flux[1].y, flux[2].y)),
-                     rayrad::luminance(Rgb(flux[0].z, flux[1].z, flux[2].z)));
+    const Vec3 fluxY = luminanceFlux(flux[0], flux[1], flux[2]);
     f.normal = glm::vec3(glm::length(fluxY) > 0 ? glm::normalize(fluxY) : Vec3(0.0));
     return f;
 }
 
 }  // namespace
+
+Vec3 luminanceFlux(const Vec3& red, const Vec3& green, const Vec3& blue) {
+    return Vec3(rayrad::luminance(Rgb(red.x, green.x, blue.x)), rayrad::luminance(Rgb(red.y, green.y, blue.y)),
+                rayrad::luminance(Rgb(red.z, green.z, blue.z)));
+}
 
 std::vector<FarSource> farSources(const PatchMesh& mesh, const Cluster& cluster, const MemberTree& tree,
                                   const std::vector<Rgb>& luminance, FarRayTargets targets) {

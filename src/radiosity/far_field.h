@@ -42,6 +42,10 @@ struct FarSource {
     bool mixed = false;                ///< members of both signs: no far field
 };
 
+/// Φ of the luminance, Σ Y(L_j) A_j n_j (cd): each component Y of the three channels'
+/// fluxes' components.
+Vec3 luminanceFlux(const Vec3& red, const Vec3& green, const Vec3& blue);
+
 /// Which ray targets a far source needs: its brightest member only (the shooting, which
 /// builds far sources for every shot), or also its power-stratified visibility samples
 /// FarSource::rayTo (the final gather; visibility_share.h).

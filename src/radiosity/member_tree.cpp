@@ -34,7 +34,7 @@ uint32_t build(const PatchMesh& mesh, const Cluster& C, uint32_t begin, uint32_t
         Vec3 lo(1e300), hi(-1e300);
         for (auto k = first; k != last; ++k) lo = glm::min(lo, centroidOf(*k)), hi = glm::max(hi, centroidOf(*k));
         const Vec3 extent = hi - lo;
-        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+        const int axis = longestAxis(extent);
         const uint32_t middle = begin + (end - begin) / 2;
         std::nth_element(first, tree.order.begin() + middle, last,
                          [&](uint32_t a, uint32_t b) { return centroidOf(a)[axis] < centroidOf(b)[axis]; });
