@@ -77,9 +77,9 @@ void ShootingSolver::solve(RadiositySolution& s, const PushPullHook& onPushPull,
         }
     }
     m_core->pushPullAll();
-    s.remainingUnshotFlux = m_core->unshotFlux();
-    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - paused;
     m_core->finish(s);
+    s.remainingUnshotFlux = m_core->unshotFlux();  // kept by finish()
+    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - paused;
     report(true);
     if (onProgress) onProgress(s);
 }
