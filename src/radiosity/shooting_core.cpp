@@ -128,7 +128,8 @@ template <class V>
 void ShootingCore<V>::finish(RadiositySolution& s) {
     auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
     // What only the shots read goes before the solution's array is allocated ...
-    release(m_shotE), release(m_shotPending), release(m_pending), release(m_reflectance), release(m_direct);
+    release(m_shotE), release(m_shotPending), release(m_deliveredTo), release(m_pending), release(m_reflectance),
+        release(m_direct);
     sync(s);
     m_finishedUnshotFlux = unshotFlux();
     m_finished = true;
@@ -304,74 +305,105 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     // Deliveries are collected first (patch→patch in m_shotE, cluster→cluster in
     // m_shotPending) so that a closed scene can scale them to the flux shot.
 
-    for (size_t si = 0; si < m_sources.size(); ++si) {
-        const Source& s = m_sources[si];
+    // Every source's transfers to receiver d are made by one task, source by source, so
+    // each receiver's deliveries add up in the same order at any thread count; the
+    // sources share each pass's parallel loop (a loop per source cost the living room's
+    // 12 sources 24 forks and joins a shot).
+    const size_t sources = m_sources.size();
+    std::vector<ClusterSamples> localSamples(sources);
+    std::vector<std::vector<char>> regionOpen(sources);  // images: the voxels light can reach through the chain
+    for (size_t si = 0; si < sources; ++si) {
         if (!shooters[si]) continue;
-        const Shooter& from = *shooters[si];
-        const Cluster& Cs = from.cluster();
-        const ClusterSamples localSamples = from.local(samples);
-        std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, patchPairs{0}, lit{0};
-        // Deliveries per receiver, for the conservation and the mirrors' account (summed
-        // in order: deterministic).
-        std::vector<Delivery> deliveredTo(n);
-        // Through a mirror chain, the voxels light can reach at all.
-        std::vector<char> regionOpen(s.image ? m_regions.regions.size() : 0);
-        for (size_t k = 0; k < regionOpen.size(); ++k)
-            regionOpen[k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions.regions[k].centre,
-                                             m_regions.regions[k].radius);
-        // Cluster→cluster now; the receivers within r_v are listed for patch→patch.
-        std::vector<char> isNear(n, 0);
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
-            int64_t cc = 0, carried = 0, split = 0;
-            for (size_t d = range.begin(); d != range.end(); ++d) {
-                if (corrected[si][d]) continue;
-                const Cluster& D = m_clustering.clusters[d];
+        const Source& s = m_sources[si];
+        const Cluster& Cs = shooters[si]->cluster();
+        localSamples[si] = shooters[si]->local(samples);
+        if (!s.image) continue;
+        regionOpen[si].resize(m_regions.regions.size());
+        for (size_t k = 0; k < regionOpen[si].size(); ++k)
+            regionOpen[si][k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions.regions[k].centre,
+                                                 m_regions.regions[k].radius);
+    }
+    // Deliveries per source and receiver, for the conservation and the mirrors' account
+    // (zero between shots; booked below source by source, in receiver order).
+    m_deliveredTo.resize(sources * n);
+    auto deliveredTo = [&](size_t si, size_t d) -> Delivery& { return m_deliveredTo[si * n + d]; };
+    std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, imageTransfers{0}, imageLit{0}, patchPairs{0};
+    // Cluster→cluster now; the receivers within r_v are marked for patch→patch.
+    std::vector<char> isNear(sources * n, 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
+        int64_t cc = 0, split = 0, ccImage = 0, litImage = 0;
+        for (size_t d = range.begin(); d != range.end(); ++d) {
+            const Cluster& D = m_clustering.clusters[d];
+            for (size_t si = 0; si < sources; ++si) {
+                if (!shooters[si] || corrected[si][d]) continue;
+                const Source& s = m_sources[si];
+                const Shooter& from = *shooters[si];
+                const Cluster& Cs = from.cluster();
                 bool self = d == c && !s.image;
-                if (s.image && !regionOpen[m_regions.regionOf[d]]) continue;
+                if (s.image && !regionOpen[si][m_regions.regionOf[d]]) continue;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
                 if (self || inNearField(s, Cs, c, d, r)) {
-                    isNear[d] = 1;
+                    isNear[si * n + d] = 1;
                     continue;
                 }
                 SplitTransfer parts;
-                double t = clusterTransfer(from.mesh(), Cs, localSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
-                                           m_clusterOptions.receiverDetail, &from.geometry, &parts);
+                double t = clusterTransfer(from.mesh(), Cs, localSamples[si], m_mesh, D, *s.vis,
+                                           m_options.analyticDistance, m_clusterOptions.receiverDetail, &from.geometry,
+                                           &parts);
+                bool carried = false;
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V
                     thread_local std::vector<double> visible;
-                    memberVisibility(from.mesh(), localSamples, m_mesh, D, *s.vis, visible);
-                    deliveredTo[d] = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++split;
-                    if (deliveredTo[d].flux != V(0.0)) ++carried;  // every member's rays may have been blocked
+                    memberVisibility(from.mesh(), localSamples[si], m_mesh, D, *s.vis, visible);
+                    deliveredTo(si, d) = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++split;
+                    carried = deliveredTo(si, d).flux != V(0.0);  // every member's rays may have been blocked
                 } else if (t > 0) {
-                    deliveredTo[d] = addPending(Cs, d, deltaLC * s.weight * t), ++carried;  // I_D += Ks ΔL_C π F V
+                    deliveredTo(si, d) = addPending(Cs, d, deltaLC * s.weight * t), carried = true;  // I_D += Ks ΔL_C π F V
                 }
                 ++cc;
+                if (s.image) ++ccImage, litImage += carried;
             }
-            clusterTransfers += cc;
-            splitTransfers += split;
-            lit += carried;
-        });
-        std::vector<size_t> nearReceivers;
-        for (size_t d = 0; d < n; ++d)
-            if (isNear[d]) nearReceivers.push_back(d);
-        if (!nearReceivers.empty()) {
-            const Emission shotLight = emission(from, c, unshot);
-            tbb::parallel_for(tbb::blocked_range<size_t>(0, nearReceivers.size(), 4),
-                              [&](const tbb::blocked_range<size_t>& range) {
-                int64_t pp = 0;
-                for (size_t k = range.begin(); k != range.end(); ++k) {
-                    const size_t d = nearReceivers[k];
-                    deliveredTo[d] = shootPatches(s, from, c, shotLight, d, m_shotE, pp);
-                }
-                patchPairs += pp;
-            });
         }
-        m_stats.clusterTransfers += clusterTransfers;
-        m_stats.splitTransfers += splitTransfers;
-        if (s.image) m_stats.imageTransfers += clusterTransfers, m_stats.imageTransfersLit += lit;
-        m_stats.patchPairs += patchPairs;
-        for (const Delivery& d : deliveredTo) delivered.add(s, d);
+        clusterTransfers += cc;
+        splitTransfers += split;
+        imageTransfers += ccImage;
+        imageLit += litImage;
+    });
+    // Patch→patch to the receivers within r_v, with each source's emission.
+    std::vector<size_t> nearReceivers;
+    std::vector<char> sendsNear(sources, 0);
+    for (size_t d = 0; d < n; ++d) {
+        bool any = false;
+        for (size_t si = 0; si < sources; ++si)
+            if (isNear[si * n + d]) sendsNear[si] = 1, any = true;
+        if (any) nearReceivers.push_back(d);
     }
+    std::vector<std::optional<Emission>> shotLight(sources);
+    for (size_t si = 0; si < sources; ++si)
+        if (sendsNear[si]) shotLight[si].emplace(emission(*shooters[si], c, unshot));
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, nearReceivers.size(), 4), [&](const tbb::blocked_range<size_t>& range) {
+        int64_t pp = 0;
+        for (size_t k = range.begin(); k != range.end(); ++k) {
+            const size_t d = nearReceivers[k];
+            for (size_t si = 0; si < sources; ++si)
+                if (isNear[si * n + d])
+                    deliveredTo(si, d) = shootPatches(m_sources[si], *shooters[si], c, *shotLight[si], d, m_shotE, pp);
+        }
+        patchPairs += pp;
+    });
+    m_stats.clusterTransfers += clusterTransfers;
+    m_stats.splitTransfers += splitTransfers;
+    m_stats.imageTransfers += imageTransfers, m_stats.imageTransfersLit += imageLit;
+    m_stats.patchPairs += patchPairs;
+    // Only receivers reached this shot (or by its corrections) hold a delivery.
+    std::vector<size_t> reachedNow;
+    for (size_t d = 0; d < n; ++d)
+        if (m_reached[d]) reachedNow.push_back(d);
+    for (size_t si = 0; si < sources; ++si)
+        for (size_t d : reachedNow) {
+            delivered.add(m_sources[si], deliveredTo(si, d));
+            deliveredTo(si, d) = Delivery{};
+        }
     if (!m_mirrorBacks.empty()) {  // what goes into a mirror's back is absorbed there, not delivered
         double back = intoMirrorBacks(C, unshotPower);
         shotFlux -= back;

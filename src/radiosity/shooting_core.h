@@ -228,6 +228,9 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
     /// deliver() visits only the clusters a shot reached.
     std::vector<char> m_reached;
+    /// Per source and receiver cluster (index source · clusters + receiver), what this shot
+    /// delivered: kept zero between shots, so a shot clears only the receivers it reached.
+    std::vector<Delivery> m_deliveredTo;
     /// The occupied voxels (clusters.h): a shot through a mirror tests these first.
     VoxelRegions m_regions;
     std::vector<std::vector<uint32_t>> m_touching;  ///< per cluster, the clusters it touches (sorted)
