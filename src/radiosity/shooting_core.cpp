@@ -128,8 +128,7 @@ template <class V>
 void ShootingCore<V>::finish(RadiositySolution& s) {
     auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
     // What only the shots read goes before the solution's array is allocated ...
-    release(m_shotE), release(m_shotPending), release(m_deliveredTo), release(m_pending), release(m_reflectance),
-        release(m_direct);
+    release(m_shotE), release(m_shotPending), release(m_pending), release(m_reflectance), release(m_direct);
     sync(s);
     m_finishedUnshotFlux = unshotFlux();
     m_finished = true;
@@ -323,10 +322,10 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
             regionOpen[si][k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions.regions[k].centre,
                                                  m_regions.regions[k].radius);
     }
-    // Deliveries per source and receiver, for the conservation and the mirrors' account
-    // (zero between shots; booked below source by source, in receiver order).
-    m_deliveredTo.resize(sources * n);
-    auto deliveredTo = [&](size_t si, size_t d) -> Delivery& { return m_deliveredTo[si * n + d]; };
+    // Each receiver's deliveries, booked at their source for the conservation and the
+    // mirrors' account by its own task, sources in order; added up in receiver order after
+    // the passes (the same sums at any thread count).
+    std::vector<AtSource> bookedAt(n, AtSource{throughMirrors});
     std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, imageTransfers{0}, imageLit{0}, patchPairs{0};
     // Cluster→cluster now; the receivers within r_v are marked for patch→patch.
     std::vector<char> isNear(sources * n, 0);
@@ -355,10 +354,11 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V
                     thread_local std::vector<double> visible;
                     memberVisibility(from.mesh(), localSamples[si], m_mesh, D, *s.vis, visible);
-                    deliveredTo(si, d) = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible), ++split;
-                    carried = deliveredTo(si, d).flux != V(0.0);  // every member's rays may have been blocked
+                    const Delivery got = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible);
+                    bookedAt[d].add(s, got), ++split;
+                    carried = got.flux != V(0.0);  // every member's rays may have been blocked
                 } else if (t > 0) {
-                    deliveredTo(si, d) = addPending(Cs, d, deltaLC * s.weight * t), carried = true;  // I_D += Ks ΔL_C π F V
+                    bookedAt[d].add(s, addPending(Cs, d, deltaLC * s.weight * t)), carried = true;  // I_D += Ks ΔL_C π F V
                 }
                 ++cc;
                 if (s.image) ++ccImage, litImage += carried;
@@ -387,7 +387,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
             const size_t d = nearReceivers[k];
             for (size_t si = 0; si < sources; ++si)
                 if (isNear[si * n + d])
-                    deliveredTo(si, d) = shootPatches(m_sources[si], *shooters[si], c, *shotLight[si], d, m_shotE, pp);
+                    bookedAt[d].add(m_sources[si], shootPatches(m_sources[si], *shooters[si], c, *shotLight[si], d, m_shotE, pp));
         }
         patchPairs += pp;
     });
@@ -395,15 +395,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     m_stats.splitTransfers += splitTransfers;
     m_stats.imageTransfers += imageTransfers, m_stats.imageTransfersLit += imageLit;
     m_stats.patchPairs += patchPairs;
-    // Only receivers reached this shot (or by its corrections) hold a delivery.
-    std::vector<size_t> reachedNow;
-    for (size_t d = 0; d < n; ++d)
-        if (m_reached[d]) reachedNow.push_back(d);
-    for (size_t si = 0; si < sources; ++si)
-        for (size_t d : reachedNow) {
-            delivered.add(m_sources[si], deliveredTo(si, d));
-            deliveredTo(si, d) = Delivery{};
-        }
+    for (const AtSource& booked : bookedAt) delivered.add(booked);
     if (!m_mirrorBacks.empty()) {  // what goes into a mirror's back is absorbed there, not delivered
         double back = intoMirrorBacks(C, unshotPower);
         shotFlux -= back;

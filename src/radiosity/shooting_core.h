@@ -161,6 +161,12 @@ class ShootingCore final : public ShootingCoreBase {
             magnitude += throughMirrors ? std::abs(atS) : d.magnitude;
             if (s.image) mirrorLoss += lum(radiosity::mirrorLoss(d.flux, s.weight));
         }
+        /// Books what another account holds (one receiver's deliveries).
+        void add(const AtSource& other) {
+            net += other.net;
+            magnitude += other.magnitude;
+            mirrorLoss += other.mirrorLoss;
+        }
     };
     /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
     /// the flux shot when conserving. `redelivered`: the flux (lm, at the source) this
@@ -228,9 +234,6 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
     /// deliver() visits only the clusters a shot reached.
     std::vector<char> m_reached;
-    /// Per source and receiver cluster (index source · clusters + receiver), what this shot
-    /// delivered: kept zero between shots, so a shot clears only the receivers it reached.
-    std::vector<Delivery> m_deliveredTo;
     /// The occupied voxels (clusters.h): a shot through a mirror tests these first.
     VoxelRegions m_regions;
     std::vector<std::vector<uint32_t>> m_touching;  ///< per cluster, the clusters it touches (sorted)
