@@ -358,7 +358,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                     bookedAt[d].add(s, got), ++split;
                     carried = got.flux != V(0.0);  // every member's rays may have been blocked
                 } else if (t > 0) {
-                    bookedAt[d].add(s, addPending(Cs, d, deltaLC * s.weight * t)), carried = true;  // I_D += Ks ΔL_C π F V
+                    // I_D += Ks ΔL_C π F V
+                    bookedAt[d].add(s, addPending(Cs, d, deltaLC * s.weight * t)), carried = true;
                 }
                 ++cc;
                 if (s.image) ++ccImage, litImage += carried;
@@ -381,13 +382,16 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     std::vector<std::optional<Emission>> shotLight(sources);
     for (size_t si = 0; si < sources; ++si)
         if (sendsNear[si]) shotLight[si].emplace(emission(*shooters[si], c, unshot));
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, nearReceivers.size(), 4), [&](const tbb::blocked_range<size_t>& range) {
+    const tbb::blocked_range<size_t> nearRange(0, nearReceivers.size(), 4);
+    tbb::parallel_for(nearRange, [&](const tbb::blocked_range<size_t>& range) {
         int64_t pp = 0;
         for (size_t k = range.begin(); k != range.end(); ++k) {
             const size_t d = nearReceivers[k];
-            for (size_t si = 0; si < sources; ++si)
-                if (isNear[si * n + d])
-                    bookedAt[d].add(m_sources[si], shootPatches(m_sources[si], *shooters[si], c, *shotLight[si], d, m_shotE, pp));
+            for (size_t si = 0; si < sources; ++si) {
+                if (!isNear[si * n + d]) continue;
+                const Source& s = m_sources[si];
+                bookedAt[d].add(s, shootPatches(s, *shooters[si], c, *shotLight[si], d, m_shotE, pp));
+            }
         }
         patchPairs += pp;
     });
