@@ -327,8 +327,9 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     // the passes (the same sums at any thread count).
     std::vector<AtSource> bookedAt(n, AtSource{throughMirrors});
     std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, imageTransfers{0}, imageLit{0}, patchPairs{0};
-    // Cluster→cluster now; the receivers within r_v are marked for patch→patch.
-    std::vector<char> isNear(sources * n, 0);
+    // Cluster→cluster now; the receivers within r_v are marked for patch→patch, per source
+    // and (nearAny) per receiver, so the list below need not scan every source's marks.
+    std::vector<char> isNear(sources * n, 0), nearAny(n, 0);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
         int64_t cc = 0, split = 0, ccImage = 0, litImage = 0;
         for (size_t d = range.begin(); d != range.end(); ++d) {
@@ -343,7 +344,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
                 if (self || inNearField(s, Cs, c, d, r)) {
-                    isNear[si * n + d] = 1;
+                    isNear[si * n + d] = 1, nearAny[d] = 1;
                     continue;
                 }
                 SplitTransfer parts;
@@ -374,10 +375,9 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
     std::vector<size_t> nearReceivers;
     std::vector<char> sendsNear(sources, 0);
     for (size_t d = 0; d < n; ++d) {
-        bool any = false;
-        for (size_t si = 0; si < sources; ++si)
-            if (isNear[si * n + d]) sendsNear[si] = 1, any = true;
-        if (any) nearReceivers.push_back(d);
+        if (!nearAny[d]) continue;
+        nearReceivers.push_back(d);
+        for (size_t si = 0; si < sources; ++si) sendsNear[si] |= isNear[si * n + d];
     }
     std::vector<std::optional<Emission>> shotLight(sources);
     for (size_t si = 0; si < sources; ++si)

@@ -81,9 +81,10 @@ class ShootingSolver {
     bool step(RadiositySolution& solution);
     /// What solve() calls after every global push-pull (the solution is consistent then).
     /// `wants` sees the solution's figures (shots, unshot flux, converged) and says
-    /// whether this push-pull needs the per-patch arrays; only then are `indirect` and
-    /// `unshot` filled for `call`, and released after it: while it shoots, the solver
-    /// holds the light in its own arrays, and a second set would add 48 bytes per patch.
+    /// whether this push-pull needs the per-patch array; only then is `indirect` filled
+    /// for `call` (with the unshot net flux), and released after it: while it shoots, the
+    /// solver holds the light in its own arrays, and a second copy would add 24 bytes per
+    /// patch.
     /// No `wants`: every push-pull.
     struct PushPullHook {
         std::function<bool(const RadiositySolution&)> wants;
