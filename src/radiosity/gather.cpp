@@ -65,7 +65,6 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = solution.reflectedLuminance(scene, mesh, C.patches[k]);
         m_far.push_back(farSources(mesh, C, tree, luminance, FarRayTargets::PowerSamples));
         m_rootFar.push_back(m_far.back().front());
-        m_cones.push_back(normalCones(mesh, C, tree));
         m_trees.push_back(std::move(tree));
     }
     m_groupCone = glm::radians(scene.clusters.normalToleranceDeg);
@@ -402,15 +401,12 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         if (rootFar) addFar(m_rootFar[c], 0);
         const MemberTree& tree = m_trees[c];
         const std::vector<FarSource>& farSources = m_far[c];
-        const std::vector<NormalCone>& cones = m_cones[c];
         if (!rootFar) descend(tree, [&](uint32_t i, const MemberNode& node) {
             if (isFar(farSources[i], node.size()) && !holdsNear(node)) {
                 addFar(farSources[i], i);
                 return false;
             }
             if (!node.leaf()) return true;
-            // A leaf that cannot light x: its patches' form factors would all be 0.
-            if (real && bringsNothing(node, cones[i], x, n) && !holdsNear(node)) return false;
             for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
         });

@@ -5,7 +5,6 @@
 #include <core/visibility.h>
 #include <radiosity/cluster_tree.h>
 #include <radiosity/clusters.h>
-#include <radiosity/facing_bounds.h>
 #include <radiosity/far_field.h>
 #include <radiosity/form_factor.h>
 #include <radiosity/member_tree.h>
@@ -241,7 +240,6 @@ class Gatherer {
     std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
     std::vector<MemberTree> m_trees;                 ///< per cluster
     std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
-    std::vector<std::vector<NormalCone>> m_cones;    ///< per cluster, per node of its tree (facing_bounds.h)
     std::vector<FarSource> m_rootFar;                ///< per cluster, its root's (m_far[c][0]), contiguous
     std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
     ClusterTree m_clusterTree;                       ///< groups of clusters, far sources in re-gathers
