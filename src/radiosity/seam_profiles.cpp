@@ -172,7 +172,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
     // the first round's nodes.
     using Part = Gatherer::Part;
     std::vector<int> nodes(candidates.size(), 0);
-    std::vector<char> small(candidates.size(), 0);  // the first node below kSecondRoundShare tolerances
+    std::vector<char> firstRoundOnly(candidates.size(), 0);  // the first node below kSecondRoundShare tolerances
     std::vector<std::vector<uint32_t>> nearSets(candidates.size());  // each edge's near patches, for both rounds
     SeamProfiles profiles;
     for (int round = 0; round < 2; ++round) {
@@ -200,7 +200,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
             };
             // A profile whose first node was small is not worth a second round (the other
             // wall's band changes it by a fraction of that: kSecondRoundShare).
-            if (round > 0 && small[c]) {
+            if (round > 0 && firstRoundOnly[c]) {
                 edges[c] = before.edges()[c];  // the same order: both sorted by (from, to)
                 ++done;
                 return;
@@ -217,7 +217,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
                 const double shown = luminance((1 - tau) * Es + tau * Et);
                 const double light = std::abs(shown + luminance(delta));
                 if (round == 0 && k == 0)
-                    small[c] = std::abs(luminance(delta)) < kSecondRoundShare * kSeamProfileTolerance * light;
+                    firstRoundOnly[c] = std::abs(luminance(delta)) < kSecondRoundShare * kSeamProfileTolerance * light;
                 if (round == 0 && std::abs(luminance(delta)) < kSeamProfileTolerance * light) {
                     ++k;
                     break;
@@ -228,7 +228,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
             for (int j = k; j < SeamProfiles::kNodes; ++j)
                 out.delta[j] = out.delta[k - 1] * static_cast<float>(nodeTau(j) / nodeTau(k - 1));
             edges[c] = out;
-            if (round > 0 || small[c]) std::vector<uint32_t>().swap(nearSets[c]);  // not needed again
+            if (round > 0 || firstRoundOnly[c]) std::vector<uint32_t>().swap(nearSets[c]);  // not needed again
             size_t n2 = ++done;
             if (onProgress && n2 % 16 == 0) onProgress(static_cast<double>(n2) / total);
         });

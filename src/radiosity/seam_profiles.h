@@ -85,9 +85,9 @@ class SeamProfiles {
 /// refining the near patches (the other wall's band). A profile stops early where the
 /// correction at a node is below kSeamProfileTolerance of the light there (the nodes below
 /// it then interpolate to 0 at the seam), and one whose first node is below four times
-/// it takes no second round. `levels` nodes at most (≤ kNodes). Parallel over edges; each gather
-/// serial, so the result does not depend on the thread count. `gathers` (optional) counts
-/// the near-field gathers taken.
+/// it takes no second round. `levels` nodes at most (≤ kNodes). Parallel over edges;
+/// each gather serial, so the result does not depend on the thread count. `gathers`
+/// (optional) counts the near-field gathers taken.
 SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                 const RadiositySolution& solution, const Visibility& vis,
                                 const std::vector<uint32_t>& seamVertices, double minEdge, int levels,
