@@ -14,7 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <set>
+#include <unordered_set>
 #include <tuple>
 
 namespace rayrad::scene {
@@ -144,6 +144,7 @@ class Builder {
         for (const auto& g : s.groups) anyEmitter |= s.materials[g.material].isEmissive();
         if (!anyEmitter)
             fail("/lights", "the scene has no light: add a light or an emissive material (the mesh files bring none)");
+        s.sensors.reserve(m_desc.sensors.size());
         for (const auto& d : m_desc.sensors)
             s.sensors.push_back({d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
         addSurfaceGrids(s);
@@ -517,7 +518,8 @@ class Builder {
 
     /// The surface grids' points, after the sensors; a name used twice is an error.
     void addSurfaceGrids(Scene& s) {
-        std::set<std::string> names;
+        if (m_desc.surfaceGrids.empty()) return;  // the parser checked the other sensors' names
+        std::unordered_set<std::string> names(s.sensors.size());
         for (const auto& sensor : s.sensors) names.insert(sensor.name);
         for (const auto& grid : m_desc.surfaceGrids)
             for (auto& sensor : surfaceGridSensors(s, grid)) {

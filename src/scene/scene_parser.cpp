@@ -677,10 +677,8 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         for (const auto& o : desc.objects) anyEmitter |= o.kind == ObjectKind::Mesh && o.material.empty();
         if (!anyEmitter) ctx.error("/lights", "the scene has no light: add a light or an emissive material");
     }
-    std::map<std::string, int> sensorNames;
-    for (size_t i = 0; i < desc.sensors.size(); ++i)
-        if (sensorNames[desc.sensors[i].name]++ == 1)
-            ctx.error("/sensors", fmt::format("sensor name \"{}\" is used twice", desc.sensors[i].name));
+    for (const auto& name : sensorNamesUsedTwice(desc.sensors))
+        ctx.error("/sensors", fmt::format("sensor name \"{}\" is used twice", name));
     return desc;
 }
 

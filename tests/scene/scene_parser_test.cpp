@@ -117,6 +117,33 @@ TEST_CASE("sensor grids expand to named points at cell centres", "[parser]") {
     CHECK(desc.sensors[5].normal == Vec3(0, 0, 1));
 }
 
+TEST_CASE("a sensor name used twice is an error: single sensors, two grids of one name, a sensor named like a grid point", "[parser]") {
+    auto withSensors = [](const std::string& sensors, const std::string& grids) {
+        std::string s = boxScene();
+        s.insert(s.size() - 1, ", \"sensors\": [" + sensors + "], \"sensor_grids\": [" + grids + "]");
+        return parseErrors(s);
+    };
+    auto single = [](const std::string& name) {
+        return R"({"name": ")" + name + R"(", "position": [0.5,0.5,0.5], "normal": [0,0,1]})";
+    };
+    auto grid = [](const std::string& name, int nu, int nv) {
+        return R"({"name": ")" + name + R"(", "origin": [0,0,0], "u": [1,0,0], "v": [0,1,0], "counts": [)" +
+               std::to_string(nu) + ", " + std::to_string(nv) + "]}";
+    };
+    CHECK(withSensors(single("a") + ", " + single("b"), grid("g", 2, 2) + ", " + grid("h", 3, 1)).messages.empty());
+    // A single sensor named like a grid, or like a point of another grid, is no clash.
+    CHECK(withSensors(single("g") + ", " + single("g[5,5]"), grid("g", 2, 2)).messages.empty());
+    CHECK(withSensors(single("a") + ", " + single("a"), "").contains("sensor name \"a\" is used twice"));
+    CHECK(withSensors(single("g[1,0]"), grid("g", 2, 2)).contains("sensor name \"g[1,0]\" is used twice"));
+    // Two grids of one name one after the other: their common cells clash, the others not.
+    auto two = withSensors("", grid("g", 2, 1) + ", " + grid("g", 1, 2));
+    CHECK(two.contains("sensor name \"g[0,0]\" is used twice"));
+    CHECK_FALSE(two.contains("g[1,0]"));
+    CHECK_FALSE(two.contains("g[0,1]"));
+    // A grid whose name holds a bracket: its points' names end in the last one.
+    CHECK(withSensors(single("a[1[0,0]"), grid("a[1", 1, 1)).contains("sensor name \"a[1[0,0]\" is used twice"));
+}
+
 TEST_CASE("named views: cameras need a unique name, all is reserved, the first is the default", "[scene]") {
     const std::string cam = R"("position": [0.5, 0.5, 0.1], "look_at": [0.5, 0.5, 1])";
     auto withCameras = [&](const std::string& cameras) {
