@@ -81,7 +81,7 @@ int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs&
     const app::SensorFiles csvs = app::sensorFiles(desc, csv);
     std::vector<std::string> outputs = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     app::addOutputs(files, {save});
-    auto run = app::runPipeline(a.scene, o);
+    auto run = app::runPipeline(a.scene, desc, o);
     // With light groups, the saved solution also holds each group's part, so a scene whose
     // groups are dimmed can be rendered from it.
     auto groups = app::reportSensors(run, a.scene, o, csvs, files, !save.empty());
@@ -117,7 +117,7 @@ int runFrames(const CommonArgs& a, app::PipelineOptions o, const std::vector<std
     }
     o.wantImage = false;
     o.wantSensors = false;
-    auto run = app::runPipeline(a.scene, o);
+    auto run = app::runPipeline(a.scene, desc, o);
     const tonemap::DisplayOptions steady =
         app::steadyDisplay(app::viewsAdaptationLuminance(run, run.scene.pathFrames, o), display);
     for (int k = first; k <= last; ++k) {
@@ -199,7 +199,7 @@ int runRender(const CommonArgs& a, const std::vector<std::string>& images, const
     const app::SensorFiles csvs = app::sensorFiles(desc, csv);
     const std::vector<std::string> others = app::addSensorAndReportOutputs(desc, csvs, reports, files);
     o.files = &files;
-    auto run = app::runPipeline(a.scene, o);
+    auto run = app::runPipeline(a.scene, desc, o);
     app::checkRenderedImage(*run.image, allowBlack || tile.count > 0);  // a tile may be all sky
     const auto groups = app::reportSensors(run, a.scene, o, csvs, files);
     // The other views: a ray trace each, from the same solution.
@@ -245,7 +245,7 @@ int runExport(const CommonArgs& a, const std::string& output, const std::string&
     OutputFiles files = app::filesOf(desc);
     if (!solution.empty()) files.addInput(solution);
     files.add(output);
-    auto run = app::runPipeline(a.scene, o);
+    auto run = app::runPipeline(a.scene, desc, o);
     run.report.begin("export lit mesh");
     // Exposed for what the scene's camera sees (as a rendering of it would be), else for
     // the whole solution.

@@ -35,10 +35,14 @@
 
 namespace rayrad::app {
 
-scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Override>& overrides) {
-    scene::Scene scene = scene::buildScene(scene::loadScene(file, overrides));
+scene::Scene buildSceneFrom(const scene::SceneDesc& desc) {
+    scene::Scene scene = scene::buildScene(desc);
     if (!scene.textures.empty()) scene.textureImages = std::make_shared<tonemap::TextureImages>(scene.textures);
     return scene;
+}
+
+scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Override>& overrides) {
+    return buildSceneFrom(scene::loadScene(file, overrides));
 }
 
 namespace {
@@ -291,9 +295,13 @@ RenderedView renderView(PipelineRun& run, const std::string& view, const Pipelin
 }
 
 PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& options) {
+    return runPipeline(sceneFile, scene::loadScene(sceneFile, options.overrides), options);
+}
+
+PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options) {
     PipelineRun run;
     run.report.begin("parse + build scene");
-    run.scene = loadSceneFile(sceneFile, options.overrides);
+    run.scene = buildSceneFrom(desc);
     if (options.lightGroup) scene::keepLightGroup(run.scene, *options.lightGroup);
     if (!options.view.empty()) run.scene.camera = findView(run.scene, options.view);
 
