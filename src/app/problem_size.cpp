@@ -11,10 +11,12 @@
 namespace rayrad::app {
 
 namespace {
-/// CPU seconds per sensor and patch of a final gather with the default refinement and
-/// far field, measured on the 19 200-patch cube (a 32×32 grid: 10 CPU-s). The
-/// hierarchical far field grows more slowly than the patch count, so this is an upper bound.
-constexpr double kGatherSecondsPerPatch = 0.5e-6;
+/// CPU seconds a sensor's final gather takes at least: the far clusters are taken in
+/// groups, so it hardly grows with the mesh. Measured 2026-11-28 (2 cores): 0.7–1.3 ms a
+/// sensor on the cube (a 64 × 64 grid at 1 200 to 307 200 patches), 1.0 ms in the bench
+/// hall (512 sensors); near furniture and mirrors far more, 0.56 s on average for the
+/// living room's 16 × 12 work plane (its re-gathers around small near patches).
+constexpr double kGatherSecondsPerSensor = 1e-3;
 /// Peak memory model, measured: the process with its libraries and Embree (cube runs
 /// start near 130 MiB), and bytes per patch at 1.2 M patches (bench/scale.sh: 387 on
 /// 2026-11-24, 416 and then 382 on 2026-11-27; 400, the bound, errs high).
@@ -73,11 +75,12 @@ std::vector<std::string> costWarnings(const std::string& file, const scene::Scen
                 voxelSetting(scene.clusters), voxel, meanEdge, patches));
     }
     if (gatherSensors && !scene.sensors.empty() && scene.hasReflectance()) {
-        const double seconds = kGatherSecondsPerPatch * static_cast<double>(scene.sensors.size()) * patches;
+        const double seconds = kGatherSecondsPerSensor * static_cast<double>(scene.sensors.size());
         if (seconds > 600)
-            out.push_back(fmt::format("/sensors: {} sensors × {} patches: the final gather will take about {:.0f} "
-                                      "CPU-minutes",
-                                      scene.sensors.size(), patches, seconds / 60));
+            out.push_back(fmt::format("/sensors: {} sensors: the final gather will take at least {:.0f} CPU-minutes "
+                                      "(about 1 ms a sensor in an open room, up to a second among furniture and "
+                                      "mirrors)",
+                                      scene.sensors.size(), seconds / 60));
     }
     return out;
 }

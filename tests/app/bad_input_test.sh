@@ -162,6 +162,16 @@ else
     echo "FAIL voxel_size 1e-6: no warning from info"; failures=$((failures + 1))
 fi
 
+# A million sensors: the warning with the gather's estimate comes before any work (within
+# a second on an idle machine; 5 s leaves room for a loaded one); the solve is stopped then.
+scene million_sensors "{$good_materials, $good_box, $good_light, \"sensor_grids\": [{\"name\": \"g\", \"origin\": [0.01,0.01,0.5], \"u\": [0.98,0,0], \"v\": [0,0.98,0], \"counts\": [1000, 1000]}]}"
+timeout 5 "$rayrad" solve "$work/million_sensors.json" > /dev/null 2> "$work/million.txt"
+if grep -q "/sensors: 1000000 sensors: the final gather will take at least 17 CPU-minutes" "$work/million.txt"; then
+    passed=$((passed + 1))
+else
+    echo "FAIL a million sensors: no estimate within 5 s"; head -n 3 "$work/million.txt"; failures=$((failures + 1))
+fi
+
 # Walkthroughs, export, sweeps and textures (issue 16, issue 15).
 good_camera='"camera": {"position": [0.5,0.5,0.9], "look_at": [0.5,0.5,0], "resolution": [8, 8]}'
 good_path='"camera_path": {"frames": 3, "resolution": [8, 8], "keyframes": [{"position": [0.5,0.5,0.9], "look_at": [0.5,0.5,0]}, {"position": [0.4,0.5,0.8], "look_at": [0.5,0.4,0]}]}'
