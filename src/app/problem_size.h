@@ -15,13 +15,13 @@ namespace rayrad::app {
 /// the estimate.
 double checkPatchCount(const std::string& file, const scene::Scene& scene);
 
-/// After premeshing, one line each: a cluster voxel much smaller than the patches (every
-/// patch its own cluster, so each shot visits every patch), and sensor gathers that will
-/// take at least ten CPU-minutes. Throws InputError when the voxel grid cannot be indexed.
 /// Expected peak memory of a solve, bytes: the process's base, the patches, and a few
 /// bytes per cluster and mirror image.
 double estimatePeakBytes(size_t patches, size_t clusters, size_t mirrorImages);
 
+/// After premeshing, one line each: a cluster voxel much smaller than the patches (every
+/// patch its own cluster, so each shot visits every patch), and sensor gathers that will
+/// take at least ten CPU-minutes. Throws InputError when the voxel grid cannot be indexed.
 std::vector<std::string> costWarnings(const std::string& file, const scene::Scene& scene,
                                       const radiosity::PatchMesh& mesh, bool gatherSensors);
 
