@@ -98,7 +98,7 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s
         out.magnitude += std::abs(lum(deltaE)) * m_patchArea[j];
         reached |= deltaE != V(0.0);  // deliveries of both signs may cancel in the flux
     }
-    if (reached) m_reached[receiver] = 1;
+    if (reached) m_reached[receiver] |= kReachedPatches;
     return out;
 }
 

@@ -209,7 +209,7 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::addPending(const Cluster& so
     if (visible)
         for (size_t k = 0; k < shape.size(); ++k) shape[k] *= (*visible)[k];
     Delivery out;
-    m_reached[receiver] = 1;
+    m_reached[receiver] |= kReachedPending;
     for (size_t k = 0; k < D.patches.size(); ++k) {
         uint32_t j = D.patches[k];
         m_shotPending[j] += e * shape[k];
@@ -412,8 +412,9 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
 template <class V>
 void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSource& delivered) {
     std::vector<uint32_t> reached;  // the clusters with deliveries waiting, in index order
+    std::vector<char> arrays;       // for each, which arrays hold them (m_reached's flags)
     for (size_t d = 0; d < m_reached.size(); ++d)
-        if (m_reached[d]) reached.push_back(static_cast<uint32_t>(d)), m_reached[d] = 0;
+        if (m_reached[d]) reached.push_back(static_cast<uint32_t>(d)), arrays.push_back(m_reached[d]), m_reached[d] = 0;
     // Closed scene: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1), plus what the
     // corrections took away to deliver again; through mirrors each delivery counts as it
     // left the shooter (÷ Π Ks: the mirrors absorbed the rest). The deficit δ is shared in
@@ -438,12 +439,15 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
         const size_t d = reached[k];
         const Cluster& D = m_clustering.clusters[d];
         V reflectedSum(0.0);
+        // At 1.2 M patches this loop waits on memory: an array that holds nothing for D
+        // (most receivers are reached cluster→cluster only) is not read.
+        const bool patches = arrays[k] & kReachedPatches, pending = arrays[k] & kReachedPending;
         for (uint32_t j : D.patches) {
-            if (m_shotE[j] != V(0.0)) {
+            if (patches && m_shotE[j] != V(0.0)) {
                 receive(j, adjusted(m_shotE[j]));
                 m_shotE[j] = V(0.0);
             }
-            if (m_shotPending[j] != V(0.0)) {  // I_D joins the pending light, pushed down later
+            if (pending && m_shotPending[j] != V(0.0)) {  // I_D joins the pending light, pushed down later
                 V e = adjusted(m_shotPending[j]);
                 m_pending[j] += e;
                 reflectedSum += m_reflectance[j] * e * m_patchArea[j];

@@ -231,9 +231,11 @@ class ShootingCore final : public ShootingCoreBase {
     /// Per patch, this shot's deliveries in lx before they are received: patch→patch
     /// (m_shotE) and cluster→cluster (m_shotPending, joins m_pending).
     std::vector<V> m_shotE, m_shotPending;
-    /// Per cluster: some member has a delivery waiting in m_shotE or m_shotPending, so
-    /// deliver() visits only the clusters a shot reached.
+    /// Per cluster: which of m_shotE (kReachedPatches) and m_shotPending (kReachedPending)
+    /// hold a delivery for some member, so deliver() visits only the clusters a shot
+    /// reached, and reads only the arrays that hold something for them.
     std::vector<char> m_reached;
+    static constexpr char kReachedPatches = 1, kReachedPending = 2;
     /// The occupied voxels (clusters.h): a shot through a mirror tests these first.
     VoxelRegions m_regions;
     std::vector<std::vector<uint32_t>> m_touching;  ///< per cluster, the clusters it touches (sorted)
