@@ -35,11 +35,14 @@
 
 namespace rayrad::app {
 
+namespace {
+/// The scene built from its description, with its texture images opened.
 scene::Scene buildSceneFrom(const scene::SceneDesc& desc) {
     scene::Scene scene = scene::buildScene(desc);
     if (!scene.textures.empty()) scene.textureImages = std::make_shared<tonemap::TextureImages>(scene.textures);
     return scene;
 }
+}  // namespace
 
 scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Override>& overrides) {
     return buildSceneFrom(scene::loadScene(file, overrides));

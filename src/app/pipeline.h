@@ -91,8 +91,6 @@ struct PipelineRun {
 
 /// Parses and builds the scene (stage "parse").
 scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Override>& overrides);
-/// Builds the scene from a description already parsed (and its texture images opened).
-scene::Scene buildSceneFrom(const scene::SceneDesc& desc);
 
 /// Runs the stages the scene needs. Throws InputError for bad input.
 PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& options);
