@@ -6,6 +6,7 @@
 #include <scene/camera_path.h>
 #include <scene/mesh_import.h>
 #include <scene/polygon.h>
+#include <scene/sensor_names.h>
 #include <scene/surface_grids.h>
 
 #include <fmt/format.h>
@@ -14,7 +15,6 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <unordered_set>
 #include <tuple>
 
 namespace rayrad::scene {
@@ -516,17 +516,20 @@ class Builder {
         }
     }
 
-    /// The surface grids' points, after the sensors; a name used twice is an error.
+    /// The surface grids' points, after the sensors; a name used twice is an error. The
+    /// parser checked the file's sensors, so a name used again is a surface grid's.
     void addSurfaceGrids(Scene& s) {
-        if (m_desc.surfaceGrids.empty()) return;  // the parser checked the other sensors' names
-        std::unordered_set<std::string> names(s.sensors.size());
-        for (const auto& sensor : s.sensors) names.insert(sensor.name);
-        for (const auto& grid : m_desc.surfaceGrids)
-            for (auto& sensor : surfaceGridSensors(s, grid)) {
-                if (!names.insert(sensor.name).second)
-                    fail(grid.where + "/name", fmt::format("sensor name \"{}\" is used twice", sensor.name));
-                s.sensors.push_back(std::move(sensor));
-            }
+        if (m_desc.surfaceGrids.empty()) return;
+        std::vector<size_t> begin;  // per surface grid, its first point's index
+        for (const auto& grid : m_desc.surfaceGrids) {
+            begin.push_back(s.sensors.size());
+            for (auto& sensor : surfaceGridSensors(s, grid)) s.sensors.push_back(std::move(sensor));
+        }
+        const std::vector<size_t> again = sensorsNamedAgain(s.sensors);
+        if (again.empty()) return;
+        const size_t grid = std::upper_bound(begin.begin(), begin.end(), again.front()) - begin.begin() - 1;
+        fail(m_desc.surfaceGrids[grid].where + "/name",
+             fmt::format("sensor name \"{}\" is used twice", s.sensors[again.front()].name));
     }
 
     static void computeBounds(Scene& s) {

@@ -5,6 +5,7 @@
 #include <scene/json_reader.h>
 #include <core/colour_temperature.h>
 #include <scene/overrides.h>
+#include <scene/sensor_names.h>
 #include <scene/sensor_parser.h>
 
 #include <fmt/format.h>
@@ -677,8 +678,8 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         for (const auto& o : desc.objects) anyEmitter |= o.kind == ObjectKind::Mesh && o.material.empty();
         if (!anyEmitter) ctx.error("/lights", "the scene has no light: add a light or an emissive material");
     }
-    for (const auto& name : sensorNamesUsedTwice(desc.sensors))
-        ctx.error("/sensors", fmt::format("sensor name \"{}\" is used twice", name));
+    for (size_t i : sensorsNamedAgain(desc.sensors))
+        ctx.error("/sensors", fmt::format("sensor name \"{}\" is used twice", desc.sensors[i].name));
     return desc;
 }
 

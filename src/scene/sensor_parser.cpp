@@ -7,10 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <string_view>
-#include <unordered_map>
-#include <unordered_set>
-#include <utility>
 
 namespace rayrad::scene {
 
@@ -79,34 +75,6 @@ void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out) {
             s.normal = n;
             out.push_back(s);
         }
-}
-
-std::vector<std::string> sensorNamesUsedTwice(const std::vector<SensorDesc>& sensors) {
-    // A grid or work plane appends its points row by row, (v, u) rising: within such a run
-    // of one grid name no two points share a cell, so no two share a name. A name with
-    // two runs (two grids of one name) has its points compared.
-    auto continuesRun = [&](size_t i) {
-        const SensorDesc &a = sensors[i - 1], &b = sensors[i];
-        return a.grid == b.grid && std::make_pair(a.gridV, a.gridU) < std::make_pair(b.gridV, b.gridU);
-    };
-    std::unordered_map<std::string_view, int> runs;
-    for (size_t i = 0; i < sensors.size(); ++i)
-        if (!sensors[i].grid.empty() && (i == 0 || !continuesRun(i))) ++runs[sensors[i].grid];
-    std::unordered_set<std::string_view> compared;  // grid names whose points are compared
-    for (const auto& [grid, count] : runs)
-        if (count > 1) compared.insert(grid);
-    for (const auto& s : sensors) {
-        if (!s.grid.empty()) continue;
-        // A point's name is its grid's name and "[i,j]", which holds no other '['.
-        const std::string_view name = s.name;
-        const size_t bracket = name.rfind('[');
-        if (bracket != std::string_view::npos && runs.count(name.substr(0, bracket))) compared.insert(name.substr(0, bracket));
-    }
-    std::vector<std::string> twice;
-    std::unordered_map<std::string_view, int> uses;
-    for (const auto& s : sensors)
-        if ((s.grid.empty() || compared.count(s.grid)) && ++uses[s.name] == 2) twice.push_back(s.name);
-    return twice;
 }
 
 /// A horizontal work plane: a room outline (x, z; y is up), a height, a border left out

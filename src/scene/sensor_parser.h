@@ -5,7 +5,6 @@
 #include <scene/json_reader.h>
 #include <scene/scene_desc.h>
 
-#include <string>
 #include <vector>
 
 namespace rayrad::scene {
@@ -20,12 +19,6 @@ void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out);
 /// A horizontal work plane over a room outline (EN 12464-1 spacing by default), appended
 /// to `out`.
 void parseWorkPlane(JsonObject w, int index, std::vector<SensorDesc>& out);
-
-/// The names given to more than one sensor, each once, where its second use stands.
-/// A grid's or work plane's points are named NAME[i,j], distinct within it, so only the
-/// single sensors and the points of a grid whose name another grid has too, or that a
-/// single sensor's name starts with, are compared (a million points hashed took 0.23 s).
-std::vector<std::string> sensorNamesUsedTwice(const std::vector<SensorDesc>& sensors);
 
 /// A grid on surfaces of the scene (a material's faces), checked here and expanded by
 /// the builder (scene/surface_grids.h).
