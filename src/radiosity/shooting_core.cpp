@@ -412,9 +412,8 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
 template <class V>
 void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSource& delivered) {
     std::vector<uint32_t> reached;  // the clusters with deliveries waiting, in index order
-    std::vector<char> arrays;       // for each, which arrays hold them (m_reached's flags)
     for (size_t d = 0; d < m_reached.size(); ++d)
-        if (m_reached[d]) reached.push_back(static_cast<uint32_t>(d)), arrays.push_back(m_reached[d]), m_reached[d] = 0;
+        if (m_reached[d]) reached.push_back(static_cast<uint32_t>(d));
     // Closed scene: Σ_j ΔE_j A_j must equal the flux shot (Σ_j F_ij = 1), plus what the
     // corrections took away to deliver again; through mirrors each delivery counts as it
     // left the shooter (÷ Π Ks: the mirrors absorbed the rest). The deficit δ is shared in
@@ -441,7 +440,8 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
         V reflectedSum(0.0);
         // At 1.2 M patches this loop waits on memory: an array that holds nothing for D
         // (most receivers are reached cluster→cluster only) is not read.
-        const bool patches = arrays[k] & kReachedPatches, pending = arrays[k] & kReachedPending;
+        const bool patches = m_reached[d] & kReachedPatches, pending = m_reached[d] & kReachedPending;
+        m_reached[d] = 0;
         for (uint32_t j : D.patches) {
             if (patches && m_shotE[j] != V(0.0)) {
                 receive(j, adjusted(m_shotE[j]));
