@@ -9,7 +9,7 @@
 // Usage: build/bench/seam_patches [key=value ...]   (scene settings, as with --set; the
 //        scene's own max_edge is 0.05 m)
 #include <app/pipeline.h>
-#include <radiosity/gather.h>
+#include <radiosity/gather/gather.h>
 #include <scene/scene_parser.h>
 
 #include <fmt/format.h>

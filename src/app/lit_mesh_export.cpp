@@ -1,7 +1,7 @@
 #include <app/lit_mesh_export.h>
 
 #include <app/walkthrough.h>
-#include <radiosity/patch_reflectance.h>
+#include <radiosity/mesh/patch_reflectance.h>
 #include <scene/gltf_writer.h>
 
 #include <glm/gtc/quaternion.hpp>

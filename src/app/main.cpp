@@ -14,7 +14,7 @@
 #include <app/walkthrough.h>
 #include <app/sweep.h>
 #include <app/lit_mesh_export.h>
-#include <radiosity/solution_file.h>
+#include <radiosity/solution/solution_file.h>
 #include <app/validate_sphere.h>
 #include <app/sensor_table.h>
 #include <app/solve_summary.h>
@@ -22,8 +22,8 @@
 #include <core/output_file.h>
 #include <core/result_error.h>
 #include <core/text.h>
-#include <radiosity/direct_light.h>
-#include <radiosity/shooting_solver.h>
+#include <radiosity/direct/direct_light.h>
+#include <radiosity/shooting/shooting_solver.h>
 #include <tonemap/display_transform.h>
 #include <tonemap/image_io.h>
 

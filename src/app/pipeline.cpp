@@ -1,8 +1,8 @@
 #include <app/pipeline.h>
 
-#include <radiosity/contact_outlines.h>
-#include <radiosity/patch_reflectance.h>
-#include <radiosity/shading_normals.h>
+#include <radiosity/mesh/contact_outlines.h>
+#include <radiosity/mesh/patch_reflectance.h>
+#include <radiosity/mesh/shading_normals.h>
 #include <tonemap/texture_images.h>
 
 #include <app/problem_size.h>
@@ -12,15 +12,15 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <core/progress.h>
-#include <radiosity/direct_pass.h>
+#include <radiosity/direct/direct_pass.h>
 #include <scene/light_groups.h>
-#include <radiosity/edge_vertices.h>
-#include <radiosity/gather.h>
-#include <radiosity/sensors.h>
-#include <radiosity/solution_file.h>
-#include <radiosity/covered_patches.h>
-#include <radiosity/mesher.h>
-#include <radiosity/shooting_solver.h>
+#include <radiosity/display/edge_vertices.h>
+#include <radiosity/gather/gather.h>
+#include <radiosity/gather/sensors.h>
+#include <radiosity/solution/solution_file.h>
+#include <radiosity/mesh/covered_patches.h>
+#include <radiosity/mesh/mesher.h>
+#include <radiosity/shooting/shooting_solver.h>
 #include <raytrace/camera.h>
 #include <raytrace/ray_tracer.h>
 

@@ -1,8 +1,8 @@
 #include <app/problem_size.h>
 
 #include <core/input_error.h>
-#include <radiosity/clusters.h>
-#include <radiosity/mesher.h>
+#include <radiosity/clusters/clusters.h>
+#include <radiosity/mesh/mesher.h>
 
 #include <fmt/format.h>
 

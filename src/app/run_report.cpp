@@ -2,7 +2,7 @@
 
 #include <app/grid_statistics.h>
 #include <core/math.h>
-#include <radiosity/shooting_solver.h>
+#include <radiosity/shooting/shooting_solver.h>
 
 #include <nlohmann/json.hpp>
 

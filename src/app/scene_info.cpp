@@ -4,9 +4,9 @@
 #include <app/pipeline.h>
 #include <app/problem_size.h>
 #include <app/scene_warnings.h>
-#include <radiosity/clusters.h>
-#include <radiosity/direct_light.h>
-#include <radiosity/mesher.h>
+#include <radiosity/clusters/clusters.h>
+#include <radiosity/direct/direct_light.h>
+#include <radiosity/mesh/mesher.h>
 #include <raytrace/embree_scene.h>
 #include <scene/photometry.h>
 

@@ -1,6 +1,6 @@
 #include <app/solve_summary.h>
 
-#include <radiosity/shooting_solver.h>
+#include <radiosity/shooting/shooting_solver.h>
 
 #include <fmt/format.h>
 

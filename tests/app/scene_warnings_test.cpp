@@ -2,7 +2,7 @@
 // line, and a sound scene gets none.
 #include <app/pipeline.h>
 #include <app/scene_warnings.h>
-#include <radiosity/mesher.h>
+#include <radiosity/mesh/mesher.h>
 
 #include "test_support.h"
 

@@ -1,6 +1,6 @@
 // Premeshing per element (longest-edge bisection): small triangles stay whole, large ones
 // are split to size, area is kept and the result has no T-junctions.
-#include <radiosity/bisection.h>
+#include <radiosity/mesh/bisection.h>
 
 #include "test_support.h"
 

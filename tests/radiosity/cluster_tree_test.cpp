@@ -1,9 +1,9 @@
 // The cluster tree: groups of clusters as one far source in the final gather's re-gathers.
-#include <radiosity/cluster_tree.h>
-#include <radiosity/clusters.h>
-#include <radiosity/form_factor.h>
-#include <radiosity/member_tree.h>
-#include <radiosity/mesher.h>
+#include <radiosity/clusters/cluster_tree.h>
+#include <radiosity/clusters/clusters.h>
+#include <radiosity/form_factors/form_factor.h>
+#include <radiosity/clusters/member_tree.h>
+#include <radiosity/mesh/mesher.h>
 #include <scene/scene_parser.h>
 
 #include "test_support.h"

@@ -1,14 +1,14 @@
 // Clusters and the two-level shooting: invariants, push-pull, the energy correction.
 #include <app/pipeline.h>
 #include <core/check.h>
-#include <radiosity/cluster_transfer.h>
-#include <radiosity/clusters.h>
-#include <radiosity/form_factor.h>
-#include <radiosity/gather.h>
-#include <radiosity/direct_pass.h>
-#include <radiosity/mesher.h>
-#include <radiosity/patch_transfer.h>
-#include <radiosity/shooting_solver.h>
+#include <radiosity/shooting/cluster_transfer.h>
+#include <radiosity/clusters/clusters.h>
+#include <radiosity/form_factors/form_factor.h>
+#include <radiosity/gather/gather.h>
+#include <radiosity/direct/direct_pass.h>
+#include <radiosity/mesh/mesher.h>
+#include <radiosity/form_factors/patch_transfer.h>
+#include <radiosity/shooting/shooting_solver.h>
 #include <raytrace/embree_scene.h>
 #include <scene/scene_parser.h>
 

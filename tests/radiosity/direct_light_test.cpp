@@ -1,6 +1,6 @@
 // Direct light from point, spot and area lights against closed forms; mesh import.
-#include <radiosity/direct_light.h>
-#include <radiosity/mesher.h>
+#include <radiosity/direct/direct_light.h>
+#include <radiosity/mesh/mesher.h>
 #include <raytrace/embree_scene.h>
 #include <scene/scene.h>
 #include <scene/scene_parser.h>

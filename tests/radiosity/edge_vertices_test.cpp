@@ -1,6 +1,6 @@
 // Seam vertices: which vertices take a point gather instead of the reconstruction.
 #include <app/pipeline.h>
-#include <radiosity/gather.h>
+#include <radiosity/gather/gather.h>
 
 #include "test_support.h"
 

@@ -1,8 +1,8 @@
 // The form factor's centroid (form_factor_centroid.h) against a fine graded subdivision:
 // each small piece's Lambert form factor at its area centroid.
-#include <radiosity/form_factor_centroid.h>
+#include <radiosity/form_factors/form_factor_centroid.h>
 
-#include <radiosity/form_factor.h>
+#include <radiosity/form_factors/form_factor.h>
 
 #include "test_support.h"
 

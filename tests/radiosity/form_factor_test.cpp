@@ -1,5 +1,5 @@
 // Point-to-polygon form factors against closed forms from the catalogue.
-#include <radiosity/form_factor.h>
+#include <radiosity/form_factors/form_factor.h>
 
 #include <core/random.h>
 

@@ -2,8 +2,8 @@
 // gathered midpoints, so a point in a room's corner does not cost a minute (the living
 // room: 57.6 → 28.2 CPU-s for one such point).
 #include <app/pipeline.h>
-#include <radiosity/gather.h>
-#include <radiosity/solution.h>
+#include <radiosity/gather/gather.h>
+#include <radiosity/solution/solution.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"

@@ -1,5 +1,5 @@
 // Premeshing: exact counts for the paper's cube, area conservation, triangle shape.
-#include <radiosity/mesher.h>
+#include <radiosity/mesh/mesher.h>
 #include <scene/scene.h>
 #include <scene/scene_parser.h>
 

@@ -1,7 +1,7 @@
 // Mirrors: the image method (virtual lights and shooters), its analytic references, and
 // the ray tracer's view of a room with a wall mirror.
 #include <app/pipeline.h>
-#include <radiosity/mirror_images.h>
+#include <radiosity/mirrors/mirror_images.h>
 #include <core/random.h>
 #include <raytrace/camera.h>
 #include <scene/polygon.h>

@@ -1,5 +1,5 @@
 // Sealed solids: whose surfaces' backs the direct pass may skip.
-#include <radiosity/sealed_solids.h>
+#include <radiosity/direct/sealed_solids.h>
 #include <scene/scene.h>
 #include <scene/scene_parser.h>
 

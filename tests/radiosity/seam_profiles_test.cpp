@@ -1,7 +1,7 @@
 // Seam profiles (issue 15 item 3): the display values graded toward concave seams.
 #include <app/pipeline.h>
-#include <radiosity/seam_profiles.h>
-#include <radiosity/solution.h>
+#include <radiosity/solution/seam_profiles.h>
+#include <radiosity/solution/solution.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"

@@ -1,7 +1,7 @@
 // Shared corners: the direct pass evaluates a vertex once for all its patches only where
 // that is one point for all of them.
 #include <app/pipeline.h>
-#include <radiosity/shared_corners.h>
+#include <radiosity/direct/shared_corners.h>
 
 #include "test_support.h"
 

@@ -1,6 +1,6 @@
 // The shooting iteration: energy balance, analytic sphere, determinism.
 #include <app/pipeline.h>
-#include <radiosity/shooting_solver.h>
+#include <radiosity/shooting/shooting_solver.h>
 
 #include "scene/scene_test_util.h"
 #include "pipeline_test_util.h"

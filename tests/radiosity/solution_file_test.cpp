@@ -1,7 +1,7 @@
 // Saved solutions (issue 16): the round trip is exact; every truncation and every flipped
 // byte is refused with an InputError, never a crash or a wrong solution.
 #include <core/input_error.h>
-#include <radiosity/solution_file.h>
+#include <radiosity/solution/solution_file.h>
 
 #include "test_support.h"
 

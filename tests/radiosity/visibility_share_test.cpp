@@ -1,11 +1,11 @@
 // Sampled visibility of far sources: where the rays go, and what the gather reads with
 // them against every patch's own ray.
 #include <app/pipeline.h>
-#include <radiosity/far_field.h>
-#include <radiosity/gather.h>
-#include <radiosity/mesher.h>
+#include <radiosity/clusters/far_field.h>
+#include <radiosity/gather/gather.h>
+#include <radiosity/mesh/mesher.h>
 #include <scene/scene_parser.h>
-#include <radiosity/visibility_share.h>
+#include <radiosity/gather/visibility_share.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"

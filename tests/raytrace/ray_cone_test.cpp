@@ -1,6 +1,6 @@
 // The ray cone's footprint on a surface and its texture-space axes (issue 15: textures
 // filtered over what a pixel sample covers).
-#include <radiosity/patch_reflectance.h>
+#include <radiosity/mesh/patch_reflectance.h>
 #include <raytrace/ray_cone.h>
 
 #include "test_support.h"

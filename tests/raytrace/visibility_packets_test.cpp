@@ -4,7 +4,7 @@
 // office: 8 of ~66 000 such rays). From inside a patch, as the solver's rays leave, they
 // must agree.
 #include <app/pipeline.h>
-#include <radiosity/mesher.h>
+#include <radiosity/mesh/mesher.h>
 #include <raytrace/embree_scene.h>
 
 #include "test_support.h"

@@ -2,13 +2,13 @@
 // file's table in the luminaire's frame, the flux is the table's integral (or flux_lm),
 // and the indirect light inside a closed sphere is the analytic ρ/(1−ρ) Φ/A.
 #include <app/pipeline.h>
-#include <radiosity/direct_light.h>
+#include <radiosity/direct/direct_light.h>
 #include <scene/scene_parser.h>
 #include <core/input_error.h>
 #include <app/light_group_parts.h>
 #include <core/colour_temperature.h>
 #include <scene/light_groups.h>
-#include <radiosity/form_factor.h>
+#include <radiosity/form_factors/form_factor.h>
 #include <scene/photometry.h>
 
 #include "pipeline_test_util.h"

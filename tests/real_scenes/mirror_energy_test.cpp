@@ -3,7 +3,7 @@
 // the wall) in a closed box. The account must close whatever lights it and whether light
 // can enter the gap behind it; a mirror wound backwards books what falls on its back.
 #include <app/pipeline.h>
-#include <radiosity/shooting_solver.h>
+#include <radiosity/shooting/shooting_solver.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"

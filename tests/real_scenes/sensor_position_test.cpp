@@ -3,7 +3,7 @@
 // front of its own patch saw it fill the hemisphere. The cube is symmetric, so a grid on
 // one wall must read the same at every point and its mirror images.
 #include <app/pipeline.h>
-#include <radiosity/gather.h>
+#include <radiosity/gather/gather.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
