@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const app::PipelineRun run = app::runPipeline(std::string(RAYRAD_SOURCE_DIR) + "/scenes/cornell/cornell.json", options);
     const double solveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    radiosity::GatherOptions exact;  // every patch on its own: levels 0, no far nodes, no shared rays
+    radiosity::GatherOptions exact = radiosity::GatherOptions::plain();  // every patch on its own: levels 0, no far nodes, no shared rays
     exact.sharedRays = false;
     const radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree, exact);
     radiosity::GatherMemo memo;

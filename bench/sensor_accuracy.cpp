@@ -198,7 +198,7 @@ int main(int argc, char** argv) {
         if (stage.name.rfind("sensors", 0) == 0) gatherSeconds = stage.seconds;
     fmt::print("cube, max_edge {} ({} triangles), gather_refine_levels {}: solve + {} gathers {:.1f} s wall, {:.1f} "
                "CPU-s (gathers {:.1f} s wall); reference 2 x {} paths per point\n",
-               maxEdge, run.mesh.patches.size(), run.scene.solver.gatherRefineLevels, points.size(), seconds, cpu,
+               maxEdge, run.mesh.patches.size(), run.scene.gather.gatherRefineLevels, points.size(), seconds, cpu,
                gatherSeconds, paths);
     // The references, in parallel (each point's two halves have their own streams).
     std::vector<double> halfA(points.size()), halfB(points.size());

@@ -15,6 +15,8 @@
 #include <radiosity/direct/direct_pass.h>
 #include <scene/light_groups.h>
 #include <radiosity/display/edge_vertices.h>
+#include <radiosity/display/vertex_reconstruction.h>
+#include <radiosity/display/seam_profile_gathers.h>
 #include <radiosity/gather/gather.h>
 #include <radiosity/gather/sensors.h>
 #include <radiosity/solution/solution_file.h>
@@ -95,7 +97,7 @@ class PushPullObserver {
         bool snapshot = snapshotDue(solution);
         if (!log && !snapshot) return;
         radiosity::RadiositySolution copy = solution;
-        radiosity::reconstructVertices(m_run.mesh, copy, m_run.scene.solver.linearReconstruction);
+        radiosity::reconstructVertices(m_run.mesh, copy, m_run.scene.reconstruction.linear());
         if (log) logRow(copy, fraction, last);
         if (snapshot) writeSnapshot(copy);
     }
@@ -105,7 +107,7 @@ class PushPullObserver {
     /// where the solve started to radiosity.stop_unshot, and at the end.
     bool snapshotDue(const radiosity::RadiositySolution& solution) const {
         const double start = solution.initialUnshotFlux / std::max(1e-300, solution.unshotReference());
-        const double stop = m_run.scene.solver.stopUnshot;
+        const double stop = m_run.scene.shooting.stopUnshot;
         return m_options.snapshots > 0 && m_nextSnapshot <= m_options.snapshots &&
                (solution.converged ||
                 solution.unshotFraction() <= start * std::pow(stop / start, double(m_nextSnapshot) / m_options.snapshots));
@@ -122,7 +124,7 @@ class PushPullObserver {
         if (gather) {
             m_lastGatherFraction = fraction;
             gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
-                             radiosity::GatherOptions::from(m_run.scene));
+                             radiosity::GatherOptions::forSensors(m_run.scene, m_run.mesh));
         }
         radiosity::GatherMemo memo;  // the row's sensors share their re-gathers, as a run of the sensor stage does
         for (const auto& [s, where] : m_sensors) {
@@ -164,8 +166,7 @@ class PushPullObserver {
 };
 
 void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
-    radiosity::ShootingSolver solver(run.scene, run.mesh, run.clustering, *run.embree, run.scene.solver,
-                                     run.scene.clusters);
+    radiosity::ShootingSolver solver(run.scene, run.mesh, run.clustering, *run.embree);
     solver.initialize(run.solution);
     Progress progress("secondary pass", options.quiet);
     PushPullObserver observer(run, options);
@@ -175,7 +176,7 @@ void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
         // (radiosity.stop_unshot × the emitted flux).
         if (!(s.initialUnshotFlux > 0)) return;  // nothing to shoot: converged at once
         const double left = s.remainingUnshotFlux / s.initialUnshotFlux;
-        const double target = run.scene.solver.stopUnshot * s.unshotReference() / s.initialUnshotFlux;
+        const double target = run.scene.shooting.stopUnshot * s.unshotReference() / s.initialUnshotFlux;
         const double done = left > 0 && target < 1 ? std::log(left) / std::log(target) : 1.0;
         progress.update(done, fmt::format("{} shots, unshot {:.3g}%", s.shots, 100 * s.unshotFraction()));
     });
@@ -207,7 +208,7 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
         if (run.clustering.clusters.empty())  // a saved solution without sensors: not built yet
             run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
         gatherer.emplace(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                         radiosity::GatherOptions::from(run.scene));
+                         radiosity::GatherOptions::forSensors(run.scene, run.mesh));
     }
     HdrImage image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera, run.scene.render,
                                       [&](double f) { progress.update(f); },
@@ -222,7 +223,7 @@ void solveLighting(PipelineRun& run, const std::string& sceneFile, const Pipelin
                                           : std::string("direct light"));
     {
         Progress progress("direct light", options.quiet);
-        radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.solver.areaLightSamples,
+        radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.direct.areaLightSamples,
                                  run.solution, [&](double f) { progress.update(f); });
     }
     if (auto w = backLightWarning(run.scene, run.solution, run.lights->emittedFlux())) {
@@ -238,20 +239,20 @@ void solveLighting(PipelineRun& run, const std::string& sceneFile, const Pipelin
         run.report.begin("secondary pass (shooting)");
         solveSecondary(run, options);
         run.report.begin("reconstruct vertices");
-        radiosity::reconstructVertices(run.mesh, run.solution, run.scene.solver.linearReconstruction);
-        if (run.scene.solver.edgeGatherLevels > 0) {
+        radiosity::reconstructVertices(run.mesh, run.solution, run.scene.reconstruction.linear());
+        if (run.scene.reconstruction.edgeGatherLevels > 0) {
             Progress progress("seam vertices", options.quiet);
             run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
-                                                             *run.embree, run.scene.solver.edgeGatherLevels,
+                                                             *run.embree, run.scene.reconstruction.edgeGatherLevels,
                                                              [&](double f) { progress.update(f); });
         }
-        if (run.scene.solver.seamProfileNodes > 0 && !run.edgeVertices.seamVertices.empty()) {
+        if (run.scene.reconstruction.seamProfileNodes > 0 && !run.edgeVertices.seamVertices.empty()) {
             Progress progress("seam profiles", options.quiet);
             // Edges as short as an input mesh's own detail are left linear, as the contacts are.
-            const double minEdge = radiosity::kContactMinEdges * radiosity::targetEdge(run.scene, run.scene.meshing);
+            const double minEdge = radiosity::kContactMinEdges * run.mesh.edgeLength;
             run.solution.seamProfiles = radiosity::gatherSeamProfiles(
                 run.scene, run.mesh, run.clustering, run.solution, *run.embree, run.edgeVertices.seamVertices, minEdge,
-                run.scene.solver.seamProfileNodes, &run.seamProfileGathers, [&](double f) { progress.update(f); });
+                run.scene.reconstruction.seamProfileNodes, &run.seamProfileGathers, [&](double f) { progress.update(f); });
         }
     } else {
         // Nothing reflects: the solution is complete with no indirect light at all.
@@ -336,7 +337,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
     run.lights = std::make_unique<radiosity::DirectLight>(run.scene);
     run.mirrorImages = radiosity::mirrorImagesFor(run.scene).size();
     if (run.scene.mirrors.empty()) run.skipped.push_back("virtual lights and shooters (no mirrors)");
-    else if (!run.scene.solver.mirrorImages) run.skipped.push_back("virtual lights and shooters (mirrors ignored)");
+    else if (!run.scene.mirrorImages.imageMethod()) run.skipped.push_back("virtual lights and shooters (mirrors ignored)");
     const bool wantGather = options.wantSensors && !run.scene.sensors.empty();
     if (options.solutionFile.empty()) solveLighting(run, sceneFile, options, wantGather);
     else loadSolution(run, options, wantGather);
@@ -344,7 +345,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
     if (wantGather) {
         run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
         radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                                     radiosity::GatherOptions::from(run.scene));
+                                     radiosity::GatherOptions::forSensors(run.scene, run.mesh));
         Progress progress("sensors", options.quiet);
         const auto values = radiosity::evaluateSensors(
             run.scene, run.mesh, run.solution, *run.lights, *run.embree, gatherer,

@@ -2,6 +2,7 @@
 
 #include <app/grid_statistics.h>
 #include <core/math.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include <nlohmann/json.hpp>

@@ -37,7 +37,7 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
     }
     fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
     fmt::print("patches (premeshed triangles): {} (estimated {:.0f}; target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
-               mesh.patches.size(), estimate, radiosity::targetEdge(scene, scene.meshing), mesh.vertices.size(),
+               mesh.patches.size(), estimate, mesh.edgeLength, mesh.vertices.size(),
                mesh.totalArea());
     auto embree = raytrace::buildEmbreeScene(scene, mesh);
     const radiosity::Clustering clustering = radiosity::buildClusters(scene, mesh, scene.clusters, embree.get());
@@ -63,7 +63,7 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
     const radiosity::DirectLight lights(scene);  // its virtual lights are the mirror images' copies of the lights
     const size_t images = lights.imageCount();
     if (!scene.mirrors.empty())
-        fmt::print("mirror images: {} ({}){}\n", images, scene.solver.mirrorImages ? "chains of reflections" : "mirrors ignored",
+        fmt::print("mirror images: {} ({}){}\n", images, scene.mirrorImages.imageMethod() ? "chains of reflections" : "mirrors ignored",
                    images > 0 ? fmt::format(", {} virtual lights", lights.virtualLightCount()) : "");
     fmt::print("expected peak memory: about {:.0f} MiB ({} patches, {} clusters{})\n",
                app::estimatePeakBytes(mesh.patches.size(), clustering.clusters.size(), images) / (1 << 20),

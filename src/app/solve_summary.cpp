@@ -1,5 +1,6 @@
 #include <app/solve_summary.h>
 
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include <fmt/format.h>
@@ -42,7 +43,7 @@ void printSolveSummary(const PipelineRun& run) {
                    run.maxIlluminanceStep);
     }
     std::string alsoAbsorbed;
-    if (!run.scene.mirrors.empty() && run.scene.solver.mirrorImages)
+    if (!run.scene.mirrors.empty() && run.scene.mirrorImages.imageMethod())
         alsoAbsorbed += fmt::format(" + {:.6g} lm by mirrors", balance.mirrorAbsorbed);
     if (balance.backAbsorbed > 0)
         alsoAbsorbed += fmt::format(" + {:.6g} lm on backs of one-sided surfaces", balance.backAbsorbed);

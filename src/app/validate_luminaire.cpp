@@ -4,6 +4,7 @@
 #include <app/validate_runs.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/solution/solution.h>
 #include <scene/photometry.h>
 #include <scene/scene.h>

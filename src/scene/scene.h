@@ -155,7 +155,12 @@ struct Scene {
     std::vector<Sensor> sensors;
     MeshingOptions meshing;
     ClusterOptions clusters;
-    SolverOptions solver;
+    DirectOptions direct;
+    FormFactorOptions formFactors;
+    MirrorImageOptions mirrorImages;
+    ShootingOptions shooting;
+    GatherOptions gather;
+    ReconstructionOptions reconstruction;
     RenderOptions render;
     BuildWarnings warnings;
 

@@ -116,7 +116,12 @@ class Builder {
         s.file = m_desc.file;
         s.meshing = m_desc.meshing;
         s.clusters = m_desc.clusters;
-        s.solver = m_desc.solver;
+        s.direct = m_desc.direct;
+        s.formFactors = m_desc.formFactors;
+        s.mirrorImages = m_desc.mirrorImages;
+        s.shooting = m_desc.shooting;
+        s.gather = m_desc.gather;
+        s.reconstruction = m_desc.reconstruction;
         s.render = m_desc.render;
         std::map<std::string, int> materialIndex;
         for (const auto& m : m_desc.materials) {

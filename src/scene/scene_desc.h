@@ -138,7 +138,12 @@ struct SceneDesc {
     std::vector<SurfaceGridDesc> surfaceGrids;  ///< expanded into sensors by the builder
     MeshingOptions meshing;
     ClusterOptions clusters;
-    SolverOptions solver;
+    DirectOptions direct;
+    FormFactorOptions formFactors;
+    MirrorImageOptions mirrorImages;
+    ShootingOptions shooting;
+    GatherOptions gather;
+    ReconstructionOptions reconstruction;
     RenderOptions render;
 };
 

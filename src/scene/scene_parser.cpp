@@ -460,46 +460,46 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.meshing.maxCellAspect = r.number("max_cell_aspect", d.meshing.maxCellAspect);
     if (d.meshing.maxCellAspect < 1) r.error("max_cell_aspect", "expected a number >= 1");
     d.meshing.maxPatches = r.positive("max_patches", d.meshing.maxPatches);
-    d.solver.stopUnshot = r.number("stop_unshot", d.solver.stopUnshot);
-    if (!(d.solver.stopUnshot > 0 && d.solver.stopUnshot < 1)) r.error("stop_unshot", "expected a number in (0, 1)");
-    d.solver.maxShots = static_cast<int64_t>(r.nonNegative("max_shots", static_cast<double>(d.solver.maxShots)));
-    d.solver.maxSeconds = r.nonNegative("max_seconds", d.solver.maxSeconds);
-    d.solver.analyticDistance = r.nonNegative("analytic_distance", d.solver.analyticDistance);
-    d.solver.areaLightSamples = r.integer("area_light_samples", d.solver.areaLightSamples, 1, 4096);
-    d.solver.gatherLevels = r.integer("gather_levels", d.solver.gatherLevels, 0, 64);
-    d.solver.gatherRefineLevels = r.integer("gather_refine_levels", d.solver.gatherRefineLevels, 0, 8);
-    d.solver.gatherRefineTolerance = r.nonNegative("gather_refine_tolerance", d.solver.gatherRefineTolerance);
-    d.solver.gatherFarDiameters = r.nonNegative("gather_far_diameters", d.solver.gatherFarDiameters);
-    if (d.solver.gatherFarDiameters > 0 && d.solver.gatherFarDiameters < 2)
+    d.shooting.stopUnshot = r.number("stop_unshot", d.shooting.stopUnshot);
+    if (!(d.shooting.stopUnshot > 0 && d.shooting.stopUnshot < 1)) r.error("stop_unshot", "expected a number in (0, 1)");
+    d.shooting.maxShots = static_cast<int64_t>(r.nonNegative("max_shots", static_cast<double>(d.shooting.maxShots)));
+    d.shooting.maxSeconds = r.nonNegative("max_seconds", d.shooting.maxSeconds);
+    d.formFactors.analyticDistance = r.nonNegative("analytic_distance", d.formFactors.analyticDistance);
+    d.direct.areaLightSamples = r.integer("area_light_samples", d.direct.areaLightSamples, 1, 4096);
+    d.gather.gatherLevels = r.integer("gather_levels", d.gather.gatherLevels, 0, 64);
+    d.gather.gatherRefineLevels = r.integer("gather_refine_levels", d.gather.gatherRefineLevels, 0, 8);
+    d.gather.gatherRefineTolerance = r.nonNegative("gather_refine_tolerance", d.gather.gatherRefineTolerance);
+    d.gather.gatherFarDiameters = r.nonNegative("gather_far_diameters", d.gather.gatherFarDiameters);
+    if (d.gather.gatherFarDiameters > 0 && d.gather.gatherFarDiameters < 2)
         r.error("gather_far_diameters", "expected 0 (every patch on its own) or at least 2 (nearer, a point sits "
                                         "inside the node it would take as one source)");
-    d.solver.shootFarDiameters = r.nonNegative("shoot_far_diameters", d.solver.shootFarDiameters);
-    if (d.solver.shootFarDiameters > 0 && d.solver.shootFarDiameters < 2)
+    d.shooting.shootFarDiameters = r.nonNegative("shoot_far_diameters", d.shooting.shootFarDiameters);
+    if (d.shooting.shootFarDiameters > 0 && d.shooting.shootFarDiameters < 2)
         r.error("shoot_far_diameters", "expected 0 (every member on its own) or at least 2 (nearer, a receiver sits "
                                        "inside the node it would take as one source)");
-    d.solver.gatherMinWeight = r.number("gather_min_weight", d.solver.gatherMinWeight);
-    if (!(d.solver.gatherMinWeight >= 0 && d.solver.gatherMinWeight < 1))
+    d.gather.gatherMinWeight = r.number("gather_min_weight", d.gather.gatherMinWeight);
+    if (!(d.gather.gatherMinWeight >= 0 && d.gather.gatherMinWeight < 1))
         r.error("gather_min_weight", "expected a number in [0, 1)");
-    d.solver.edgeGatherLevels = r.integer("edge_gather_levels", d.solver.edgeGatherLevels, 0, 64);
-    d.solver.seamProfileNodes = r.integer("seam_profile_nodes", d.solver.seamProfileNodes, 0, 5);
-    d.solver.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.solver.oneChannelWhenGrey);
-    d.solver.conserveEnergy = r.boolean("conserve_energy").value_or(d.solver.conserveEnergy);
-    d.solver.overshoot = r.boolean("overshoot").value_or(d.solver.overshoot);
+    d.reconstruction.edgeGatherLevels = r.integer("edge_gather_levels", d.reconstruction.edgeGatherLevels, 0, 64);
+    d.reconstruction.seamProfileNodes = r.integer("seam_profile_nodes", d.reconstruction.seamProfileNodes, 0, ReconstructionOptions::kMaxSeamProfileNodes);
+    d.shooting.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.shooting.oneChannelWhenGrey);
+    d.shooting.conserveEnergy = r.boolean("conserve_energy").value_or(d.shooting.conserveEnergy);
+    d.shooting.overshoot = r.boolean("overshoot").value_or(d.shooting.overshoot);
     if (auto mode = r.string("mirrors")) {
-        if (*mode == "image") d.solver.mirrorImages = true;
-        else if (*mode == "ignore") d.solver.mirrorImages = false;
+        if (*mode == "image") d.mirrorImages.mirrors = MirrorImageOptions::Mode::Image;
+        else if (*mode == "ignore") d.mirrorImages.mirrors = MirrorImageOptions::Mode::Ignore;
         else r.error("mirrors", fmt::format("expected \"image\" or \"ignore\", got \"{}\"", *mode));
     }
-    d.solver.mirrorDepth = r.integer("mirror_depth", d.solver.mirrorDepth, 1, 64);
-    d.solver.mirrorMinWeight = r.number("mirror_min_weight", d.solver.mirrorMinWeight);
-    if (!(d.solver.mirrorMinWeight > 0 && d.solver.mirrorMinWeight < 1))
+    d.mirrorImages.mirrorDepth = r.integer("mirror_depth", d.mirrorImages.mirrorDepth, 1, 64);
+    d.mirrorImages.mirrorMinWeight = r.number("mirror_min_weight", d.mirrorImages.mirrorMinWeight);
+    if (!(d.mirrorImages.mirrorMinWeight > 0 && d.mirrorImages.mirrorMinWeight < 1))
         r.error("mirror_min_weight", "expected a number in (0, 1)");
-    d.solver.mirrorMinShare = r.number("mirror_min_share", d.solver.mirrorMinShare);
-    if (!(d.solver.mirrorMinShare >= 0 && d.solver.mirrorMinShare < 1))
+    d.mirrorImages.mirrorMinShare = r.number("mirror_min_share", d.mirrorImages.mirrorMinShare);
+    if (!(d.mirrorImages.mirrorMinShare >= 0 && d.mirrorImages.mirrorMinShare < 1))
         r.error("mirror_min_share", "expected a number in [0, 1)");
     if (auto rec = r.string("reconstruction")) {
-        if (*rec == "linear") d.solver.linearReconstruction = true;
-        else if (*rec == "average") d.solver.linearReconstruction = false;
+        if (*rec == "linear") d.reconstruction.reconstruction = ReconstructionOptions::Mode::Linear;
+        else if (*rec == "average") d.reconstruction.reconstruction = ReconstructionOptions::Mode::Average;
         else r.error("reconstruction", fmt::format("expected \"linear\" or \"average\", got \"{}\"", *rec));
     }
     r.finish();

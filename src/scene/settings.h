@@ -63,8 +63,35 @@ struct ClusterOptions {
     double pushPullFraction = 0.1;
 };
 
-/// The secondary (indirect) pass: progressive shooting.
-struct SolverOptions {
+/// The direct pass over the patches (`radiosity.area_light_samples`).
+struct DirectOptions {
+    /// Shadow-ray samples on each area light for the direct light at patch points.
+    int areaLightSamples = 16;
+};
+
+/// Point-to-polygon form factors, in the shooting and in the gather (`radiosity.analytic_distance`).
+struct FormFactorOptions {
+    /// Use the analytic polygon form factor when the receiver is closer to the source
+    /// than this many source diameters; the point approximation beyond.
+    double analyticDistance = 4.0;
+};
+
+/// How the radiosity treats planar mirrors (`radiosity.mirrors`, `radiosity.mirror_*`).
+struct MirrorImageOptions {
+    /// "image": mirrors by the image method (virtual lights and virtual shooters);
+    /// "ignore": not in the radiosity (the ray tracer still shows reflections).
+    enum class Mode { Image, Ignore };
+    Mode mirrors = Mode::Image;
+    bool imageMethod() const { return mirrors == Mode::Image; }
+    int mirrorDepth = 4;             ///< reflections per image chain
+    double mirrorMinWeight = 1e-3;   ///< drop chains whose Π Ks falls below this
+    /// Drop chains that could carry less than this share of a uniformly bright room's
+    /// light: Π Ks · G / (π A), G the chain's étendue (m² sr), A the surface area.
+    double mirrorMinShare = 1e-5;
+};
+
+/// The secondary (indirect) pass: progressive shooting (`radiosity.*`).
+struct ShootingOptions {
     /// Stop when the unshot flux falls below this fraction of the flux the lights emit
     /// (the paper's rule): shot, it would raise the illuminance, averaged over the
     /// surfaces, by about this fraction.
@@ -74,58 +101,9 @@ struct SolverOptions {
     /// Upper bound on the secondary pass's wall-clock time in seconds (0 = none). The
     /// solve also stops by itself when its residual stalls (see ShootingCore::step).
     double maxSeconds = 0;
-    /// Use the analytic polygon form factor when the receiver is closer to the source
-    /// than this many source diameters; the point approximation beyond.
-    double analyticDistance = 4.0;
-    /// Shadow-ray samples on each area light for the direct light at patch points.
-    int areaLightSamples = 16;
-    /// Sensor gather: how many times corner values of near patches are themselves
-    /// re-gathered (a local fixed-point iteration at edges and corners; 0 = patch-constant).
-    int gatherLevels = 8;
-    /// Sensor gather: the top this many gather levels refine their near patches toward
-    /// the point with gathered (not interpolated) indirect light at sub-triangle corners,
-    /// where that differs from linear by more than `gatherRefineTolerance` (relative):
-    /// the indirect light's singular fall-off into concave edges and corners (0 = off).
-    int gatherRefineLevels = 2;
-    double gatherRefineTolerance = 0.002;
-    /// Sensor gather: a part of a cluster (its member tree's nodes) farther than this
-    /// many of its diameters counts as one source (0 = every patch on its own).
-    double gatherFarDiameters = 3.0;
     /// Shooting, patch→patch: a node of the shooter's member tree farther from a receiver
     /// than this many of its diameters sends as one source (0 = every member on its own).
     double shootFarDiameters = 3.0;
-    /// Sensor gather: a near patch's corner and midpoint values are re-gathered only
-    /// while their weight — the part of an error in them that reaches the sensor, the
-    /// product of ρ F along the chain of gathers, rounded up to a power of ten — is at
-    /// least this; below, they are the solution's vertex values (0 = always).
-    double gatherMinWeight = 1e-2;
-    /// Vertex values from centroid values: false = the paper's plain average of the
-    /// triangles around the vertex; true = a least-squares plane through the centroid
-    /// values of the two rings of triangles around it, evaluated at the vertex (exact for
-    /// linear variation, so it does not flatten the fall-off into edges and corners).
-    bool linearReconstruction = true;
-    /// Vertices on concave seams (the vertex lies on an edge of a patch of another
-    /// surface that faces it: the edges and corners of a room) take their value from a
-    /// point gather, iterated this many rounds (0 = off). The indirect light falls
-    /// steeply into such seams and no reconstruction from centroid values follows it
-    /// (cube C at 19 200 triangles: +5.9 % without, +0.7 % with 3 rounds, +0.6 s).
-    /// Surfaces that touch without a shared mesh line (a box standing on a floor) are
-    /// left to the reconstruction: a floor vertex near the box's foot is not on the seam.
-    int edgeGatherLevels = 3;
-    /// Display values graded toward concave seams (seam_profiles.h): each mesh edge from a
-    /// seam vertex into its surface carries the gathered correction to linear interpolation
-    /// at 1/2, 1/4 … of its length, this many nodes at most (0 = off, ≤ 5). Without it the
-    /// band of triangles along a room's edges reads up to 10 % low (the indirect light's
-    /// d·ln(1/d) rise away from the seam). Needs edge_gather_levels > 0.
-    int seamProfileNodes = 5;
-    /// Planar mirrors in the radiosity by the image method (virtual lights and virtual
-    /// shooters); false ignores them there (the ray tracer still shows reflections).
-    bool mirrorImages = true;
-    int mirrorDepth = 4;             ///< reflections per image chain
-    double mirrorMinWeight = 1e-3;   ///< drop chains whose Π Ks falls below this
-    /// Drop chains that could carry less than this share of a uniformly bright room's
-    /// light: Π Ks · G / (π A), G the chain's étendue (m² sr), A the surface area.
-    double mirrorMinShare = 1e-5;
     /// Per-shot energy conservation in closed scenes (with mirrors only when every chain
     /// of reflections is modelled): each shot's deliveries (and what the energy
     /// corrections redeliver; through mirrors counted ÷ Π Ks) are scaled so the flux
@@ -142,6 +120,56 @@ struct SolverOptions {
     bool overshoot = true;
     /// Solve one channel instead of three when every reflectance and light is grey.
     bool oneChannelWhenGrey = true;
+};
+
+/// The final gather at sensors, and at every hit with `render.indirect` "gather"
+/// (`radiosity.gather_*`).
+struct GatherOptions {
+    /// How many times corner values of near patches are themselves re-gathered (a local
+    /// fixed-point iteration at edges and corners; 0 = patch-constant).
+    int gatherLevels = 8;
+    /// The top this many gather levels refine their near patches toward the point with
+    /// gathered (not interpolated) indirect light at sub-triangle corners, where that
+    /// differs from linear by more than `gatherRefineTolerance` (relative): the indirect
+    /// light's singular fall-off into concave edges and corners (0 = off).
+    int gatherRefineLevels = 2;
+    double gatherRefineTolerance = 0.002;
+    /// A part of a cluster (its member tree's nodes) farther than this many of its
+    /// diameters counts as one source (0 = every patch on its own).
+    double gatherFarDiameters = 3.0;
+    /// A near patch's corner and midpoint values are re-gathered only while their weight
+    /// — the part of an error in them that reaches the sensor, the product of ρ F along
+    /// the chain of gathers, rounded up to a power of ten — is at least this; below, they
+    /// are the solution's vertex values (0 = always).
+    double gatherMinWeight = 1e-2;
+};
+
+/// The display values: what the ray tracer interpolates between (`radiosity.reconstruction`,
+/// `radiosity.edge_gather_levels`, `radiosity.seam_profile_nodes`).
+struct ReconstructionOptions {
+    /// Vertex values from centroid values: "average", the paper's plain average of the
+    /// triangles around the vertex; "linear", a least-squares plane through the centroid
+    /// values of the two rings of triangles around it, evaluated at the vertex (exact for
+    /// linear variation, so it does not flatten the fall-off into edges and corners).
+    enum class Mode { Linear, Average };
+    Mode reconstruction = Mode::Linear;
+    bool linear() const { return reconstruction == Mode::Linear; }
+    /// Vertices on concave seams (the vertex lies on an edge of a patch of another
+    /// surface that faces it: the edges and corners of a room) take their value from a
+    /// point gather, iterated this many rounds (0 = off). The indirect light falls
+    /// steeply into such seams and no reconstruction from centroid values follows it
+    /// (cube C at 19 200 triangles: +5.9 % without, +0.7 % with 3 rounds).
+    /// Surfaces that touch without a shared mesh line (a box standing on a floor) are
+    /// left to the reconstruction: a floor vertex near the box's foot is not on the seam.
+    int edgeGatherLevels = 3;
+    /// Display values graded toward concave seams (radiosity/solution/seam_profiles.h): each
+    /// mesh edge from a seam vertex into its surface carries the gathered correction to
+    /// linear interpolation at 1/2, 1/4 … of its length, this many nodes at most (0 = off,
+    /// ≤ kMaxSeamProfileNodes). Without it the band of triangles along a room's edges reads
+    /// up to 10 % low (the indirect light's d·ln(1/d) rise away from the seam). Needs
+    /// edge_gather_levels > 0.
+    int seamProfileNodes = 5;
+    static constexpr int kMaxSeamProfileNodes = 5;
 };
 
 /// The ray tracer and the sensor gather.

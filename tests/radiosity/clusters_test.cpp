@@ -1,6 +1,7 @@
 // Clusters and the two-level shooting: invariants, push-pull, the energy correction.
 #include <app/pipeline.h>
 #include <core/check.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/cluster_transfer.h>
 #include <radiosity/clusters/clusters.h>
 #include <radiosity/form_factors/form_factor.h>
@@ -79,7 +80,7 @@ TEST_CASE("every patch is in exactly one cluster within the normal tolerance and
 TEST_CASE("push-pull conserves energy", "[clusters]") {
     DirectLitCube cube;
     auto& [s, mesh, clustering, embree, sol] = cube;
-    ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
+    ShootingSolver solver(s, mesh, clustering, embree);
     solver.initialize(sol);
     for (int k = 0; k < 20; ++k) solver.step(sol);
     double before = sol.unshotNetFlux, indirectBefore = 0, pending = 0;
@@ -102,7 +103,7 @@ TEST_CASE("solve() hands the solution the indirect light only at the push-pulls 
     // solution would cost 24 bytes per patch (and the unshot ΔL another 24).
     DirectLitCube cube;
     auto& [s, mesh, clustering, embree, sol] = cube;
-    ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
+    ShootingSolver solver(s, mesh, clustering, embree);
     solver.initialize(sol);
     int asked = 0, wanted = 0, askedWithArrays = 0;
     std::vector<size_t> sizes;  // the indirect array's size at each call
@@ -127,7 +128,7 @@ TEST_CASE("solve() hands the solution the indirect light only at the push-pulls 
 
 TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the total energy", "[clusters]") {
     auto s = parse(kTwoQuads);
-    s.solver.shootFarDiameters = 0;  // member by member, as the expected sum below (far field: 0.13 % off here)
+    s.shooting.shootFarDiameters = 0;  // member by member, as the expected sum below (far field: 0.13 % off here)
     auto mesh = premesh(s, s.meshing);
     auto clustering = buildClusters(s, mesh, s.clusters);
     REQUIRE(clustering.clusters.size() == 2);
@@ -140,7 +141,7 @@ TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the to
     sol.directMean.assign(mesh.patches.size(), Rgb(0.0));
     sol.directCorner.assign(3 * mesh.patches.size(), RgbF(0.0f));
     for (uint32_t i : clustering.clusters[C].patches) sol.directMean[i] = Rgb(1000.0 + 10.0 * i);
-    ShootingSolver solver(s, mesh, clustering, embree, s.solver, s.clusters);
+    ShootingSolver solver(s, mesh, clustering, embree);
     solver.initialize(sol);
     solver.shootCluster(C, sol, /*radius=*/1);  // distance 2 ≥ 1: cluster→cluster
     solver.pushPullAll(sol);
@@ -154,7 +155,7 @@ TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the to
         Rgb expected(0.0);
         for (uint32_t i : clustering.clusters[C].patches) {
             Rgb L = Rgb(0.5) * sol.directMean[i] / kPi;  // C's total: it received nothing
-            const double f = patchFormFactor(mesh, mesh.patches[i], rec.centroid, rec.normal, s.solver.analyticDistance);
+            const double f = patchFormFactor(mesh, mesh.patches[i], rec.centroid, rec.normal, s.formFactors.analyticDistance);
             if (f > 0 && embree.visibleFromSurface(rec.centroid, rec.normal, mesh.patches[i].centroid))
                 expected += L * (kPi * f);  // every member its own ray
         }
@@ -447,7 +448,7 @@ TEST_CASE("clusters that touch along a seam exchange patch to patch: the Cornell
     options.overrides = {scene::parseOverride("radiosity.max_edge=0.05")};
     const app::PipelineRun run = app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), options);
     const auto touching = touchingClusters(run.mesh, run.clustering, *run.embree, 1e-6 * run.scene.diagonal());
-    GatherOptions exact;
+    GatherOptions exact = GatherOptions::plain();
     exact.sharedRays = false;
     const Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree, exact);
     GatherMemo memo;

@@ -80,9 +80,9 @@ TEST_CASE("seam vertices: a gather's near part and the rest add up to the whole 
     const std::string coarse = R"("max_edge": 1)";
     scene.replace(scene.find(coarse), coarse.size(), R"("max_edge": 0.25)");
     auto run = app::runPipeline(test::writeTempScene("box_parts", scene), quiet());
-    radiosity::GatherOptions options;
-    options.levels = 3;
-    options.farDiameters = 3;
+    radiosity::GatherOptions options = radiosity::GatherOptions::plain();
+    options.gatherLevels = 3;
+    options.gatherFarDiameters = 3;
     radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree, options);
     radiosity::Gatherer::CornerSource corners = [&](size_t patch, int corner, double) {
         return run.solution.vertexIndirect[run.mesh.patches[patch].v[corner]];

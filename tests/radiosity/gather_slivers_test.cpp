@@ -34,7 +34,7 @@ TEST_CASE("sensor gather: a chamfer molding of 4 mm strips beside the point is n
         "lights": [{"type": "point", "position": [1, 0.4, 0.5], "intensity_cd": 100}],
         "radiosity": {"max_edge": 0.25}})";
     auto run = app::runPipeline(test::writeTempScene("chamfer_strips", json), test::quiet());
-    const GatherOptions options = GatherOptions::from(run.scene);
+    const GatherOptions options = GatherOptions::forSensors(run.scene, run.mesh);
     REQUIRE(options.minRefineWidth == Approx(0.05 * 0.25));
     GatherOptions everyStrip = options;
     everyStrip.minRefineWidth = 0;

@@ -1,5 +1,6 @@
 // The shooting iteration: energy balance, analytic sphere, determinism.
 #include <app/pipeline.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include "scene/scene_test_util.h"

@@ -177,10 +177,10 @@ TEST_CASE("ceiling sensors over rows of desks read what every patch's own ray re
         "troffer": {"type": "emissive", "luminance_cd_m2": 2653, "reflectance": 0.7}},
         "objects": [)" + objects + R"(], "radiosity": {"max_edge": 0.5}})";
     auto run = app::runPipeline(test::writeTempScene("desk_rows", json), test::quiet());
-    const GatherOptions options = GatherOptions::from(run.scene);
-    REQUIRE(options.farDiameters > 0);
+    const GatherOptions options = GatherOptions::forSensors(run.scene, run.mesh);
+    REQUIRE(options.gatherFarDiameters > 0);
     GatherOptions exact = options;
-    exact.farDiameters = 0;
+    exact.gatherFarDiameters = 0;
     exact.sharedRays = false;
     const CountingVisibility counted(*run.embree);
     const Gatherer sampled(run.scene, run.mesh, run.clustering, run.solution, counted, options);

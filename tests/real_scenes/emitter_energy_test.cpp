@@ -1,6 +1,7 @@
 // Issue 11, "energy is never created": every emitter shape, close to a surface or not,
 // facing it or away from it, delivers exactly its flux into a closed box.
 #include <app/pipeline.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include "pipeline_test_util.h"

@@ -2,6 +2,7 @@
 // box partition, and a light outside a closed room. Every sensor, vertex value and pixel
 // on the dark side must be 0 (to 1e-6 of the lit room's mean), whatever the meshing.
 #include <app/pipeline.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include "pipeline_test_util.h"

@@ -2,6 +2,7 @@
 // file's table in the luminaire's frame, the flux is the table's integral (or flux_lm),
 // and the indirect light inside a closed sphere is the analytic ρ/(1−ρ) Φ/A.
 #include <app/pipeline.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/direct/direct_light.h>
 #include <scene/scene_parser.h>
 #include <core/input_error.h>

@@ -3,6 +3,7 @@
 // the wall) in a closed box. The account must close whatever lights it and whether light
 // can enter the gap behind it; a mirror wound backwards books what falls on its back.
 #include <app/pipeline.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include "pipeline_test_util.h"

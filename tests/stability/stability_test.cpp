@@ -2,6 +2,7 @@
 // accounting, millimetres and kilometres, lights touching walls, broken geometry,
 // thousands of lights. Run with `ctest -L stability`; also part of the default run.
 #include <app/pipeline.h>
+#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include "pipeline_test_util.h"

@@ -1,7 +1,7 @@
 #include <radiosity/display/contact_vertices.h>
 
 #include <radiosity/mesh/contact_outlines.h>
-#include <radiosity/gather/gather.h>
+#include <radiosity/mesh/mesh_location.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,19 +4,13 @@
 // room are.
 #pragma once
 
+#include <radiosity/display/gather_point.h>
 #include <radiosity/mesh/patch_mesh.h>
 
 #include <cstdint>
 #include <vector>
 
 namespace rayrad::radiosity {
-
-/// A vertex whose indirect value is gathered at `at` (on its surface, normal `normal`).
-struct GatherPoint {
-    size_t vertex = 0;
-    Vec3 at{0.0};
-    Vec3 normal{0.0};
-};
 
 /// The vertices of the patches at least `minDiameter` m across that a contact outline
 /// crosses (mesh.outlines: findContactOutlines first; none when it was not run). A vertex

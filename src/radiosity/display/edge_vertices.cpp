@@ -1,11 +1,11 @@
 #include <radiosity/display/edge_vertices.h>
 
 #include <radiosity/display/contact_vertices.h>
+#include <radiosity/display/rim_vertices.h>
 #include <radiosity/mesh/covered_patches.h>
 #include <radiosity/display/extrapolated_vertices.h>
 #include <radiosity/form_factors/form_factor.h>
 #include <radiosity/gather/gather.h>
-#include <radiosity/mesh/mesher.h>
 
 #include <algorithm>
 #include <atomic>
@@ -121,7 +121,7 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
         taken[v] = 1;
     }
     const size_t seams = points.size();
-    const double minDiameter = kContactMinEdges * targetEdge(scene, scene.meshing);
+    const double minDiameter = kContactMinEdges * mesh.edgeLength;
     for (const GatherPoint& g : contactVertices(mesh, patchOf, minDiameter, nudge))
         if (!taken[g.vertex]) points.push_back(g), taken[g.vertex] = 1;
     const size_t contacts = points.size() - seams;
@@ -145,9 +145,9 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
     // whose corners the rounds do not change (on the
     // Cornell floor three rounds and one give the same errors, within 0.1 %). Parallel
     // over vertices; each gather serial, so the result does not depend on the thread count.
-    GatherOptions options;
-    options.levels = levels;
-    options.farDiameters = kFarClusterDiameters;
+    GatherOptions options = GatherOptions::plain();
+    options.gatherLevels = levels;
+    options.gatherFarDiameters = kFarClusterDiameters;
     options.maxSplitDepth = kMaxSplitDepth;
     Gatherer gatherer(scene, mesh, clustering, solution, vis, options);
     std::unordered_map<uint32_t, size_t> slot;

@@ -1,6 +1,6 @@
 #include <radiosity/display/extrapolated_vertices.h>
 
-#include <radiosity/gather/gather.h>
+#include <radiosity/mesh/mesh_location.h>
 
 #include <algorithm>
 #include <limits>

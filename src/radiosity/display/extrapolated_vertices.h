@@ -2,7 +2,7 @@
 // at a point instead (edge_vertices.h).
 #pragma once
 
-#include <radiosity/display/contact_vertices.h>
+#include <radiosity/display/gather_point.h>
 #include <radiosity/mesh/patch_mesh.h>
 #include <radiosity/solution/solution.h>
 

@@ -1,9 +1,9 @@
 #include <radiosity/gather/gather.h>
+#include <radiosity/clusters/image_clusters.h>
 #include <radiosity/mesh/patch_reflectance.h>
 
 #include <core/ray_batch.h>
 #include <radiosity/form_factors/form_factor.h>
-#include <radiosity/mesh/mesher.h>
 #include <radiosity/form_factors/patch_transfer.h>
 #include <radiosity/gather/visibility_share.h>
 
@@ -38,15 +38,19 @@ constexpr size_t kFarLeafSize = 8;
 constexpr double kSliverEdges = 0.05;
 }  // namespace
 
-GatherOptions GatherOptions::from(const scene::Scene& scene) {
-    const scene::SolverOptions& solver = scene.solver;
+GatherOptions GatherOptions::forSensors(const scene::Scene& scene, const PatchMesh& mesh) {
     GatherOptions o;
-    o.minRefineWidth = kSliverEdges * targetEdge(scene, scene.meshing);
-    o.levels = solver.gatherLevels;
-    o.farDiameters = solver.gatherFarDiameters;
-    o.refineLevels = solver.gatherRefineLevels;
-    o.refineTolerance = solver.gatherRefineTolerance;
-    o.minWeight = solver.gatherMinWeight;
+    static_cast<scene::GatherOptions&>(o) = scene.gather;
+    o.minRefineWidth = kSliverEdges * mesh.edgeLength;
+    return o;
+}
+
+GatherOptions GatherOptions::plain() {
+    GatherOptions o;  // the tolerance stays the scene's default: it acts only with refinement levels
+    o.gatherLevels = 0;
+    o.gatherRefineLevels = 0;
+    o.gatherFarDiameters = 0;
+    o.gatherMinWeight = 0;
     return o;
 }
 
@@ -88,7 +92,7 @@ Rgb Gatherer::solutionCorner(size_t patch, int corner) const {
 }
 
 int Gatherer::classOf(double weight) const {
-    if (m_options.minWeight <= 0 || weight >= 1) return 0;
+    if (m_options.gatherMinWeight <= 0 || weight >= 1) return 0;
     return static_cast<int>(std::floor(-std::log10(weight)));
 }
 
@@ -154,7 +158,7 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, G
     CornerSource corners = [&](size_t patch, int corner, double share) {
         return cornerIndirect(patch, corner, level - 1, classOf(weight * share), memo);
     };
-    if (level <= m_options.levels - m_options.refineLevels)
+    if (level <= m_options.gatherLevels - m_options.gatherRefineLevels)
         return gatherWith(x, n, &corners, true, nullptr, weight, Part::All, expected);
     MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share) {
         return midpointIndirect(patch, a, b, y, level - 1, classOf(weight * share), memo);
@@ -215,7 +219,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         double shareSum = 0;
         for (const Candidate& e : candidates) shareSum += e.share;
         double detailFrom = 0;  // shares from here on are gathered
-        const double detailFloor = m_options.minWeight > 0 ? m_options.minWeight / weight : 0;
+        const double detailFloor = m_options.gatherMinWeight > 0 ? m_options.gatherMinWeight / weight : 0;
         if (detailFloor > 0) {
             std::vector<double> shares;
             for (const Candidate& e : candidates) shares.push_back(e.share);
@@ -248,9 +252,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
             // tolerance; patches holding less than 1/kRefineShares of the near field's share
             // may depart more, in proportion (400 slivers of a sofa do not each need it), and
             // so may a gather whose error reaches the sensor with weight w < 1, by 1/w.
-            const double tolerance = m_options.refineTolerance *
+            const double tolerance = m_options.gatherRefineTolerance *
                                      std::max(1.0, shareSum / (kRefineShares * e.share)) /
-                                     (m_options.minWeight > 0 ? weight : 1.0);
+                                     (m_options.gatherMinWeight > 0 ? weight : 1.0);
             const size_t first = pieces.size();
             refineNear(x, j, corners, 0, detailed && !sliver ? midpoints : nullptr, e.share, tolerance, pieces);
             near.back().first = static_cast<uint32_t>(first);
@@ -269,9 +273,9 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
     // A far node's error falls as (reach / r)³ (its expansion is of second order); an error
     // in a gather of weight w reaches the sensor times w, so nodes may count as far from
     // farDiameters · ∛w (never nearer than kLeastFarDiameters): the same error at the sensor.
-    const double farDiameters = m_options.farDiameters > 0 && weight < 1
-                                    ? std::max(kLeastFarDiameters, m_options.farDiameters * std::cbrt(weight))
-                                    : m_options.farDiameters;
+    const double farDiameters = m_options.gatherFarDiameters > 0 && weight < 1
+                                    ? std::max(kLeastFarDiameters, m_options.gatherFarDiameters * std::cbrt(weight))
+                                    : m_options.gatherFarDiameters;
     // Sum over clusters: near patches by sub-triangles, other patches with their own rays
     // when close, far clusters with shared rays (form factors still per member; the
     // visibility sampled where their light comes from: ClusterVisibility), and far
@@ -352,7 +356,7 @@ Rgb Gatherer::gatherWith(const Vec3& x, const Vec3& n, const CornerSource* corne
         // F from patch j in this source: analytic within analyticDistance patch diameters,
         // the point approximation beyond.
         auto formFactor = [&](uint32_t j) {
-            const double within = m_scene.solver.analyticDistance;
+            const double within = m_scene.formFactors.analyticDistance;
             if (real) return patchFormFactor(m_mesh, m_mesh.patches[j], x, n, within);
             const ImagePatch p = imagePatch(m_mesh, m_mesh.patches[j], *image);
             return patchFormFactor(p.corners, p.patch, x, n, within);

@@ -24,19 +24,10 @@
 
 namespace rayrad::radiosity {
 
-/// How deep and how finely the gather works (see Gatherer).
-struct GatherOptions {
-    int levels = 0;             ///< corner values re-gathered this many times (0 = patch-constant)
-    /// A node of a cluster's member tree farther than this many of its diameters counts
-    /// as one source (0 = every patch on its own).
-    double farDiameters = 0;
+/// How a Gatherer works: the scene's gather settings (scene::GatherOptions, each named
+/// as in the scene file), or a sub-stage's own, and what only the stage sets.
+struct GatherOptions : scene::GatherOptions {
     int maxSplitDepth = 12;     ///< sub-triangle refinement toward the point
-    int refineLevels = 0;       ///< top levels that refine near patches with gathered midpoints
-    double refineTolerance = 0.002;
-    /// A corner or midpoint value is re-gathered only while its weight (how much of an
-    /// error in it reaches the sensor: the product of ρ F along the chain of gathers) is
-    /// at least this; below, it is the solution's vertex value (0 = always).
-    double minWeight = 0;
     /// Near patches narrower than this (m; width 2·area / longest edge) are not refined
     /// with gathered midpoints (their corners are re-gathered as any patch's): an imported
     /// mesh's slivers, a molding's strips, each "near" by its length though millimetres
@@ -44,11 +35,14 @@ struct GatherOptions {
     /// 253 such patches among the 317 it re-gathered, and took 57.6 CPU-s.
     double minRefineWidth = 0;
     /// false: every patch its own visibility ray, however far its cluster (with
-    /// farDiameters 0, the exact sum: the reference shared rays are measured against).
+    /// gatherFarDiameters 0, the exact sum: the reference shared rays are measured against).
     bool sharedRays = true;
-    /// The sensor gather as the scene's settings ask for it (minRefineWidth: 1/20 of the
-    /// premesher's edge, so no patch the premesher made counts as a sliver).
-    static GatherOptions from(const scene::Scene& scene);
+    /// The sensors' gather: the scene's settings, and slivers below 1/20 of the mesh's
+    /// edge, so no patch the premesher made counts as one.
+    static GatherOptions forSensors(const scene::Scene& scene, const PatchMesh& mesh);
+    /// A plain gather: patch-constant luminance (no re-gathers, no refinement), every
+    /// patch on its own; the stages that need more set it.
+    static GatherOptions plain();
 };
 
 /// The corner and midpoint values one run of gathers has re-gathered, and how many
@@ -136,7 +130,7 @@ class Gatherer {
     /// sources matter: those bringing at least 1/1000 of it take four visibility rays,
     /// the others one (see gatherWith); 0: two, or four where those disagree.
     Rgb indirectAt(const Vec3& x, const Vec3& n, GatherMemo& memo, double expected = 0) const {
-        return gather(x, n, m_options.levels, 0, memo, expected);
+        return gather(x, n, m_options.gatherLevels, 0, memo, expected);
     }
 
     /// Indirect illuminance of a patch corner (patch, corner index) — lx, RGB. `share`:

@@ -1,11 +1,10 @@
 // Covered patches: a patch with a surface just in front of it — the ceiling above a lamp
 // hung a centimetre below it, the floor under a low shelf. What such a patch receives is
 // not the light of the open surface beside it, so neither the clusters (clusters.h) nor
-// the vertex values (solution.h, edge_vertices.h) mix the two.
+// the vertex values (display/) mix the two.
 #pragma once
 
 #include <core/visibility.h>
-#include <radiosity/display/contact_vertices.h>  // GatherPoint
 #include <radiosity/mesh/patch_mesh.h>
 
 #include <vector>
@@ -20,15 +19,11 @@ constexpr double kCoverLift = 2e-5;
 /// normal is blocked.
 std::vector<char> coveredPatches(const PatchMesh& mesh, const Visibility& vis, double lift);
 
-/// The vertices on the rim of a covered part (mesh.covered: the corners of covered patches
-/// at least `minDiameter` m across that share a corner with an open patch; smaller ones
-/// are an imported mesh's own detail, a cushion pressed on a sofa) that `taken` does not
-/// hold yet, with where to gather their value: at the
-/// vertex (nudged `nudge` m into patchOf[v], its brightest patch) when the vertex itself
-/// is open, else at the nearest open point of its patches (looked for on rings of an
-/// eighth of its patch's diameter, up to one diameter out), since the part of its
-/// triangles one sees lies beside the cover, in the open. `lift`: as for coveredPatches.
-std::vector<GatherPoint> rimVertices(const PatchMesh& mesh, const Visibility& vis, const std::vector<int64_t>& patchOf,
-                                     const std::vector<char>& taken, double minDiameter, double nudge, double lift);
+/// A patch is covered when a surface lies in front of it nearer than this many diameters.
+constexpr double kCoverDiameters = 0.25;
+
+/// True when a surface lies in front of x (normal n) nearer than `reach` m, looking from
+/// `lift` m above it.
+bool coveredAt(const Visibility& vis, const Vec3& x, const Vec3& n, double reach, double lift);
 
 }  // namespace rayrad::radiosity

@@ -304,8 +304,9 @@ double estimatePatchCount(const scene::Scene& scene, const scene::MeshingOptions
 PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& options,
                   const std::function<void(double)>& onProgress) {
     PatchMesh mesh;
-    double edge = targetEdge(scene, options);
+    const double edge = targetEdge(scene, options);
     CHECK(edge > 0);
+    mesh.edgeLength = edge;
     // Room for the estimated count up front: grown by doubling, the arrays would hold up
     // to twice what they need, and three times while they move.
     const double estimate = estimatePatchCount(scene, options);

@@ -28,7 +28,8 @@ PatchMesh meshMirrorBacks(const scene::Scene& scene, const scene::MeshingOptions
 /// about 2 of the real count (contact lines and slivers add some).
 double estimatePatchCount(const scene::Scene& scene, const scene::MeshingOptions& options);
 
-/// The edge length the mesher aims for (resolves the automatic default).
+/// The edge length the mesher aims for (resolves the automatic default); the mesh it makes
+/// carries it (PatchMesh::edgeLength).
 double targetEdge(const scene::Scene& scene, const scene::MeshingOptions& options);
 
 }  // namespace rayrad::radiosity

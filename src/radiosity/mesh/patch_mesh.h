@@ -36,6 +36,9 @@ struct ContactOutline {
 struct PatchMesh {
     std::vector<Vec3> vertices;
     std::vector<Patch> patches;
+    /// The edge length the premesher aimed for, m (radiosity.max_edge, or its default):
+    /// later stages measure "small" against it. 0 for a mesh not made by premesh().
+    double edgeLength = 0;
     /// Texture coordinates (v up) of each patch's corners, 3·i + k; empty when the scene
     /// has no textures ((0, 0) for the patches of untextured surfaces).
     std::vector<glm::vec2> cornerUv;

@@ -133,13 +133,13 @@ std::vector<MirrorImage> enumerateMirrorImages(const std::vector<scene::Mirror>&
 
 std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene, bool* truncated) {
     if (truncated) *truncated = false;
-    if (!scene.solver.mirrorImages) return {};
+    if (!scene.mirrorImages.imageMethod()) return {};
     double area = 0;
     for (const auto& g : scene.groups)
         if (scene.materials[g.material].isDiffuse())
             for (const auto& polygon : g.polygons) area += scene::polygonArea(g.positions, polygon);
     return enumerateMirrorImages(
-        scene.mirrors, {scene.solver.mirrorDepth, scene.solver.mirrorMinWeight, scene.solver.mirrorMinShare, area},
+        scene.mirrors, {scene.mirrorImages.mirrorDepth, scene.mirrorImages.mirrorMinWeight, scene.mirrorImages.mirrorMinShare, area},
         truncated);
 }
 
@@ -147,37 +147,6 @@ ImagePatch imagePatch(const PatchMesh& mesh, const Patch& p, const MirrorImage& 
     ImagePatch out{p, {image.point(mesh.corner(p, 0)), image.point(mesh.corner(p, 1)), image.point(mesh.corner(p, 2))}};
     if (image.reversesWinding()) std::swap(out.corners[1], out.corners[2]);
     computeGeometry(out.corners, out.patch);
-    return out;
-}
-
-ImageCluster imageCluster(const PatchMesh& mesh, const Clustering& clustering, size_t c, const MirrorImage& image) {
-    const Cluster& real = clustering.clusters[c];
-    ImageCluster out;
-    out.cluster = real;
-    out.mesh.vertices.reserve(3 * real.patches.size());
-    out.mesh.patches.reserve(real.patches.size());
-    for (size_t k = 0; k < real.patches.size(); ++k) {
-        ImagePatch p = imagePatch(mesh, mesh.patches[real.patches[k]], image);
-        const uint32_t first = static_cast<uint32_t>(out.mesh.vertices.size());
-        out.mesh.vertices.insert(out.mesh.vertices.end(), p.corners.begin(), p.corners.end());
-        p.patch.v = {first, first + 1, first + 2};
-        out.mesh.patches.push_back(p.patch);
-        out.cluster.patches[k] = static_cast<uint32_t>(k);
-    }
-    Cluster& C = out.cluster;
-    C.centroid = image.point(real.centroid);
-    C.normal = image.direction(real.normal);
-    for (int a = 0; a < 3 && clustering.voxelSize > 0; ++a)
-        C.voxel[a] = static_cast<int>(std::floor((C.centroid[a] - clustering.origin[a]) / clustering.voxelSize));
-    C.samples = out.local(real, real.samples);
-    return out;
-}
-
-ClusterSamples ImageCluster::local(const Cluster& real, const ClusterSamples& samples) const {
-    ClusterSamples out{};
-    for (size_t m = 0; m < samples.size(); ++m)
-        out[m] = static_cast<uint32_t>(std::find(real.patches.begin(), real.patches.end(), samples[m]) -
-                                       real.patches.begin());
     return out;
 }
 
@@ -348,16 +317,6 @@ std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scen
         views.push_back(std::move(view));
     }
     return views;
-}
-
-std::vector<char> clustersFacing(const scene::Mirror& mirror, const PatchMesh& mesh, const Clustering& clustering) {
-    std::vector<char> facing;
-    facing.reserve(clustering.clusters.size());
-    for (const Cluster& C : clustering.clusters)
-        facing.push_back(std::any_of(C.patches.begin(), C.patches.end(), [&](uint32_t i) {
-            return mirror.facedBy(mesh.patches[i].centroid, mesh.patches[i].normal);
-        }));
-    return facing;
 }
 
 }  // namespace rayrad::radiosity

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <core/visibility.h>
-#include <radiosity/clusters/clusters.h>
 #include <radiosity/mesh/patch_mesh.h>
 #include <scene/scene.h>
 
@@ -92,18 +91,6 @@ struct ImagePatch {
 };
 ImagePatch imagePatch(const PatchMesh& mesh, const Patch& p, const MirrorImage& image);
 
-/// One cluster as an image shows it, with its own copy of its members: `mesh` holds
-/// them alone, member k as patch k, so `cluster.patches` is 0 … m−1 (the real cluster's
-/// order). Centroid and normal mirrored, the voxel recomputed on the real grid (it may
-/// lie outside it). What a shot from an image works with: O(members), built per shot.
-struct ImageCluster {
-    PatchMesh mesh;
-    Cluster cluster;
-    /// The real cluster's patch indices (e.g. from powerSamples) as positions in `mesh`.
-    ClusterSamples local(const Cluster& real, const ClusterSamples& samples) const;
-};
-ImageCluster imageCluster(const PatchMesh& mesh, const Clustering& clustering, size_t c, const MirrorImage& image);
-
 class MirrorPath;
 
 /// The part of polygon `source` (in the image's space, behind the chain's last mirror)
@@ -132,12 +119,6 @@ struct MirrorView {
 /// `truncated` as for enumerateMirrorImages().
 std::vector<std::unique_ptr<MirrorView>> mirrorViewsFor(const scene::Scene& scene, const Visibility& vis,
                                                         bool* truncated = nullptr);
-
-/// Per cluster, whether some member faces `mirror` (its centroid in front of the mirror's
-/// plane, its front turned toward the polygon: scene::Mirror::facedBy). A cluster none of
-/// whose members face a chain's first mirror sends no light into that image; one none of
-/// whose members face its last mirror receives none from it.
-std::vector<char> clustersFacing(const scene::Mirror& mirror, const PatchMesh& mesh, const Clustering& clustering);
 
 /// Visibility through a mirror chain, as an adaptor of the scene's: `visible(a, b)` is
 /// true when one end is an image point (behind the last mirror) and the other a real

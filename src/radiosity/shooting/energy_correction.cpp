@@ -35,7 +35,7 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
     V shotSoFar = m_light[c].total - m_light[c].unshot;
     Correction moved;
     SplitTransfer split;
-    const double t = clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_options.analyticDistance,
+    const double t = clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_analyticDistance,
                                      m_clusterOptions.receiverDetail, &from.geometry, &split);
     V received = shotSoFar * s.weight * (split.partial ? split.open : t);
     if (received != V(0.0)) {

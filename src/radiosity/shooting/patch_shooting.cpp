@@ -78,7 +78,7 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s
                 const Patch& src = from.mesh().patches[i];
                 Vec3 d = src.centroid - rec.centroid;  // both must face each other
                 if (glm::dot(rec.normal, d) <= 0 || glm::dot(src.normal, d) >= 0) continue;
-                const double f = patchFormFactor(from.mesh(), src, rec.centroid, rec.normal, m_options.analyticDistance);
+                const double f = patchFormFactor(from.mesh(), src, rec.centroid, rec.normal, m_analyticDistance);
                 if (f <= 0) continue;
                 const V e = amount[k] * s.weight * (kPi * f);  // ΔE = Ks π ΔL F
                 if (!shared) {

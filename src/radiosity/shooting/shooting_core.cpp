@@ -30,10 +30,11 @@ constexpr size_t kGroupSize = 8;
 
 template <class V>
 ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                              const Visibility& vis, const scene::SolverOptions& solver,
-                              const scene::ClusterOptions& clusters)
-    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(solver),
-      m_clusterOptions(clusters) {
+                              const Visibility& vis)
+    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(scene.shooting),
+      m_analyticDistance(scene.formFactors.analyticDistance),
+      m_mirrorImages(scene.mirrorImages.mirrors == scene::MirrorImageOptions::Mode::Image),
+      m_clusterOptions(scene.clusters) {
     m_reflectance.reserve(mesh.patches.size());
     m_patchArea.reserve(mesh.patches.size());
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
@@ -53,7 +54,7 @@ ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, 
     if (clustering.enabled) m_touching = touchingClusters(mesh, clustering, vis, 1e-6 * scene.diagonal());
     m_sources.push_back({&vis, V(1.0), nullptr, {}, {}});
     m_mirrorViews = mirrorViewsFor(scene, vis, &m_mirrorChainsTruncated);
-    if (m_options.mirrorImages)
+    if (m_mirrorImages)
         for (const auto& m : scene.mirrors) m_mirrorBacks.emplace_back(m.polygon.rbegin(), m.polygon.rend());
     for (const auto& view : m_mirrorViews) {
         // A cluster whose members all face away from the chain's ends takes no part.
@@ -91,7 +92,7 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     std::string conservationOff = !m_options.conserveEnergy                          ? "radiosity.conserve_energy"
                                   : m_stats.escapeFraction >= kClosedEscapeFraction ? "open scene"
                                   : m_scene.mirrors.empty()                         ? ""
-                                  : !m_options.mirrorImages                         ? "mirrors ignored"
+                                  : !m_mirrorImages                         ? "mirrors ignored"
                                   : m_mirrorChainsTruncated ? "mirror chains cut by mirror_depth, mirror_min_weight or mirror_min_share"
                                                             : "";
     m_conserve = conservationOff.empty();
@@ -349,7 +350,7 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
                 }
                 SplitTransfer parts;
                 double t = clusterTransfer(from.mesh(), Cs, localSamples[si], m_mesh, D, *s.vis,
-                                           m_options.analyticDistance, m_clusterOptions.receiverDetail, &from.geometry,
+                                           m_analyticDistance, m_clusterOptions.receiverDetail, &from.geometry,
                                            &parts);
                 bool carried = false;
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V

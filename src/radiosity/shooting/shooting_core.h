@@ -7,7 +7,11 @@
 #include <radiosity/clusters/far_field.h>
 #include <radiosity/clusters/member_tree.h>
 #include <radiosity/mirrors/mirror_images.h>
-#include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/clusters/image_clusters.h>
+#include <radiosity/shooting/shooting_statistics.h>
+#include <radiosity/solution/solution.h>
+#include <scene/scene.h>
+#include <scene/settings.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,8 +51,7 @@ class ShootingCoreBase {
 template <class V>
 class ShootingCore final : public ShootingCoreBase {
   public:
-    ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering, const Visibility& vis,
-                 const scene::SolverOptions& solver, const scene::ClusterOptions& clusters);
+    ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering, const Visibility& vis);
 
     void initialize(RadiositySolution& s) override;
     bool step(RadiositySolution& s, bool sync) override;
@@ -220,7 +223,9 @@ class ShootingCore final : public ShootingCoreBase {
     const PatchMesh& m_mesh;
     const Clustering& m_clustering;
     const Visibility& m_vis;
-    scene::SolverOptions m_options;
+    scene::ShootingOptions m_options;  ///< overshoot is switched off when the residual stalls
+    double m_analyticDistance;          ///< scene.formFactors.analyticDistance
+    bool m_mirrorImages;                ///< scene.mirrorImages: the image method on
     scene::ClusterOptions m_clusterOptions;
     double m_maxStep = 0;
     std::vector<V> m_reflectance, m_direct, m_indirect, m_unshot, m_pending;

@@ -20,13 +20,12 @@ bool isGreyScene(const scene::Scene& scene, const PatchMesh& mesh) {
 }
 
 ShootingSolver::ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                               const Visibility& vis, const scene::SolverOptions& solver,
-                               const scene::ClusterOptions& clusters)
-    : m_singleChannel(solver.oneChannelWhenGrey && isGreyScene(scene, mesh)) {
+                               const Visibility& vis)
+    : m_singleChannel(scene.shooting.oneChannelWhenGrey && isGreyScene(scene, mesh)) {
     if (m_singleChannel)
-        m_core = std::make_unique<ShootingCore<double>>(scene, mesh, clustering, vis, solver, clusters);
+        m_core = std::make_unique<ShootingCore<double>>(scene, mesh, clustering, vis);
     else
-        m_core = std::make_unique<ShootingCore<Rgb>>(scene, mesh, clustering, vis, solver, clusters);
+        m_core = std::make_unique<ShootingCore<Rgb>>(scene, mesh, clustering, vis);
 }
 
 ShootingSolver::~ShootingSolver() = default;
@@ -82,24 +81,6 @@ void ShootingSolver::solve(RadiositySolution& s, const PushPullHook& onPushPull,
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - paused;
     report(true);
     if (onProgress) onProgress(s);
-}
-
-EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& s,
-                            double emittedFlux) {
-    EnergyBalance b;
-    b.emitted = emittedFlux;
-    for (size_t i = 0; i < mesh.patches.size(); ++i) {
-        const Patch& p = mesh.patches[i];
-        const Rgb rho = patchReflectance(scene, mesh, i);
-        Rgb e = s.directMean[i] + (s.indirect.empty() ? Rgb(0.0) : s.indirect[i]);
-        b.absorbed += luminance((Rgb(1.0) - rho) * e) * p.area;
-        b.directReceived += luminance(s.directMean[i]) * p.area;
-    }
-    b.unshot = s.unshotNetFlux;
-    b.mirrorAbsorbedDirect = s.mirrorAbsorbedDirect;
-    b.backAbsorbed = s.backAbsorbedDirect;
-    b.mirrorAbsorbed = s.mirrorAbsorbedDirect + s.mirrorAbsorbedSecondary;
-    return b;
 }
 
 }  // namespace rayrad::radiosity

@@ -3,19 +3,15 @@
 // the fall-off into a room's edges that linear interpolation between vertices misses.
 #pragma once
 
-#include <core/visibility.h>
-#include <radiosity/clusters/clusters.h>
+#include <core/math.h>
 #include <radiosity/mesh/patch_mesh.h>
-#include <scene/scene.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace rayrad::radiosity {
-
-struct RadiositySolution;
 
 /// Near a concave seam the indirect light rises like d·ln(1/d) with the distance d from the
 /// seam (the neighbouring wall's luminance rises linearly from the seam, and the form
@@ -38,6 +34,8 @@ struct RadiositySolution;
 class SeamProfiles {
   public:
     static constexpr int kNodes = 5;  ///< τ = 1/2, 1/4, 1/8, 1/16, 1/32
+    /// τ_k = 2^−(k+1) of node k = 0 … kNodes − 1.
+    static double nodeTau(int k) { return std::ldexp(1.0, -(k + 1)); }
     /// The correction along the edge from seam vertex `from` to vertex `to`: δ at τ_k (lx).
     struct Edge {
         uint32_t from = 0, to = 0;
@@ -76,25 +74,5 @@ class SeamProfiles {
     std::vector<int32_t> m_patchIndex;  ///< per patch: into m_patches, −1 none (empty before index())
     std::vector<PatchProfiles> m_patches;
 };
-
-/// Gathers the profiles of every edge at least `minEdge` m long that leaves one of
-/// `seamVertices` (sorted) for a vertex that is not one. A node's δ comes from near-field
-/// gathers alone (the patches near the edge, linear from the solution's vertex values):
-/// δ(x) = near(x) − ((1 − τ) near(s) + τ near(t)); the light from farther is linear along
-/// the edge to second order. Two rounds, the second with the first round's display values
-/// refining the near patches (the other wall's band). A profile stops early where the
-/// correction at a node is below kSeamProfileTolerance of the light there (the nodes below
-/// it then interpolate to 0 at the seam), and one whose first node is below four times
-/// it takes no second round. `levels` nodes at most (≤ kNodes). Parallel over edges;
-/// each gather serial, so the result does not depend on the thread count. `gathers`
-/// (optional) counts the near-field gathers taken.
-SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                                const RadiositySolution& solution, const Visibility& vis,
-                                const std::vector<uint32_t>& seamVertices, double minEdge, int levels,
-                                size_t* gathers = nullptr, const std::function<void(double)>& onProgress = {});
-
-/// A profile's nodes stop where |δ| falls below this fraction of the gathered light (the
-/// luminance of each): below it the band is not worth a gather (0.5 %).
-constexpr double kSeamProfileTolerance = 0.005;
 
 }  // namespace rayrad::radiosity

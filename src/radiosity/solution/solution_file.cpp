@@ -208,11 +208,16 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     // Every setting the direct pass, the shooting, the reconstruction or the seam vertices
     // read (a setting added to them must be added here).
     Hash s;
-    const auto& o = scene.solver;
-    s << o.stopUnshot << o.maxShots << o.maxSeconds << o.analyticDistance << o.areaLightSamples << o.gatherLevels
-      << o.gatherRefineLevels << o.gatherRefineTolerance << o.gatherFarDiameters << o.shootFarDiameters << o.gatherMinWeight
-      << o.linearReconstruction << o.edgeGatherLevels << o.seamProfileNodes << o.mirrorImages << o.mirrorDepth << o.mirrorMinWeight
-      << o.mirrorMinShare << o.conserveEnergy << o.overshoot << o.oneChannelWhenGrey;
+    const auto& shoot = scene.shooting;
+    const auto& gather = scene.gather;
+    const auto& rec = scene.reconstruction;
+    const auto& mirrors = scene.mirrorImages;
+    s << shoot.stopUnshot << shoot.maxShots << shoot.maxSeconds << scene.formFactors.analyticDistance
+      << scene.direct.areaLightSamples << gather.gatherLevels << gather.gatherRefineLevels << gather.gatherRefineTolerance
+      << gather.gatherFarDiameters << shoot.shootFarDiameters << gather.gatherMinWeight << rec.linear()
+      << rec.edgeGatherLevels << rec.seamProfileNodes << mirrors.imageMethod() << mirrors.mirrorDepth
+      << mirrors.mirrorMinWeight << mirrors.mirrorMinShare << shoot.conserveEnergy << shoot.overshoot
+      << shoot.oneChannelWhenGrey;
     const auto& c = scene.clusters;
     s << c.enabled << c.voxelSize << c.patchesPerCluster << c.sizePercent << c.referenceArea << c.normalToleranceDeg
       << c.maxIlluminanceStep << c.energyCorrection << c.receiverDetail << c.pushPullFraction;
