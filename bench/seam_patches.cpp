@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
     const double solveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     radiosity::GatherOptions exact = radiosity::GatherOptions::plain();  // every patch on its own: levels 0, no far nodes, no shared rays
     exact.sharedRays = false;
-    const radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree, exact);
+    const radiosity::Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree, exact);
     radiosity::GatherMemo memo;
     // (surface, mm from the seam rounded to 0.1) → relative differences, %
     std::map<std::pair<std::string, double>, std::vector<double>> rows;
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
         const double mm = std::round(10000 * (wall ? kCeilingY - p.centroid.y : kBackZ - p.centroid.z)) / 10;
         const double gathered = luminance(gatherer.indirectAt(p.centroid, p.normal, memo));
         if (gathered > 0)
-            rows[{wall ? "back wall" : "ceiling", mm}].push_back(100 * (luminance(run.solution.indirect[i]) / gathered - 1));
+            rows[{wall ? "back wall" : "ceiling", mm}].push_back(100 * (luminance(run.lighting.solution.indirect[i]) / gathered - 1));
     }
     fmt::print("patches beside the Cornell ceiling's seam with the back wall: the solve's E_P against the exact sum at "
                "the centroid (solve {:.1f} s wall, {} patches)\n",

@@ -136,10 +136,10 @@ int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstS
     fmt::print("gathered indirect against the reference: RMS {:.3f} %, mean {:+.3f} %, max {:+.3f} % at {}\n",
                100 * std::sqrt(sum2 / n), 100 * sum / n, 100 * worst, toString(worstAt));
     fmt::print("solve {:.2f} CPU-s; sensor stage {:.2f} CPU-s ({:.2f} s wall, {} gathers): {:.2f} x the solve\n",
-               solveCpu, sensorCpu, sensorWall, run.sensorGathers, sensorCpu / solveCpu);
+               solveCpu, sensorCpu, sensorWall, run.lighting.sensorGathers, sensorCpu / solveCpu);
     fmt::print("the outer ring of cells alone, beside the side walls ({} sensors, a run of its own): "
                "{:.2f} CPU-s, {} gathers\n",
-               ringCount, ringCpu, ringRun.sensorGathers);
+               ringCount, ringCpu, ringRun.lighting.sensorGathers);
     return 0;
 }
 

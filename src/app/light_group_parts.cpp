@@ -30,7 +30,7 @@ LightGroupParts solveLightGroups(const std::string& sceneFile, const PipelineOpt
         o.overrides = base.overrides;
         // The full solve's ΔI_max, not one derived from this group's own (dimmer) light:
         // every group's transfers are then refined to the same absolute accuracy.
-        o.overrides.push_back({"clusters.max_illuminance_step_lx", fmt::format("{:.17g}", full.maxIlluminanceStep)});
+        o.overrides.push_back({"clusters.max_illuminance_step_lx", fmt::format("{:.17g}", full.lighting.maxIlluminanceStep)});
         o.quiet = true;
         o.lightGroup = groups[g];
         if (!base.quiet) fmt::print(stderr, "light group {} ({} of {}): solving\n", groupName(groups[g]), g + 1, groups.size());
@@ -39,7 +39,7 @@ LightGroupParts solveLightGroups(const std::string& sceneFile, const PipelineOpt
         std::vector<radiosity::SensorValue> values;
         for (const auto& s : run.sensors) values.push_back(s.value);
         out.parts.push_back(std::move(values));
-        if (keepSolutions) out.solutions.push_back({groups[g], std::move(run.solution)});
+        if (keepSolutions) out.solutions.push_back({groups[g], std::move(run.lighting.solution)});
     }
     return out;
 }

@@ -4,7 +4,7 @@
 
 #include <app/pipeline.h>
 #include <app/sensor_table.h>
-#include <radiosity/solution/solution_file.h>
+#include <radiosity/radiosity.h>
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #include <app/lit_mesh_export.h>
 
 #include <app/walkthrough.h>
-#include <radiosity/mesh/patch_reflectance.h>
+#include <radiosity/radiosity.h>
 #include <scene/gltf_writer.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -35,7 +35,7 @@ std::optional<scene::GlbCamera> glbCamera(const scene::Scene& s) {
 std::string exportLitMesh(const PipelineRun& run, const tonemap::DisplayOptions& display, double adaptation,
                           const std::string& sceneFile) {
     const auto& mesh = run.mesh;
-    const auto& solution = run.solution;
+    const auto& solution = run.lighting.solution;
     // E_direct at each vertex: the mean of its patches' corner values (vertices are shared
     // only within a surface group, which has one material).
     // ρ likewise: the mean of the patches' (a texture's mean where textured).

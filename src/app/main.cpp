@@ -14,7 +14,7 @@
 #include <app/walkthrough.h>
 #include <app/sweep.h>
 #include <app/lit_mesh_export.h>
-#include <radiosity/solution/solution_file.h>
+#include <radiosity/radiosity.h>
 #include <app/validate_sphere.h>
 #include <app/sensor_table.h>
 #include <app/solve_summary.h>
@@ -22,8 +22,6 @@
 #include <core/output_file.h>
 #include <core/result_error.h>
 #include <core/text.h>
-#include <radiosity/direct/direct_light.h>
-#include <radiosity/shooting/shooting_solver.h>
 #include <tonemap/display_transform.h>
 #include <tonemap/image_io.h>
 
@@ -86,7 +84,7 @@ int runSolve(const CommonArgs& a, const std::string& csv, const app::ReportArgs&
     // groups are dimmed can be rendered from it.
     auto groups = app::reportSensors(run, a.scene, o, csvs, files, !save.empty());
     if (!save.empty())
-        files.set(save, radiosity::encodeSolution(run.solution, radiosity::fingerprintOf(run.scene, run.mesh),
+        files.set(save, radiosity::encodeSolution(run.lighting.solution, radiosity::fingerprintOf(run.scene, run.mesh),
                                                   run.mesh.vertices.size(),
                                                   groups ? groups->solutions : std::vector<radiosity::GroupSolution>{}));
     if (groups && run.sensors.empty()) groups.reset();  // parts for the file only

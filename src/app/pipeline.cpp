@@ -1,36 +1,18 @@
 #include <app/pipeline.h>
 
-#include <radiosity/mesh/contact_outlines.h>
-#include <radiosity/mesh/patch_reflectance.h>
-#include <radiosity/mesh/shading_normals.h>
-#include <tonemap/texture_images.h>
-
+#include <app/grid_statistics.h>
+#include <app/image_output.h>
 #include <app/problem_size.h>
-
 #include <app/scene_warnings.h>
-
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <core/progress.h>
-#include <radiosity/direct/direct_pass.h>
-#include <scene/light_groups.h>
-#include <radiosity/display/edge_vertices.h>
-#include <radiosity/display/vertex_reconstruction.h>
-#include <radiosity/display/seam_profile_gathers.h>
-#include <radiosity/gather/gather.h>
-#include <radiosity/gather/sensors.h>
-#include <radiosity/solution/solution_file.h>
-#include <radiosity/mesh/covered_patches.h>
-#include <radiosity/mesh/mesher.h>
-#include <radiosity/shooting/shooting_solver.h>
 #include <raytrace/camera.h>
 #include <raytrace/ray_tracer.h>
-
-#include <app/grid_statistics.h>
-#include <app/image_output.h>
+#include <scene/light_groups.h>
+#include <tonemap/texture_images.h>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <optional>
@@ -51,6 +33,11 @@ scene::Scene loadSceneFile(const std::string& file, const std::vector<scene::Ove
 }
 
 namespace {
+
+/// Where the radiosity stage reports its sub-stages: the run's stage table and skip list.
+radiosity::StageLog stageLog(PipelineRun& run, const PipelineOptions& options) {
+    return {&run.report, &run.skipped, options.quiet};
+}
 
 /// The shading normals, made before the first image (images only: the radiosity and the
 /// sensors use the triangles' own normals).
@@ -80,7 +67,7 @@ class PushPullObserver {
         for (const auto& s : run.scene.sensors)
             if (s.refIndirect) {
                 m_sensors.push_back({&s, radiosity::locateOnMesh(run.mesh, s.position, s.normal,
-                                                                 1e-6 * run.scene.diagonal(), run.embree.get())});
+                                                                 radiosity::pointNudge(run.scene), run.embree.get())});
                 run.convergenceSensors.push_back(s.name);
             }
     }
@@ -97,7 +84,7 @@ class PushPullObserver {
         bool snapshot = snapshotDue(solution);
         if (!log && !snapshot) return;
         radiosity::RadiositySolution copy = solution;
-        radiosity::reconstructVertices(m_run.mesh, copy, m_run.scene.reconstruction.linear());
+        radiosity::reconstructVertexValues(m_run.scene, m_run.mesh, copy);
         if (log) logRow(copy, fraction, last);
         if (snapshot) writeSnapshot(copy);
     }
@@ -123,7 +110,7 @@ class PushPullObserver {
         std::optional<radiosity::Gatherer> gatherer;
         if (gather) {
             m_lastGatherFraction = fraction;
-            gatherer.emplace(m_run.scene, m_run.mesh, m_run.clustering, copy, *m_run.embree,
+            gatherer.emplace(m_run.scene, m_run.mesh, m_run.lighting.clustering, copy, *m_run.embree,
                              radiosity::GatherOptions::forSensors(m_run.scene, m_run.mesh));
         }
         radiosity::GatherMemo memo;  // the row's sensors share their re-gathers, as a run of the sensor stage does
@@ -133,7 +120,7 @@ class PushPullObserver {
             row.vertexErrorPct.push_back(vertex ? errorPct(*vertex, s->refIndirect) : std::nullopt);
             std::optional<double> gathered;
             if (gatherer) {
-                Vec3 x = where ? radiosity::nudgeInside(m_run.mesh, where->patch, s->position, 1e-6 * m_run.scene.diagonal())
+                Vec3 x = where ? radiosity::nudgeInside(m_run.mesh, where->patch, s->position, radiosity::pointNudge(m_run.scene))
                                : s->position;
                 gathered = errorPct(luminance(gatherer->indirectAt(x, s->normal, memo)), s->refIndirect);
             }
@@ -146,7 +133,7 @@ class PushPullObserver {
         ensureShadingNormals(m_run);
         raytrace::ImageCamera camera(*m_run.scene.camera);
         raytrace::DisplayAverage forDisplay{displayCompression(m_run.scene, m_run.mesh, copy), {}};
-        HdrImage image = raytrace::render(m_run.scene, m_run.mesh, copy, *m_run.lights, *m_run.embree, camera,
+        HdrImage image = raytrace::render(m_run.scene, m_run.mesh, copy, *m_run.lighting.lights, *m_run.embree, camera,
                                           m_run.scene.render, {}, &forDisplay);
         std::vector<std::string> paths;
         for (const auto& p : m_options.snapshotOutputs) paths.push_back(snapshotPath(p, m_nextSnapshot));
@@ -165,30 +152,6 @@ class PushPullObserver {
     int m_nextSnapshot = 1;
 };
 
-void solveSecondary(PipelineRun& run, const PipelineOptions& options) {
-    radiosity::ShootingSolver solver(run.scene, run.mesh, run.clustering, *run.embree);
-    solver.initialize(run.solution);
-    Progress progress("secondary pass", options.quiet);
-    PushPullObserver observer(run, options);
-    radiosity::ShootingSolver::PushPullHook hook{[&](const auto& s) { return observer.wants(s); }, std::ref(observer)};
-    solver.solve(run.solution, hook, [&](const radiosity::RadiositySolution& s) {
-        // Progress in log space from the first reflection down to the stopping threshold
-        // (radiosity.stop_unshot × the emitted flux).
-        if (!(s.initialUnshotFlux > 0)) return;  // nothing to shoot: converged at once
-        const double left = s.remainingUnshotFlux / s.initialUnshotFlux;
-        const double target = run.scene.shooting.stopUnshot * s.unshotReference() / s.initialUnshotFlux;
-        const double done = left > 0 && target < 1 ? std::log(left) / std::log(target) : 1.0;
-        progress.update(done, fmt::format("{} shots, unshot {:.3g}%", s.shots, 100 * s.unshotFraction()));
-    });
-    run.shooting = solver.statistics();
-    run.maxIlluminanceStep = solver.maxIlluminanceStep();
-    run.singleChannel = solver.singleChannel();
-}
-
-}  // namespace
-
-namespace {
-
 scene::Camera findView(const scene::Scene& scene, const std::string& name) {
     for (const auto& v : scene.views)
         if (v.name == name) return v.camera;
@@ -201,80 +164,31 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
     ensureShadingNormals(run);
     raytrace::ImageCamera camera(cam);
     Progress progress(label, options.quiet);
-    raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, run.solution), {}};
+    const radiosity::RadiositySolution& solution = run.lighting.solution;
+    raytrace::DisplayAverage forDisplay{displayCompression(run.scene, run.mesh, solution), {}};
     // render.indirect "gather": a final gather at each hit, as at a sensor.
-    std::optional<radiosity::Gatherer> gatherer;
-    if (run.scene.render.gatherIndirect && run.scene.hasReflectance()) {
-        if (run.clustering.clusters.empty())  // a saved solution without sensors: not built yet
-            run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
-        gatherer.emplace(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                         radiosity::GatherOptions::forSensors(run.scene, run.mesh));
-    }
-    HdrImage image = raytrace::render(run.scene, run.mesh, run.solution, *run.lights, *run.embree, camera, run.scene.render,
+    std::unique_ptr<radiosity::Gatherer> gatherer;
+    if (run.scene.render.gatherIndirect && run.scene.hasReflectance())
+        gatherer = radiosity::sensorGatherer(run.scene, run.mesh, *run.embree, run.lighting,
+                                             {nullptr, nullptr, options.quiet});  // timed as part of the ray trace
+    HdrImage image = raytrace::render(run.scene, run.mesh, solution, *run.lighting.lights, *run.embree, camera, run.scene.render,
                                       [&](double f) { progress.update(f); },
-                                      &forDisplay, options.rowBegin, options.rowEnd, gatherer ? &*gatherer : nullptr);
+                                      &forDisplay, options.rowBegin, options.rowEnd, gatherer.get());
     return {std::move(image), std::move(forDisplay.image)};
 }
 
-/// The direct pass, the clusters, the secondary pass and the vertex values.
-void solveLighting(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options, bool wantGather) {
-    run.report.begin(run.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
-                                                        run.lights->virtualLightCount(), run.mirrorImages)
-                                          : std::string("direct light"));
-    {
-        Progress progress("direct light", options.quiet);
-        radiosity::computeDirect(run.scene, run.mesh, *run.lights, *run.embree, run.scene.direct.areaLightSamples,
-                                 run.solution, [&](double f) { progress.update(f); });
-    }
-    if (auto w = backLightWarning(run.scene, run.solution, run.lights->emittedFlux())) {
+/// The radiosity stage: the direct light, the indirect light, the display values.
+void solveLighting(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options) {
+    const radiosity::StageLog log = stageLog(run, options);
+    run.lighting = radiosity::solveDirect(run.scene, run.mesh, *run.embree, log);
+    if (auto w = backLightWarning(run.scene, run.lighting.solution, run.lighting.lights->emittedFlux())) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, *w);
         run.warnings.push_back(*w);
     }
-
-    if (run.scene.hasReflectance() || wantGather) {  // both the shooting and the gather use them
-        run.report.begin("clusters");
-        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
-    }
-    if (run.scene.hasReflectance()) {
-        run.report.begin("secondary pass (shooting)");
-        solveSecondary(run, options);
-        run.report.begin("reconstruct vertices");
-        radiosity::reconstructVertices(run.mesh, run.solution, run.scene.reconstruction.linear());
-        if (run.scene.reconstruction.edgeGatherLevels > 0) {
-            Progress progress("seam vertices", options.quiet);
-            run.edgeVertices = radiosity::gatherEdgeVertices(run.scene, run.mesh, run.clustering, run.solution,
-                                                             *run.embree, run.scene.reconstruction.edgeGatherLevels,
-                                                             [&](double f) { progress.update(f); });
-        }
-        if (run.scene.reconstruction.seamProfileNodes > 0 && !run.edgeVertices.seamVertices.empty()) {
-            Progress progress("seam profiles", options.quiet);
-            // Edges as short as an input mesh's own detail are left linear, as the contacts are.
-            const double minEdge = radiosity::kContactMinEdges * run.mesh.edgeLength;
-            run.solution.seamProfiles = radiosity::gatherSeamProfiles(
-                run.scene, run.mesh, run.clustering, run.solution, *run.embree, run.edgeVertices.seamVertices, minEdge,
-                run.scene.reconstruction.seamProfileNodes, &run.seamProfileGathers, [&](double f) { progress.update(f); });
-        }
-    } else {
-        // Nothing reflects: the solution is complete with no indirect light at all.
-        run.solution.indirect.assign(run.mesh.patches.size(), Rgb(0.0));
-        run.solution.converged = true;
-        radiosity::reconstructVertices(run.mesh, run.solution);
-        run.skipped.push_back("secondary pass (no surface reflects light)");
-    }
-}
-
-/// A saved solution in place of the solve (render --solution): checked against the scene.
-void loadSolution(PipelineRun& run, const PipelineOptions& options, bool wantGather) {
-    run.report.begin("load solution");
-    const std::string bytes = readInputFile(options.solutionFile, "solution file", size_t(1) << 40);
-    run.solution = radiosity::decodeSolution(bytes, options.solutionFile, radiosity::fingerprintOf(run.scene, run.mesh),
-                                             run.mesh.patches.size(), run.mesh.vertices.size());
-    run.solution.seamProfiles.index(run.mesh);
-    run.skipped.push_back("direct light and secondary pass (solution read from " + options.solutionFile + ")");
-    if (wantGather) {
-        run.report.begin("clusters");
-        run.clustering = radiosity::buildClusters(run.scene, run.mesh, run.scene.clusters, run.embree.get());
-    }
+    PushPullObserver observer(run, options);
+    radiosity::solveIndirect(run.scene, run.mesh, *run.embree, run.lighting, log,
+                             {[&](const auto& s) { return observer.wants(s); }, std::ref(observer)});
+    radiosity::reconstructDisplay(run.scene, run.mesh, *run.embree, run.lighting, log);
 }
 
 }  // namespace
@@ -304,21 +218,14 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 
 PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options) {
     PipelineRun run;
+    const radiosity::StageLog log = stageLog(run, options);
     run.report.begin("parse + build scene");
     run.scene = buildSceneFrom(desc);
     if (options.lightGroup) scene::keepLightGroup(run.scene, *options.lightGroup);
     if (!options.view.empty()) run.scene.camera = findView(run.scene, options.view);
 
     checkPatchCount(sceneFile, run.scene);
-    run.report.begin("premesh");
-    {
-        Progress progress("premesh", options.quiet);
-        run.mesh = radiosity::premesh(run.scene, run.scene.meshing, [&](double f) { progress.update(f); });
-    }
-    if (!run.scene.textures.empty()) {
-        run.report.begin(fmt::format("texture means ({} images)", run.scene.textures.size()));
-        radiosity::computeTexturedReflectance(run.scene, run.mesh);
-    }
+    run.mesh = radiosity::prepareMesh(run.scene, log);
     // Cost warnings at once: the work they warn of may start next.
     run.warnings = costWarnings(sceneFile, run.scene, run.mesh, options.wantSensors);
     if (!options.quiet)
@@ -326,33 +233,21 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
 
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
-    radiosity::findContactOutlines(run.mesh, *run.embree, radiosity::kContactTolerance * run.scene.diagonal(),
-                                   1e-6 * run.scene.diagonal());
-    run.mesh.covered = radiosity::coveredPatches(run.mesh, *run.embree, radiosity::kCoverLift * run.scene.diagonal());
+    radiosity::findContacts(run.mesh, run.scene, *run.embree);
     for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors)) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
         run.warnings.push_back(std::move(w));
     }
 
-    run.lights = std::make_unique<radiosity::DirectLight>(run.scene);
-    run.mirrorImages = radiosity::mirrorImagesFor(run.scene).size();
-    if (run.scene.mirrors.empty()) run.skipped.push_back("virtual lights and shooters (no mirrors)");
-    else if (!run.scene.mirrorImages.imageMethod()) run.skipped.push_back("virtual lights and shooters (mirrors ignored)");
-    const bool wantGather = options.wantSensors && !run.scene.sensors.empty();
-    if (options.solutionFile.empty()) solveLighting(run, sceneFile, options, wantGather);
-    else loadSolution(run, options, wantGather);
+    if (options.solutionFile.empty()) {
+        solveLighting(run, sceneFile, options);
+    } else {
+        const std::string bytes = readInputFile(options.solutionFile, "solution file", size_t(1) << 40);
+        run.lighting = radiosity::loadSolution(run.scene, run.mesh, bytes, options.solutionFile, log);
+    }
 
-    if (wantGather) {
-        run.report.begin(fmt::format("sensors ({})", run.scene.sensors.size()));
-        radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
-                                     radiosity::GatherOptions::forSensors(run.scene, run.mesh));
-        Progress progress("sensors", options.quiet);
-        const auto values = radiosity::evaluateSensors(
-            run.scene, run.mesh, run.solution, *run.lights, *run.embree, gatherer,
-            [&](size_t done, size_t count) {
-                progress.update(static_cast<double>(done) / count, fmt::format("{} of {}", done, count));
-            },
-            &run.sensorGathers);
+    if (options.wantSensors && !run.scene.sensors.empty()) {
+        const auto values = radiosity::gatherSensors(run.scene, run.mesh, *run.embree, run.lighting, log);
         for (size_t i = 0; i < values.size(); ++i) run.sensors.push_back({run.scene.sensors[i], values[i]});
     } else if (options.wantSensors) {
         run.skipped.push_back("sensors (the scene has none)");

@@ -5,12 +5,7 @@
 #include <core/hdr_image.h>
 #include <core/output_file.h>
 #include <core/stage_report.h>
-#include <radiosity/clusters/clusters.h>
-#include <radiosity/direct/direct_light.h>
-#include <radiosity/display/edge_vertices.h>
-#include <radiosity/shooting/shooting_solver.h>
-#include <radiosity/mesh/patch_mesh.h>
-#include <radiosity/solution/solution.h>
+#include <radiosity/radiosity.h>
 #include <raytrace/embree_scene.h>
 #include <scene/scene.h>
 #include <scene/scene_parser.h>
@@ -67,18 +62,9 @@ struct ConvergenceRow {
 struct PipelineRun {
     scene::Scene scene;
     radiosity::PatchMesh mesh;
-    radiosity::Clustering clustering;
-    radiosity::ShootingStatistics shooting;
-    double maxIlluminanceStep = 0;  ///< ΔI_max used, lx
-    size_t mirrorImages = 0;        ///< image chains used by the image method
-    radiosity::GatheredVertices edgeVertices;  ///< vertices whose value came from a point gather
-    size_t seamProfileGathers = 0;  ///< point gathers the seam profiles took (seam_profiles.h)
-    size_t sensorGathers = 0;       ///< point gathers the sensors took (their own and every re-gather)
-    bool singleChannel = false;     ///< the scene is grey: one channel was solved
     bool shadingNormals = false;    ///< mesh.cornerNormal computed (before the first ray trace)
     std::unique_ptr<raytrace::EmbreeScene> embree;
-    std::unique_ptr<radiosity::DirectLight> lights;
-    radiosity::RadiositySolution solution;
+    radiosity::Lighting lighting;   ///< the lights, clusters and solution, and the solve's counts
     std::vector<SensorResult> sensors;
     std::optional<HdrImage> image;         ///< cd/m², the plain average of each pixel's samples (EXR, numbers)
     std::optional<HdrImage> displayImage;  ///< the range-compressed average display images are made from

@@ -1,8 +1,7 @@
 #include <app/problem_size.h>
 
 #include <core/input_error.h>
-#include <radiosity/clusters/clusters.h>
-#include <radiosity/mesh/mesher.h>
+#include <radiosity/radiosity.h>
 
 #include <fmt/format.h>
 
@@ -34,9 +33,8 @@ std::string voxelSetting(const scene::ClusterOptions& o) {
 }  // namespace
 
 double checkPatchCount(const std::string& file, const scene::Scene& scene) {
-    const double estimate = radiosity::estimatePatchCount(scene, scene.meshing);
+    const auto [estimate, edge] = radiosity::estimateMesh(scene);
     if (estimate <= scene.meshing.maxPatches) return estimate;
-    const double edge = radiosity::targetEdge(scene, scene.meshing);
     throw InputError(placeMessage(
         file, scene.meshing.trianglesPerSurface > 0 ? "/radiosity/triangles_per_surface" : "/radiosity/max_edge",
         fmt::format("premeshing to {:.3g} m edges would make about {:.3g} patches (~{:.3g} GiB), more than "

@@ -2,7 +2,7 @@
 // absurd settings are an error naming the setting, costly ones a warning with the figure.
 #pragma once
 
-#include <radiosity/mesh/patch_mesh.h>
+#include <radiosity/radiosity.h>
 #include <scene/scene.h>
 
 #include <string>

@@ -2,8 +2,7 @@
 
 #include <app/grid_statistics.h>
 #include <core/math.h>
-#include <radiosity/solution/energy_balance.h>
-#include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/radiosity.h>
 
 #include <nlohmann/json.hpp>
 
@@ -40,27 +39,27 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
     json j;
     j["scene"] = sceneFile;
     j["patches"] = run.mesh.patches.size();
-    j["clusters"] = {{"enabled", run.clustering.enabled},
-                     {"count", run.clustering.clusters.size()},
-                     {"multi_patch", run.clustering.multiPatchClusters()},
-                     {"voxel_size_m", run.clustering.voxelSize},
-                     {"max_illuminance_step_lx", run.maxIlluminanceStep}};
-    const auto& s = run.solution;
+    j["clusters"] = {{"enabled", run.lighting.clustering.enabled},
+                     {"count", run.lighting.clustering.clusters.size()},
+                     {"multi_patch", run.lighting.clustering.multiPatchClusters()},
+                     {"voxel_size_m", run.lighting.clustering.voxelSize},
+                     {"max_illuminance_step_lx", run.lighting.maxIlluminanceStep}};
+    const auto& s = run.lighting.solution;
     j["solve"] = {{"seconds", s.seconds},
                   {"shots", s.shots},
                   {"converged", s.converged},
                   {"unshot_fraction", s.unshotFraction()},  // of the emitted flux
                   {"first_reflection_lm", s.initialUnshotFlux},
-                  {"cluster_transfers", run.shooting.clusterTransfers},
-                  {"cluster_transfers_split", run.shooting.splitTransfers},
-                  {"image_cluster_transfers", run.shooting.imageTransfers},
-                  {"image_cluster_transfers_carrying_light", run.shooting.imageTransfersLit},
-                  {"patch_pairs", run.shooting.patchPairs},
-                  {"corrections", run.shooting.corrections},
-                  {"push_pulls", run.shooting.pushPulls},
-                  {"channels", run.singleChannel ? 1 : 3}};
-    if (run.lights) {
-        auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
+                  {"cluster_transfers", run.lighting.shooting.clusterTransfers},
+                  {"cluster_transfers_split", run.lighting.shooting.splitTransfers},
+                  {"image_cluster_transfers", run.lighting.shooting.imageTransfers},
+                  {"image_cluster_transfers_carrying_light", run.lighting.shooting.imageTransfersLit},
+                  {"patch_pairs", run.lighting.shooting.patchPairs},
+                  {"corrections", run.lighting.shooting.corrections},
+                  {"push_pulls", run.lighting.shooting.pushPulls},
+                  {"channels", run.lighting.singleChannel ? 1 : 3}};
+    if (run.lighting.lights) {
+        auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lighting.lights->emittedFlux());
         j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"absorbed_by_mirrors", b.mirrorAbsorbed},
                           {"absorbed_on_backs", b.backAbsorbed}, {"unshot", b.unshot},
                           {"not_accounted_pct", 100 * b.relativeError()}};

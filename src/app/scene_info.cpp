@@ -4,9 +4,7 @@
 #include <app/pipeline.h>
 #include <app/problem_size.h>
 #include <app/scene_warnings.h>
-#include <radiosity/clusters/clusters.h>
-#include <radiosity/direct/direct_light.h>
-#include <radiosity/mesh/mesher.h>
+#include <radiosity/radiosity.h>
 #include <raytrace/embree_scene.h>
 #include <scene/photometry.h>
 
@@ -24,7 +22,7 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
     }
     auto scene = app::loadSceneFile(file, overrides);
     const double estimate = app::checkPatchCount(file, scene);
-    auto mesh = radiosity::premesh(scene, scene.meshing);
+    auto mesh = radiosity::prepareMesh(scene, {});
     size_t emissive = 0;
     for (const auto& g : scene.groups)
         if (scene.materials[g.material].isEmissive()) emissive += g.polygons.size();

@@ -1,6 +1,6 @@
 #include <app/scene_warnings.h>
 
-#include <radiosity/gather/gather.h>
+#include <radiosity/radiosity.h>
 #include <raytrace/camera.h>
 #include <scene/polygon.h>
 

@@ -2,8 +2,7 @@
 // solids or behind mirrors, mirrors that face nothing. One line each, before any work.
 #pragma once
 
-#include <radiosity/mesh/patch_mesh.h>
-#include <radiosity/solution/solution.h>
+#include <radiosity/radiosity.h>
 #include <raytrace/embree_scene.h>
 #include <scene/scene.h>
 

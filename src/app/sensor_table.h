@@ -1,7 +1,7 @@
 // Sensor results: the illuminance table printed on stdout and written as CSV.
 #pragma once
 
-#include <radiosity/gather/sensors.h>
+#include <radiosity/radiosity.h>
 #include <scene/scene.h>
 
 #include <string>

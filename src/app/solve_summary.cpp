@@ -1,37 +1,36 @@
 #include <app/solve_summary.h>
 
-#include <radiosity/solution/energy_balance.h>
-#include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/radiosity.h>
 
 #include <fmt/format.h>
 
 namespace rayrad::app {
 
 void printSolveSummary(const PipelineRun& run) {
-    const auto& s = run.solution;
-    auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lights->emittedFlux());
+    const auto& s = run.lighting.solution;
+    auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lighting.lights->emittedFlux());
     fmt::print(stderr, "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of the {:.6g} lm emitted ({:.4g}% of the first reflection; {})\n",
-               run.mesh.patches.size(), run.singleChannel ? "1 (grey scene)" : "3", s.shots, 100 * s.unshotFraction(),
+               run.mesh.patches.size(), run.lighting.singleChannel ? "1 (grey scene)" : "3", s.shots, 100 * s.unshotFraction(),
                s.unshotReference(), s.initialUnshotFlux > 0 ? 100 * s.remainingUnshotFlux / s.initialUnshotFlux : 0.0,
-               s.converged ? "converged" : "NOT converged: " + run.shooting.stopReason);
-    if (run.shooting.overshootStalled)
+               s.converged ? "converged" : "NOT converged: " + run.lighting.shooting.stopReason);
+    if (run.lighting.shooting.overshootStalled)
         fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");
-    fmt::print(stderr, "{}\n", run.clustering.statistics());
-    const auto& g = run.edgeVertices;
+    fmt::print(stderr, "{}\n", run.lighting.clustering.statistics());
+    const auto& g = run.lighting.displayVertices;
     if (g.seams + g.contacts + g.rims + g.extrapolated > 0)
         fmt::print(stderr, "vertices from a point gather: {} on seams (concave edges and corners), {} beside outlines "
                            "crossing patches (objects standing on a surface off its mesh lines), {} on the rims of "
                            "covered parts (a lamp just below a ceiling), {} where the reconstruction extrapolated "
                            "(a face a few patches wide)\n",
                    g.seams, g.contacts, g.rims, g.extrapolated);
-    if (!run.solution.seamProfiles.empty())
+    if (!run.lighting.solution.seamProfiles.empty())
         fmt::print(stderr, "seam profiles: {} edges from seam vertices graded toward the seam ({} point gathers)\n",
-                   run.solution.seamProfiles.edgeCount(), run.seamProfileGathers);
-    if (run.sensorGathers > 0)
+                   run.lighting.solution.seamProfiles.edgeCount(), run.lighting.seamProfileGathers);
+    if (run.lighting.sensorGathers > 0)
         fmt::print(stderr, "sensor gathers: {} for {} sensors (corner and midpoint re-gathers near edges)\n",
-                   run.sensorGathers, run.sensors.size());
-    if (run.clustering.enabled) {
-        const auto& t = run.shooting;
+                   run.lighting.sensorGathers, run.sensors.size());
+    if (run.lighting.clustering.enabled) {
+        const auto& t = run.lighting.shooting;
         const std::string throughImages =
             t.imageTransfers > 0 ? fmt::format(" ({} from mirror images, {:.1f} % of those carrying light)", t.imageTransfers,
                                                100.0 * static_cast<double>(t.imageTransfersLit) / t.imageTransfers)
@@ -40,7 +39,7 @@ void printSolveSummary(const PipelineRun& run) {
                    "transfers: {} cluster→cluster{} ({} split by a shadow's edge), {} patch→patch pairs, {} corrections, "
                    "{} push-pulls; ΔI_max {:.4g} lx\n",
                    t.clusterTransfers, throughImages, t.splitTransfers, t.patchPairs, t.corrections, t.pushPulls,
-                   run.maxIlluminanceStep);
+                   run.lighting.maxIlluminanceStep);
     }
     std::string alsoAbsorbed;
     if (!run.scene.mirrors.empty() && run.scene.mirrorImages.imageMethod())
@@ -52,7 +51,7 @@ void printSolveSummary(const PipelineRun& run) {
                balance.emitted, balance.absorbed, alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
                balance.unshot, 100 * balance.relativeError(),
                100 * balance.directError(), 100 * balance.secondaryError());
-    const auto& st = run.shooting;
+    const auto& st = run.lighting.shooting;
     fmt::print(stderr, "closure: {:.3g}% of reflected light escapes; per-shot energy conservation {}{}; overshooting {}\n",
                100 * st.escapeFraction,
                st.conserving ? "on" : "off (" + st.conservationOff + ")",

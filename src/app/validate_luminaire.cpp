@@ -4,8 +4,7 @@
 #include <app/validate_runs.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
-#include <radiosity/solution/energy_balance.h>
-#include <radiosity/solution/solution.h>
+#include <radiosity/radiosity.h>
 #include <scene/photometry.h>
 #include <scene/scene.h>
 
@@ -130,7 +129,7 @@ Result validateFile(const std::string& file, const std::string& outDir) {
         ++r.sphereSensors;
         r.indirectError = std::max(r.indirectError, std::abs(luminance(s.value.indirect) / uniform - 1));
     }
-    const auto balance = radiosity::energyBalance(closed.scene, closed.mesh, closed.solution, closed.lights->emittedFlux());
+    const auto balance = radiosity::energyBalance(closed.scene, closed.mesh, closed.lighting.solution, closed.lighting.lights->emittedFlux());
     r.energyError = std::abs(balance.relativeError());
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;

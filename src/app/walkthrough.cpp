@@ -47,7 +47,7 @@ std::string framePath(const std::string& path, int frame) {
 }
 
 double solutionAdaptationLuminance(const PipelineRun& run) {
-    return 0.18 * raytrace::compressionLuminance(run.scene, run.mesh, run.solution);  // L_c = L̄ / 0.18
+    return 0.18 * raytrace::compressionLuminance(run.scene, run.mesh, run.lighting.solution);  // L_c = L̄ / 0.18
 }
 
 double viewsAdaptationLuminance(PipelineRun& run, const std::vector<scene::Camera>& cameras, const PipelineOptions& options) {

@@ -4,7 +4,7 @@
 #include <core/visibility.h>
 
 #include <string>
-#include <radiosity/mesh/patch_mesh.h>
+#include <radiosity/radiosity.h>
 #include <scene/scene.h>
 
 #include <array>

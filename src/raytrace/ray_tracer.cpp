@@ -1,7 +1,6 @@
 #include <raytrace/ray_tracer.h>
 
-#include <radiosity/mesh/patch_reflectance.h>
-#include <radiosity/mesh/shading_normals.h>
+#include <radiosity/radiosity.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -2,10 +2,7 @@
 #pragma once
 
 #include <core/hdr_image.h>
-#include <radiosity/direct/direct_light.h>
-#include <radiosity/gather/gather.h>
-#include <radiosity/mesh/patch_mesh.h>
-#include <radiosity/solution/solution.h>
+#include <radiosity/radiosity.h>
 #include <raytrace/camera.h>
 #include <raytrace/ray_cone.h>
 #include <raytrace/embree_scene.h>

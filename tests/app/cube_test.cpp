@@ -56,8 +56,8 @@ TEST_CASE("cube 4800: vertex values at A B C within 1.5% (seam vertices gathered
     const auto& run = cubeRun();
     // Every face's boundary vertices are on seams: 4 edges of 21 vertices at 0.5 m,
     // less the 4 corners counted twice, on each of the 6 faces.
-    CHECK(run.edgeVertices.seams == 6 * (4 * 21 - 4));
-    CHECK(run.edgeVertices.contacts == 0);
+    CHECK(run.lighting.displayVertices.seams == 6 * (4 * 21 - 4));
+    CHECK(run.lighting.displayVertices.contacts == 0);
     for (const auto& s : run.sensors) {
         INFO(s.sensor.name << " vertex " << luminance(*s.value.indirectVertex) << " reference " << *s.sensor.refIndirect);
         REQUIRE(s.value.indirectVertex.has_value());

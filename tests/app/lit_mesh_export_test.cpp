@@ -79,7 +79,7 @@ TEST_CASE("the lit mesh export: every patch once, colours in range, absolute lum
         double corners = 0;
         for (int k = 0; k < 3; ++k) corners += luminances[indices[3 * i + k]] / 3.0;
         fromFile += corners * p.area;
-        fromSolution += luminance(run.solution.reflectedLuminance(run.scene, run.mesh, i)) * p.area;
+        fromSolution += luminance(run.lighting.solution.reflectedLuminance(run.scene, run.mesh, i)) * p.area;
         area += p.area;
         for (int k = 0; k < 3; ++k)  // the positions are the patch's corners
             for (int c = 0; c < 3; ++c)

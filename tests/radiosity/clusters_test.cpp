@@ -1,5 +1,5 @@
 // Clusters and the two-level shooting: invariants, push-pull, the energy correction.
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <core/check.h>
 #include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/cluster_transfer.h>
@@ -13,7 +13,6 @@
 #include <raytrace/embree_scene.h>
 #include <scene/scene_parser.h>
 
-#include "pipeline_test_util.h"
 #include "test_support.h"
 
 #include <fmt/format.h>
@@ -166,15 +165,12 @@ TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the to
 
 TEST_CASE("closed box with clusters and corrections: emitted = absorbed + unshot within 0.5%", "[clusters]") {
     auto run = [] {
-        app::PipelineOptions o;
-        o.quiet = true;
-        o.wantSensors = false;
-        o.overrides = {{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}};
-        return app::runPipeline(test::sourcePath("scenes/cube/cube.json"), o);
+        return test::solve(test::sourcePath("scenes/cube/cube.json"),
+                           {{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}}, false);
     }();
-    REQUIRE(run.shooting.corrections > 0);
-    REQUIRE(run.shooting.clusterTransfers > 0);
-    auto b = energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    REQUIRE(run.lighting.shooting.corrections > 0);
+    REQUIRE(run.lighting.shooting.clusterTransfers > 0);
+    auto b = energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO("not accounted " << 100 * b.relativeError() << "%");
     CHECK(std::abs(b.relativeError()) < 0.005);
 }
@@ -195,11 +191,12 @@ TEST_CASE("a wall behind a panel 1 cm away: clustered and unclustered absorb the
     // members beside the panel and dark ones behind it. Fixed visibility samples behind
     // the panel lost the lit members' light (clustered absorbed 6.7 % less).
     auto absorbed = [](bool clusters) {
-        auto run = app::runPipeline(test::sourcePath("scenes/mirror_room/mirror_room.json"),
-                                    test::quiet({{"radiosity.mirrors", "ignore"},
-                                                 {"radiosity.max_edge", "0.4"},
-                                                 {"clusters.enabled", clusters ? "true" : "false"}}));
-        return energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux()).absorbed;
+        auto run = test::solve(test::sourcePath("scenes/mirror_room/mirror_room.json"),
+                               {{"radiosity.mirrors", "ignore"},
+                                {"radiosity.max_edge", "0.4"},
+                                {"clusters.enabled", clusters ? "true" : "false"}},
+                               false);
+        return energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux()).absorbed;
     };
     double clustered = absorbed(true), unclustered = absorbed(false);
     INFO("absorbed: clustered " << clustered << " lm, unclustered " << unclustered << " lm");
@@ -207,60 +204,52 @@ TEST_CASE("a wall behind a panel 1 cm away: clustered and unclustered absorb the
 }
 
 TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]") {
-    app::PipelineOptions o;
-    o.quiet = true;
-    o.overrides = {{"radiosity.max_edge", "0.5"}, {"radiosity.stop_unshot", "0.01"}, {"radiosity.gather_levels", "2"},
-                   {"radiosity.edge_gather_levels", "2"}};
+    const std::vector<scene::Override> o = {{"radiosity.max_edge", "0.5"}, {"radiosity.stop_unshot", "0.01"},
+                                            {"radiosity.gather_levels", "2"}, {"radiosity.edge_gather_levels", "2"}};
     std::string path = test::sourcePath("scenes/cube/cube.json");
-    auto a = app::runPipeline(path, o);
-    auto b = app::runPipeline(path, o);
-    std::optional<app::PipelineRun> one;
+    auto a = test::solve(path, o);
+    auto b = test::solve(path, o);
+    std::optional<test::SolvedScene> one;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        one.emplace(app::runPipeline(path, o));
+        one.emplace(test::solve(path, o));
     }
-    REQUIRE(a.clustering.multiPatchClusters() > 0);
-    CHECK(app::sensorCsv(a.sensors) == app::sensorCsv(b.sensors));
-    for (size_t i = 0; i < a.solution.indirect.size(); ++i) {
-        REQUIRE(a.solution.indirect[i] == b.solution.indirect[i]);
-        REQUIRE(luminance(one->solution.indirect[i]) ==
-                Approx(luminance(a.solution.indirect[i])).epsilon(1e-9));
+    REQUIRE(a.lighting.clustering.multiPatchClusters() > 0);
+    for (size_t k = 0; k < a.sensors.size(); ++k) CHECK(a.sensors[k].value.indirect == b.sensors[k].value.indirect);
+    for (size_t i = 0; i < a.lighting.solution.indirect.size(); ++i) {
+        REQUIRE(a.lighting.solution.indirect[i] == b.lighting.solution.indirect[i]);
+        REQUIRE(luminance(one->lighting.solution.indirect[i]) ==
+                Approx(luminance(a.lighting.solution.indirect[i])).epsilon(1e-9));
     }
     for (size_t k = 0; k < a.sensors.size(); ++k)
         CHECK(luminance(one->sensors[k].value.indirect) == Approx(luminance(a.sensors[k].value.indirect)).epsilon(1e-9));
-    REQUIRE(a.edgeVertices.seams > 0);
-    for (size_t v = 0; v < a.solution.vertexIndirect.size(); ++v) {
-        REQUIRE(a.solution.vertexIndirect[v] == b.solution.vertexIndirect[v]);
-        REQUIRE(luminance(one->solution.vertexIndirect[v]) ==
-                Approx(luminance(a.solution.vertexIndirect[v])).epsilon(1e-9));
+    REQUIRE(a.lighting.displayVertices.seams > 0);
+    for (size_t v = 0; v < a.lighting.solution.vertexIndirect.size(); ++v) {
+        REQUIRE(a.lighting.solution.vertexIndirect[v] == b.lighting.solution.vertexIndirect[v]);
+        REQUIRE(luminance(one->lighting.solution.vertexIndirect[v]) ==
+                Approx(luminance(a.lighting.solution.vertexIndirect[v])).epsilon(1e-9));
     }
 }
 
 TEST_CASE("a grey scene solved in one channel matches the three-channel solve", "[clusters]") {
-    app::PipelineOptions o;
-    o.quiet = true;
-    o.overrides = {{"radiosity.max_edge", "0.5"}, {"radiosity.gather_levels", "2"}};
+    std::vector<scene::Override> o = {{"radiosity.max_edge", "0.5"}, {"radiosity.gather_levels", "2"}};
     std::string path = test::sourcePath("scenes/cube/cube.json");
-    auto one = app::runPipeline(path, o);
-    o.overrides.push_back({"radiosity.one_channel_when_grey", "false"});
-    auto three = app::runPipeline(path, o);
-    REQUIRE(one.singleChannel);
-    REQUIRE_FALSE(three.singleChannel);
-    for (size_t i = 0; i < one.solution.indirect.size(); ++i) {
-        REQUIRE(luminance(one.solution.indirect[i]) == Approx(luminance(three.solution.indirect[i])).epsilon(1e-9));
-        REQUIRE(one.solution.indirect[i].r == one.solution.indirect[i].b);  // grey stays grey
+    auto one = test::solve(path, o);
+    o.push_back({"radiosity.one_channel_when_grey", "false"});
+    auto three = test::solve(path, o);
+    REQUIRE(one.lighting.singleChannel);
+    REQUIRE_FALSE(three.lighting.singleChannel);
+    for (size_t i = 0; i < one.lighting.solution.indirect.size(); ++i) {
+        REQUIRE(luminance(one.lighting.solution.indirect[i]) == Approx(luminance(three.lighting.solution.indirect[i])).epsilon(1e-9));
+        REQUIRE(one.lighting.solution.indirect[i].r == one.lighting.solution.indirect[i].b);  // grey stays grey
     }
     for (size_t k = 0; k < one.sensors.size(); ++k)
         CHECK(luminance(one.sensors[k].value.indirect) == Approx(luminance(three.sensors[k].value.indirect)).epsilon(1e-9));
     // A coloured scene is solved in three channels.
     auto cornell = [] {
-        app::PipelineOptions c;
-        c.quiet = true;
-        c.wantSensors = false;
-        c.overrides = {{"radiosity.max_edge", "0.2"}};
-        return app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), c);
+        return test::solve(test::sourcePath("scenes/cornell/cornell.json"), {{"radiosity.max_edge", "0.2"}}, false);
     }();
-    CHECK_FALSE(cornell.singleChannel);
+    CHECK_FALSE(cornell.lighting.singleChannel);
 }
 
 TEST_CASE("a cluster's form factor summed through its member tree agrees with the member-by-member sum", "[clusters]") {
@@ -354,8 +343,8 @@ TEST_CASE("a ceiling above troffers hung 1 cm below it: no cluster-sized blotche
         "wall": {"reflectance": 0.6}, "troffer": {"type": "emissive", "luminance_cd_m2": 2653, "reflectance": 0.7}},
         "objects": )" + objects + R"(], "radiosity": {"max_edge": 0.25}})";
     const std::string path = test::writeTempScene("troffer_ceiling", json);
-    auto clustered = app::runPipeline(path, test::quiet());
-    auto plain = app::runPipeline(path, test::quiet({{"clusters.enabled", "false"}}));
+    auto clustered = test::solve(path);
+    auto plain = test::solve(path, {{"clusters.enabled", "false"}});
     REQUIRE(clustered.mesh.patches.size() == plain.mesh.patches.size());
     auto aboveTroffer = [&](const Vec3& c) {
         for (const auto& t : troffers)
@@ -368,7 +357,7 @@ TEST_CASE("a ceiling above troffers hung 1 cm below it: no cluster-sized blotche
         const Patch& p = clustered.mesh.patches[i];
         if (p.normal.y > -0.99 || p.centroid.y < 2.995 || aboveTroffer(p.centroid)) continue;  // open ceiling only
         ++open;
-        const double a = luminance(clustered.solution.indirect[i]), b = luminance(plain.solution.indirect[i]);
+        const double a = luminance(clustered.lighting.solution.indirect[i]), b = luminance(plain.lighting.solution.indirect[i]);
         worst = std::max(worst, std::abs(a / b - 1));
         squares += (a / b - 1) * (a / b - 1);
     }
@@ -407,16 +396,16 @@ TEST_CASE("balls on the floor: clustered against unclustered, patch by patch", "
         "lights": [{"type": "point", "position": [2.2, 2.8, 1.7], "intensity_cd": 500}],
         "radiosity": {"max_edge": 0.25}})";
     const std::string path = test::writeTempScene("balls_room", json);
-    auto plain = app::runPipeline(path, test::quiet({{"clusters.enabled", "false"}}));
-    auto clustered = app::runPipeline(path, test::quiet());
+    auto plain = test::solve(path, {{"clusters.enabled", "false"}});
+    auto clustered = test::solve(path);
     REQUIRE(clustered.mesh.patches.size() == plain.mesh.patches.size());
-    REQUIRE(clustered.clustering.multiPatchClusters() > 500);
+    REQUIRE(clustered.lighting.clustering.multiPatchClusters() > 500);
     const int ballMaterial = plain.mesh.patches.back().material;  // the balls come last
     // Room, balls, and the floor they stand on (also part of the room).
     double squares[3] = {0, 0, 0}, reference[3] = {0, 0, 0}, sum[3][2] = {{0, 0}, {0, 0}, {0, 0}};
     for (size_t i = 0; i < plain.mesh.patches.size(); ++i) {
         const Patch& p = plain.mesh.patches[i];
-        const double a = luminance(clustered.solution.indirect[i]), b = luminance(plain.solution.indirect[i]);
+        const double a = luminance(clustered.lighting.solution.indirect[i]), b = luminance(plain.lighting.solution.indirect[i]);
         if (p.normal.y > 0.9 && p.centroid.y < 0.01) {
             squares[2] += p.area * (a - b) * (a - b);
             reference[2] += p.area * b * b;
@@ -443,14 +432,11 @@ TEST_CASE("clusters that touch along a seam exchange patch to patch: the Cornell
     // indirect illuminance against the exact sum of the same solution at their centroids
     // (every patch its own form factor and ray). Shot cluster→cluster from a cluster one
     // voxel away that touches them, they were up to 15 % short (bench/seam_patches).
-    app::PipelineOptions options;
-    options.quiet = true;
-    options.overrides = {scene::parseOverride("radiosity.max_edge=0.05")};
-    const app::PipelineRun run = app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), options);
-    const auto touching = touchingClusters(run.mesh, run.clustering, *run.embree, 1e-6 * run.scene.diagonal());
+    const test::SolvedScene run = test::solve(test::sourcePath("scenes/cornell/cornell.json"), {{"radiosity.max_edge", "0.05"}});
+    const auto touching = touchingClusters(run.mesh, run.lighting.clustering, *run.embree, 1e-6 * run.scene.diagonal());
     GatherOptions exact = GatherOptions::plain();
     exact.sharedRays = false;
-    const Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree, exact);
+    const Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree, exact);
     GatherMemo memo;
     int seamPatches = 0, touchingAcross = 0;
     double worst = 0;
@@ -460,11 +446,11 @@ TEST_CASE("clusters that touch along a seam exchange patch to patch: the Cornell
         const bool ceiling = p.normal.y < -0.99 && p.centroid.y > 0.54 && 0.5592 - p.centroid.z < 0.02;
         if (!wall && !ceiling) continue;
         ++seamPatches;
-        const uint32_t c = run.clustering.clusterOf[i];
+        const uint32_t c = run.lighting.clustering.clusterOf[i];
         for (uint32_t d : touching[c])
-            touchingAcross += std::abs(glm::dot(run.clustering.clusters[d].normal, p.normal)) < 0.5;
+            touchingAcross += std::abs(glm::dot(run.lighting.clustering.clusters[d].normal, p.normal)) < 0.5;
         const double exactSum = luminance(gatherer.indirectAt(p.centroid, p.normal, memo));
-        worst = std::max(worst, std::abs(luminance(run.solution.indirect[i]) / exactSum - 1));
+        worst = std::max(worst, std::abs(luminance(run.lighting.solution.indirect[i]) / exactSum - 1));
     }
     INFO("worst |solved / exact - 1| " << worst << " over " << seamPatches << " patches");
     CHECK(seamPatches == 24);

@@ -1,5 +1,5 @@
 // Seam vertices: which vertices take a point gather instead of the reconstruction.
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <radiosity/gather/gather.h>
 
 #include "test_support.h"
@@ -29,15 +29,9 @@ std::string floorWithBox(double x0, double z0) {
                        fmt::arg("a", x0), fmt::arg("b", x0 + 1), fmt::arg("c", z0), fmt::arg("d", z0 + 1));
 }
 
-app::PipelineOptions quiet() {
-    app::PipelineOptions o;
-    o.quiet = true;
-    return o;
-}
-
 /// The largest |vertex − gather| / gather over the run's sensors (each on a surface);
 /// the worst sensor's values go into the test's messages.
-double worstVertexError(const app::PipelineRun& run) {
+double worstVertexError(const test::SolvedScene& run) {
     double worst = -1;
     std::string where;
     for (const auto& s : run.sensors) {
@@ -61,12 +55,12 @@ TEST_CASE("seam vertices: a box standing on the floor has the same seams on and 
     // box face the box's open bottom, not a side). Before the cut, a box off the grid
     // crossed the floor's triangles and had no seam at all: light from under the box
     // and beside it was averaged into one vertex.
-    auto onGrid = app::runPipeline(test::writeTempScene("box_on_grid", floorWithBox(1, 1)), quiet());
-    auto offGrid = app::runPipeline(test::writeTempScene("box_off_grid", floorWithBox(1.3, 1.45)), quiet());
-    CHECK(onGrid.edgeVertices.seams == 20);
-    CHECK(offGrid.edgeVertices.seams == 20);
-    CHECK(onGrid.edgeVertices.contacts == 0);  // the cut runs along mesh lines: no patch is crossed
-    CHECK(offGrid.edgeVertices.contacts == 0);
+    auto onGrid = test::solve(test::writeTempScene("box_on_grid", floorWithBox(1, 1)));
+    auto offGrid = test::solve(test::writeTempScene("box_off_grid", floorWithBox(1.3, 1.45)));
+    CHECK(onGrid.lighting.displayVertices.seams == 20);
+    CHECK(offGrid.lighting.displayVertices.seams == 20);
+    CHECK(onGrid.lighting.displayVertices.contacts == 0);  // the cut runs along mesh lines: no patch is crossed
+    CHECK(offGrid.lighting.displayVertices.contacts == 0);
     bool cornerVertex = false;
     for (const auto& v : offGrid.mesh.vertices) cornerVertex |= glm::length(v - Vec3(1.3, 0, 1.45)) < 1e-9;
     CHECK(cornerVertex);
@@ -79,13 +73,13 @@ TEST_CASE("seam vertices: a gather's near part and the rest add up to the whole 
     std::string scene = floorWithBox(1.3, 1.45);
     const std::string coarse = R"("max_edge": 1)";
     scene.replace(scene.find(coarse), coarse.size(), R"("max_edge": 0.25)");
-    auto run = app::runPipeline(test::writeTempScene("box_parts", scene), quiet());
+    auto run = test::solve(test::writeTempScene("box_parts", scene));
     radiosity::GatherOptions options = radiosity::GatherOptions::plain();
     options.gatherLevels = 3;
     options.gatherFarDiameters = 3;
-    radiosity::Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree, options);
+    radiosity::Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree, options);
     radiosity::Gatherer::CornerSource corners = [&](size_t patch, int corner, double) {
-        return run.solution.vertexIndirect[run.mesh.patches[patch].v[corner]];
+        return run.lighting.solution.vertexIndirect[run.mesh.patches[patch].v[corner]];
     };
     using Part = radiosity::Gatherer::Part;
     // On the floor a hair beside the box's foot, at two of its sides.
@@ -141,8 +135,8 @@ TEST_CASE("contact vertices: beside a turned box's foot the vertices carry the g
     // crosses are half under the box, where nothing arrives. A vertex value averaged or
     // fitted from them was far too low along the foot (a dark band of triangles in the
     // image); the vertices around the foot are now gathered, the hidden ones at the foot.
-    auto run = app::runPipeline(test::writeTempScene("turned_box", floorWithTurnedBox()), quiet());
-    CHECK(run.edgeVertices.contacts > 0);
+    auto run = test::solve(test::writeTempScene("turned_box", floorWithTurnedBox()));
+    CHECK(run.lighting.displayVertices.contacts > 0);
     REQUIRE(run.sensors.size() == 24);
     double worst = 0;
     for (const auto& s : run.sensors) {
@@ -192,8 +186,8 @@ TEST_CASE("contact vertices: behind a lone panel standing on the floor the light
         "lights": [{{"type": "point", "position": [{}, 1, {}], "intensity_cd": 100}}],
         "sensors": [{}], "radiosity": {{"max_edge": 0.25}}}})",
                                           p(a, 0), p(a, 1), p(b, 1), p(b, 0), lamp.x, lamp.y, sensors);
-    auto run = app::runPipeline(test::writeTempScene("lone_panel", scene), quiet());
-    CHECK(run.edgeVertices.contacts > 0);
+    auto run = test::solve(test::writeTempScene("lone_panel", scene));
+    CHECK(run.lighting.displayVertices.contacts > 0);
     REQUIRE(run.sensors.size() == 12);
     double frontGather = 0, backVertex = 0, backGather = 0;
     for (const auto& s : run.sensors) {
@@ -231,8 +225,8 @@ TEST_CASE("rim vertices: the ceiling around a lamp hung just below it keeps the 
           {{"type": "quad", "material": "lamp", "vertices": [[0.87,1.999,0.77],[1.37,1.999,0.77],[1.37,1.999,1.27],[0.87,1.999,1.27]]}}],
         "sensors": [{}], "radiosity": {{"max_edge": 0.25}}}})",
                                           sensors);
-    auto run = app::runPipeline(test::writeTempScene("lamp_below_ceiling", scene), quiet());
-    CHECK(run.edgeVertices.rims > 0);
+    auto run = test::solve(test::writeTempScene("lamp_below_ceiling", scene));
+    CHECK(run.lighting.displayVertices.rims > 0);
     REQUIRE(run.sensors.size() == 9);
     const double worst = worstVertexError(run);
     CHECK(worst <= 0.06);
@@ -260,8 +254,8 @@ TEST_CASE("extrapolated vertices: the corners of a block's face two patches wide
                                                       {"position", {x.x, x.y, x.z}},
                                                       {"normal", {normal.x, normal.y, normal.z}}});
         }
-    auto run = app::runPipeline(test::writeTempScene("cornell_block_face", scene.dump()), quiet());
-    CHECK(run.edgeVertices.extrapolated > 0);
+    auto run = test::solve(test::writeTempScene("cornell_block_face", scene.dump()));
+    CHECK(run.lighting.displayVertices.extrapolated > 0);
     REQUIRE(run.sensors.size() == 8);
     const double worst = worstVertexError(run);
     CHECK(worst < 0.3);

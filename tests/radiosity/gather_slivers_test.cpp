@@ -1,11 +1,10 @@
 // The sensor gather beside an input mesh's slivers (a molding's strips): not refined with
 // gathered midpoints, so a point in a room's corner does not cost a minute (the living
 // room: 57.6 → 28.2 CPU-s for one such point).
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <radiosity/gather/gather.h>
 #include <radiosity/solution/solution.h>
 
-#include "pipeline_test_util.h"
 #include "test_support.h"
 
 #include <fmt/format.h>
@@ -33,7 +32,7 @@ TEST_CASE("sensor gather: a chamfer molding of 4 mm strips beside the point is n
         "objects": [)" + objects + R"(],
         "lights": [{"type": "point", "position": [1, 0.4, 0.5], "intensity_cd": 100}],
         "radiosity": {"max_edge": 0.25}})";
-    auto run = app::runPipeline(test::writeTempScene("chamfer_strips", json), test::quiet());
+    auto run = test::solve(test::writeTempScene("chamfer_strips", json));
     const GatherOptions options = GatherOptions::forSensors(run.scene, run.mesh);
     REQUIRE(options.minRefineWidth == Approx(0.05 * 0.25));
     GatherOptions everyStrip = options;
@@ -44,14 +43,14 @@ TEST_CASE("sensor gather: a chamfer molding of 4 mm strips beside the point is n
         return 2 * p.area < options.minRefineWidth * p.diameter;
     };
     Gatherer::CornerSource corners = [&](size_t patch, int corner, double) {
-        return run.solution.vertexIndirect[run.mesh.patches[patch].v[corner]];
+        return run.lighting.solution.vertexIndirect[run.mesh.patches[patch].v[corner]];
     };
     for (double z : {0.121, 0.123, 0.125}) {
         const Vec3 at(1.0, 0.0, z), n(0, 1, 0);
         std::array<int, 2> sliverMidpoints{0, 0}, otherMidpoints{0, 0};
         std::array<double, 2> value{};
         for (int rule = 0; rule < 2; ++rule) {
-            const Gatherer gatherer(run.scene, run.mesh, run.clustering, run.solution, *run.embree,
+            const Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree,
                                     rule ? options : everyStrip);
             Gatherer::MidpointSource midpoints = [&](size_t patch, uint64_t a, uint64_t b, const Vec3& y, double) {
                 ++(isSliver(patch) ? sliverMidpoints : otherMidpoints)[rule];
@@ -59,7 +58,7 @@ TEST_CASE("sensor gather: a chamfer molding of 4 mm strips beside the point is n
                 const Patch& p = run.mesh.patches[patch];
                 const Vec3 w = barycentric(run.mesh.corner(p, 0), run.mesh.corner(p, 1), run.mesh.corner(p, 2), y);
                 return Gatherer::Midpoint{(a << 20) ^ b,
-                                          weightedVertexIndirect(run.mesh, run.solution, patch, {w[0], w[1], w[2]})};
+                                          weightedVertexIndirect(run.mesh, run.lighting.solution, patch, {w[0], w[1], w[2]})};
             };
             value[rule] = luminance(gatherer.gatherWith(at, n, &corners, false, &midpoints));
         }

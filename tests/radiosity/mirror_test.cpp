@@ -1,12 +1,11 @@
 // Mirrors: the image method (virtual lights and shooters), its analytic references, and
 // the ray tracer's view of a room with a wall mirror.
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <radiosity/mirrors/mirror_images.h>
 #include <core/random.h>
-#include <raytrace/camera.h>
 #include <scene/polygon.h>
 
-#include "pipeline_test_util.h"
+#include "scene/scene_test_util.h"
 #include "test_support.h"
 
 #include <fmt/format.h>
@@ -15,15 +14,14 @@
 
 using namespace rayrad;
 
-using test::quiet;
 
 TEST_CASE("closed diffuse sphere: uniform indirect rho/(1-rho) Phi/A for rho 0.3 0.7 0.9", "[solver][mirrors]") {
     double rho = GENERATE(0.3, 0.7, 0.9);
     // A true sphere gives every point E_ind = ρ/(1−ρ) Φ / A. On the tessellation the
     // point values at the sensors agree within 1.5 % with A the polyhedron's area.
     std::string json = test::closedSphereScene(rho, 12, R"("max_edge": 10, "stop_unshot": 1e-5)");
-    auto run = app::runPipeline(test::writeTempScene(fmt::format("sphere_rho_{}", rho), json), quiet());
-    REQUIRE(run.clustering.multiPatchClusters() > 0);
+    auto run = test::solve(test::writeTempScene(fmt::format("sphere_rho_{}", rho), json));
+    REQUIRE(run.lighting.clustering.multiPatchClusters() > 0);
     double expected = rho / (1 - rho) * 4 * kPi * 100 / run.mesh.totalArea();
     for (const auto& s : run.sensors) {
         INFO("rho " << rho << " sensor " << s.sensor.name << " gathered " << luminance(s.value.indirect)
@@ -36,8 +34,8 @@ TEST_CASE("SPH2 and SPH4: total illuminance at the paper's points within the pap
     // Table 4 references (method.md); the paper's 768-triangle sphere cut to a half and a
     // quarter. Paper errors: SPH2 within 2.3 %, SPH4 within 6.5 %; direct light exact.
     for (auto [file, bound] : {std::pair{"scenes/sphere/sph2.json", 0.023}, std::pair{"scenes/sphere/sph4.json", 0.065}}) {
-        auto run = app::runPipeline(test::sourcePath(file), quiet());
-        REQUIRE(run.mirrorImages > 0);
+        auto run = test::solve(test::sourcePath(file));
+        REQUIRE(run.lighting.mirrorImages > 0);
         REQUIRE(!run.sensors.empty());
         for (const auto& s : run.sensors) {
             double total = luminance(s.value.direct + s.value.indirect);
@@ -233,39 +231,12 @@ TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors
         "lights": [{"type": "point", "position": [1.5, 1.8, 1], "intensity_cd": 100}],
         "sensors": [{"name": "floor", "position": [1.5, 0, 1], "normal": [0, 1, 0]}],
         "radiosity": {"max_edge": 0.5, "mirror_depth": 6}})";
-    auto run = app::runPipeline(test::writeTempScene("facing_mirrors", json), quiet());
-    CHECK(run.mirrorImages == 12);
-    CHECK(run.solution.converged);
+    auto run = test::solve(test::writeTempScene("facing_mirrors", json));
+    CHECK(run.lighting.mirrorImages == 12);
+    CHECK(run.lighting.solution.converged);
     for (const auto& s : run.sensors) {
         CHECK(std::isfinite(luminance(s.value.indirect)));
         CHECK(luminance(s.value.indirect) > 0);
     }
 }
 
-TEST_CASE("mirror room: the block face toward the mirror is brighter with mirrors considered", "[mirrors][image]") {
-    // The paper's Fig. 10: the spots aim at the mirror, away from the block; only their
-    // images light the block's face toward the mirror. Compare the pixel that sees it.
-    auto render = [](const char* mode) {
-        app::PipelineOptions o = quiet({{"camera.resolution", "[64, 48]"}, {"render.spp", "4"},
-                                        {"radiosity.max_edge", "0.4"}, {"radiosity.mirrors", mode}});
-        o.wantImage = true;
-        o.wantSensors = false;
-        return app::runPipeline(test::sourcePath("scenes/mirror_room/mirror_room.json"), o);
-    };
-    auto with = render("image"), without = render("ignore");
-    REQUIRE(with.image);
-    REQUIRE(without.image);
-    // The pixel whose ray points closest to the face's centre (2, 0.4, 2).
-    raytrace::ImageCamera camera(*with.scene.camera);
-    Vec3 target = glm::normalize(Vec3(2, 0.4, 2) - with.scene.camera->position);
-    int bx = 0, by = 0;
-    double best = -1;
-    for (int y = 0; y < camera.height(); ++y)
-        for (int x = 0; x < camera.width(); ++x) {
-            double d = glm::dot(camera.ray(x + 0.5, y + 0.5).direction, target);
-            if (d > best) best = d, bx = x, by = y;
-        }
-    double lit = luminance(with.image->at(bx, by)), unlit = luminance(without.image->at(bx, by));
-    INFO("pixel (" << bx << ", " << by << "): " << lit << " cd/m² with mirrors, " << unlit << " without");
-    CHECK(lit > 3 * unlit);
-}

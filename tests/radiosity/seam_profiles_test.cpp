@@ -1,9 +1,8 @@
 // Seam profiles (issue 15 item 3): the display values graded toward concave seams.
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <radiosity/solution/seam_profiles.h>
 #include <radiosity/solution/solution.h>
 
-#include "pipeline_test_util.h"
 #include "test_support.h"
 
 #include <fmt/format.h>
@@ -39,7 +38,7 @@ std::string cornellSeamRows() {
 }
 
 /// The largest |mesh − gather| / gather over the run's sensors.
-double worstMeshError(const app::PipelineRun& run) {
+double worstMeshError(const test::SolvedScene& run) {
     double worst = 0;
     std::string where;
     for (const auto& s : run.sensors) {
@@ -59,10 +58,10 @@ TEST_CASE("seam profiles: beside the Cornell box's ceiling seam the mesh reads t
     // light rises like d ln(1/d) away from it); the profiles bring the band within 2.5 %
     // (farther out, at the next row of vertices, the reconstruction's own −3 % remains).
     const std::string scene = cornellSeamRows();
-    auto without = app::runPipeline(scene, test::quiet({{"radiosity.seam_profile_nodes", "0"}}));
-    auto with = app::runPipeline(scene, test::quiet());
-    CHECK(without.solution.seamProfiles.empty());
-    CHECK(with.solution.seamProfiles.edgeCount() > 100);
+    auto without = test::solve(scene, {{"radiosity.seam_profile_nodes", "0"}});
+    auto with = test::solve(scene);
+    CHECK(without.lighting.solution.seamProfiles.empty());
+    CHECK(with.lighting.solution.seamProfiles.edgeCount() > 100);
     CHECK(worstMeshError(without) > 0.08);
     CHECK(worstMeshError(with) < 0.025);
 }
@@ -71,9 +70,9 @@ TEST_CASE("seam profiles: the display is continuous across every edge and follow
     // On an edge both triangles must show the same correction (else the mesh's lines show),
     // at a seam vertex none (its gathered value stands), and at a profiled edge's nodes
     // the profile's own values.
-    auto run = app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), test::quiet());
+    auto run = test::solve(test::sourcePath("scenes/cornell/cornell.json"));
     const auto& mesh = run.mesh;
-    const SeamProfiles& profiles = run.solution.seamProfiles;
+    const SeamProfiles& profiles = run.lighting.solution.seamProfiles;
     REQUIRE(!profiles.empty());
     // Barycentrics (u, v) of a patch's point λ0 c0 + λ1 c1 + λ2 c2.
     auto at = [&](size_t patch, int a, int b, double t) {  // the point (1 − t) corner a + t corner b

@@ -1,6 +1,6 @@
 // Shared corners: the direct pass evaluates a vertex once for all its patches only where
 // that is one point for all of them.
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <radiosity/direct/shared_corners.h>
 
 #include "test_support.h"
@@ -19,9 +19,7 @@ TEST_CASE("shared corners: inside a flat surface only, never along a wall's foot
           {"type": "sphere", "material": "m", "center": [3, 2, 3], "radius": 0.3, "subdivisions": 2}],
         "lights": [{"type": "point", "position": [2, 3, 3], "intensity_cd": 100}],
         "radiosity": {"max_edge": 1}})";
-    app::PipelineOptions options;
-    options.quiet = true;
-    const auto run = app::runPipeline(test::writeTempScene("shared_corners", scene), options);
+    const auto run = test::solve(test::writeTempScene("shared_corners", scene));
     const auto& mesh = run.mesh;
     const std::vector<char> shared = radiosity::sharedCorners(mesh);
 
@@ -66,7 +64,7 @@ TEST_CASE("shared corners: inside a flat surface only, never along a wall's foot
             const uint32_t v = mesh.patches[i].v[k];
             if (!shared[v]) continue;
             ++sharedCornersSeen;
-            const RgbF e = run.solution.directCorner[3 * i + k];
+            const RgbF e = run.lighting.solution.directCorner[3 * i + k];
             const Vec3& x = mesh.vertices[v];
             if (x.x > 1.3 && x.x < 2.3 && x.z > 1.45 && x.z < 2.45) CHECK(e.g == 0);
             if (x.z > 2.5) CHECK(e.g > 0);

@@ -1,10 +1,9 @@
 // The shooting iteration: energy balance, analytic sphere, determinism.
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
 
 #include "scene/scene_test_util.h"
-#include "pipeline_test_util.h"
 #include "test_support.h"
 
 #include <tbb/global_control.h>
@@ -16,17 +15,16 @@ using namespace rayrad;
 
 namespace {
 
-using test::quiet;
 
 }  // namespace
 
 TEST_CASE("closed box: emitted = absorbed + unshot within 0.5%", "[solver]") {
     std::string json = test::boxScene(R"({"type": "diffuse", "reflectance": [0.8, 0.5, 0.2]})",
                                       R"({"type": "point", "position": [0.3, 0.6, 0.45], "intensity_cd": 100})");
-    auto run = app::runPipeline(test::writeTempScene("box", json), quiet({{"radiosity.max_edge", "0.125"}}));
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    auto run = test::solve(test::writeTempScene("box", json), {{"radiosity.max_edge", "0.125"}});
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO("emitted " << b.emitted << " absorbed " << b.absorbed << " unshot " << b.unshot);
-    CHECK(run.solution.converged);
+    CHECK(run.lighting.solution.converged);
     CHECK(b.emitted == Approx(4 * kPi * 100));
     CHECK(std::abs(b.relativeError()) < 0.005);
 }
@@ -46,8 +44,8 @@ TEST_CASE("closed sphere: the indirect light is rho/(1-rho) Phi / A", "[solver]"
                     {"name": "B", "position": [0, -0.70710678, -0.70710678], "normal": [0, 0.70710678, 0.70710678]}],
         "radiosity": {"max_edge": 10, "stop_unshot": 1e-4}})";
     std::string path = test::writeTempScene("sphere", json);
-    auto run = app::runPipeline(path, quiet());
-    REQUIRE(run.clustering.multiPatchClusters() > 0);
+    auto run = test::solve(path);
+    REQUIRE(run.lighting.clustering.multiPatchClusters() > 0);
     double area = run.mesh.totalArea();
     double expected = 0.5 / (1 - 0.5) * (4 * kPi * 100) / area;
     for (const auto& s : run.sensors) {
@@ -56,13 +54,13 @@ TEST_CASE("closed sphere: the indirect light is rho/(1-rho) Phi / A", "[solver]"
     }
     double mean = 0;
     for (size_t i = 0; i < run.mesh.patches.size(); ++i)
-        mean += luminance(run.solution.indirect[i]) * run.mesh.patches[i].area;
+        mean += luminance(run.lighting.solution.indirect[i]) * run.mesh.patches[i].area;
     CHECK(mean / area == Approx(expected).epsilon(0.005));
 
-    auto plain = app::runPipeline(path, quiet({{"clusters.enabled", "false"}}));
+    auto plain = test::solve(path, {{"clusters.enabled", "false"}});
     double worst = 0;
     for (size_t i = 0; i < run.mesh.patches.size(); ++i)
-        worst = std::max(worst, std::abs(luminance(run.solution.indirect[i]) / luminance(plain.solution.indirect[i]) - 1));
+        worst = std::max(worst, std::abs(luminance(run.lighting.solution.indirect[i]) / luminance(plain.lighting.solution.indirect[i]) - 1));
     INFO("worst patch difference clustered vs unclustered: " << 100 * worst << "%");
     CHECK(worst < 0.02);
 }
@@ -79,9 +77,9 @@ TEST_CASE("curved receivers keep their light: a closed sphere at a 20 degree nor
         "lights": [{"type": "point", "position": [0.2, 0.4, 0.6], "intensity_cd": 100}],
         "radiosity": {"max_edge": 10, "stop_unshot": 1e-4, "conserve_energy": false},
         "clusters": {"normal_tolerance_deg": 20}})";
-    auto run = app::runPipeline(test::writeTempScene("curved_receivers", json), quiet());
-    REQUIRE(run.clustering.multiPatchClusters() > 100);
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    auto run = test::solve(test::writeTempScene("curved_receivers", json));
+    REQUIRE(run.lighting.clustering.multiPatchClusters() > 100);
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO("emitted " << b.emitted << " absorbed " << b.absorbed << " unshot " << b.unshot << " not accounted "
                     << 100 * b.relativeError() << " %");
     CHECK(std::abs(b.relativeError()) < 0.001);
@@ -89,17 +87,16 @@ TEST_CASE("curved receivers keep their light: a closed sphere at a 20 degree nor
 
 TEST_CASE("the solve is deterministic and independent of the thread count", "[solver]") {
     std::string path = test::sourcePath("scenes/cube/cube.json");
-    auto o = quiet({{"radiosity.max_edge", "2.5"}, {"radiosity.stop_unshot", "0.01"}});
-    o.wantSensors = false;
-    auto a = app::runPipeline(path, o);
-    std::optional<app::PipelineRun> b;
+    const std::vector<scene::Override> o = {{"radiosity.max_edge", "2.5"}, {"radiosity.stop_unshot", "0.01"}};
+    auto a = test::solve(path, o, false);
+    std::optional<test::SolvedScene> b;
     {
         tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-        b.emplace(app::runPipeline(path, o));
+        b.emplace(test::solve(path, o, false));
     }
-    REQUIRE(a.solution.indirect.size() == b->solution.indirect.size());
-    CHECK(a.solution.shots == b->solution.shots);
-    for (size_t i = 0; i < a.solution.indirect.size(); ++i) REQUIRE(a.solution.indirect[i] == b->solution.indirect[i]);
+    REQUIRE(a.lighting.solution.indirect.size() == b->lighting.solution.indirect.size());
+    CHECK(a.lighting.solution.shots == b->lighting.solution.shots);
+    for (size_t i = 0; i < a.lighting.solution.indirect.size(); ++i) REQUIRE(a.lighting.solution.indirect[i] == b->lighting.solution.indirect[i]);
 }
 
 TEST_CASE("the solve stops at the first shot that leaves less than stop_unshot of the emitted flux unshot",
@@ -109,16 +106,16 @@ TEST_CASE("the solve stops at the first shot that leaves less than stop_unshot o
     std::string json = test::boxScene(R"({"type": "diffuse", "reflectance": 0.2})",
                                       R"({"type": "point", "position": [0.3, 0.6, 0.45], "intensity_cd": 100})");
     const std::string path = test::writeTempScene("dark_box", json);
-    auto run = app::runPipeline(path, quiet({{"radiosity.max_edge", "0.125"}, {"radiosity.stop_unshot", "0.02"}}));
-    const auto& s = run.solution;
+    auto run = test::solve(path, {{"radiosity.max_edge", "0.125"}, {"radiosity.stop_unshot", "0.02"}});
+    const auto& s = run.lighting.solution;
     REQUIRE(s.converged);
     CHECK(s.emittedFlux == Approx(4 * kPi * 100));
     CHECK(s.initialUnshotFlux == Approx(0.2 * s.emittedFlux).epsilon(0.01));
     CHECK(s.remainingUnshotFlux <= 0.02 * s.emittedFlux);
     CHECK(s.unshotFraction() == Approx(s.remainingUnshotFlux / s.emittedFlux));
     REQUIRE(s.shots > 1);
-    auto before = app::runPipeline(path, quiet({{"radiosity.max_edge", "0.125"}, {"radiosity.stop_unshot", "0.02"},
-                                                {"radiosity.max_shots", std::to_string(s.shots - 1)}}));
-    CHECK_FALSE(before.solution.converged);
-    CHECK(before.solution.remainingUnshotFlux > 0.02 * s.emittedFlux);
+    auto before = test::solve(path, {{"radiosity.max_edge", "0.125"}, {"radiosity.stop_unshot", "0.02"},
+                                                {"radiosity.max_shots", std::to_string(s.shots - 1)}});
+    CHECK_FALSE(before.lighting.solution.converged);
+    CHECK(before.lighting.solution.remainingUnshotFlux > 0.02 * s.emittedFlux);
 }

@@ -1,13 +1,12 @@
 // Sampled visibility of far sources: where the rays go, and what the gather reads with
 // them against every patch's own ray.
-#include <app/pipeline.h>
+#include "solved_scene.h"
 #include <radiosity/clusters/far_field.h>
 #include <radiosity/gather/gather.h>
 #include <radiosity/mesh/mesher.h>
 #include <scene/scene_parser.h>
 #include <radiosity/gather/visibility_share.h>
 
-#include "pipeline_test_util.h"
 #include "test_support.h"
 
 #include <fmt/format.h>
@@ -176,15 +175,15 @@ TEST_CASE("ceiling sensors over rows of desks read what every patch's own ray re
         "wall": {"reflectance": 0.6}, "desk": {"reflectance": 0.5},
         "troffer": {"type": "emissive", "luminance_cd_m2": 2653, "reflectance": 0.7}},
         "objects": [)" + objects + R"(], "radiosity": {"max_edge": 0.5}})";
-    auto run = app::runPipeline(test::writeTempScene("desk_rows", json), test::quiet());
+    auto run = test::solve(test::writeTempScene("desk_rows", json));
     const GatherOptions options = GatherOptions::forSensors(run.scene, run.mesh);
     REQUIRE(options.gatherFarDiameters > 0);
     GatherOptions exact = options;
     exact.gatherFarDiameters = 0;
     exact.sharedRays = false;
     const CountingVisibility counted(*run.embree);
-    const Gatherer sampled(run.scene, run.mesh, run.clustering, run.solution, counted, options);
-    const Gatherer everyRay(run.scene, run.mesh, run.clustering, run.solution, *run.embree, exact);
+    const Gatherer sampled(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, counted, options);
+    const Gatherer everyRay(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree, exact);
     double sum = 0, worst = 0, sumExpected = 0, worstExpected = 0;
     long rays = 0, raysExpected = 0;
     int points = 0;
@@ -200,7 +199,7 @@ TEST_CASE("ceiling sensors over rows of desks read what every patch's own ray re
             const auto where = locateOnMesh(run.mesh, at, n, 1e-6, run.embree.get());
             REQUIRE(where);
             const double expected =
-                luminance(interpolateIndirect(run.mesh, run.solution, where->patch, where->u, where->v));
+                luminance(interpolateIndirect(run.mesh, run.lighting.solution, where->patch, where->u, where->v));
             before = counted.rays;
             const double told = luminance(sampled.indirectAt(at, n, c, expected));
             raysExpected += counted.rays - before;

@@ -45,7 +45,7 @@ TEST_CASE("emitters of 3, 4, 6 and 24 sides, 1 cm to 1 m from a ceiling, facing 
     auto run = app::runPipeline(
         test::writeTempScene(fmt::format("ngon_{}_{}_{}", sides, gap, faceUp), ngonRoom(sides, gap, faceUp)),
         quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO(sides << " sides, " << gap << " m below the ceiling, facing " << (faceUp ? "up" : "down") << ": emitted "
                << b.emitted << " lm, received " << b.directReceived << " lm");
     CHECK(b.emitted == Approx(1000).epsilon(1e-9));

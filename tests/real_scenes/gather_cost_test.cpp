@@ -45,6 +45,6 @@ TEST_CASE("sensors 1 cm inside a finely tessellated sphere: within 1 % of the un
         CHECK(std::abs(b / expected - 1) < 0.01);
         CHECK(std::abs(b / f - 1) < 0.002);  // the bound moves the value by less than 0.2 %
     }
-    INFO("gathers: bounded " << bounded.sensorGathers << ", full depth " << full.sensorGathers);
-    CHECK(bounded.sensorGathers * 10 < full.sensorGathers);
+    INFO("gathers: bounded " << bounded.lighting.sensorGathers << ", full depth " << full.lighting.sensorGathers);
+    CHECK(bounded.lighting.sensorGathers * 10 < full.lighting.sensorGathers);
 }

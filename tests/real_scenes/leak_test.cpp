@@ -60,10 +60,10 @@ void checkDark(const app::PipelineRun& run, double darkFrom, double litMean) {
     for (size_t i = 0; i < run.mesh.patches.size(); ++i) {
         const auto& p = run.mesh.patches[i];
         if (p.centroid.x <= darkFrom + 1e-9 || p.normal.x < -0.5) continue;  // lit side (and its face of a thin wall)
-        worstPatch = std::max({worstPatch, luminance(run.solution.directMean[i]), luminance(run.solution.indirect[i])});
+        worstPatch = std::max({worstPatch, luminance(run.lighting.solution.directMean[i]), luminance(run.lighting.solution.indirect[i])});
         for (int k = 0; k < 3; ++k)
-            worstVertex = std::max({worstVertex, luminance(run.solution.vertexIndirect[p.v[k]]),
-                                    luminance(Rgb(run.solution.directCorner[3 * i + k]))});
+            worstVertex = std::max({worstVertex, luminance(run.lighting.solution.vertexIndirect[p.v[k]]),
+                                    luminance(Rgb(run.lighting.solution.directCorner[3 * i + k]))});
     }
     INFO("worst patch " << worstPatch << " lx, worst vertex " << worstVertex << " lx, bound " << bound << " lx");
     CHECK(worstPatch <= bound);
@@ -100,7 +100,7 @@ TEST_CASE("two rooms split by a zero-thickness wall or a 0.2 m box partition: th
     checkDark(run, thin ? 4.0 : 4.1, litMean);
     // The closed rooms' account: the back of the dark room's face of a zero-thickness
     // wall is covered by the lit face, so nothing is booked there twice (it was +12 %).
-    auto balance = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    auto balance = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO("not accounted " << 100 * balance.relativeError() << " %, on backs " << 100 * balance.backShare() << " %");
     CHECK(std::abs(balance.relativeError()) < 1e-3);
 }
@@ -189,8 +189,8 @@ TEST_CASE("furniture on the floor: a carpet 1 cm high and cabinets standing on i
                {"type": "box", "material": "wood", "min": [1.3, 0.01, 1.5], "max": [2.0, 0.8, 2.0]})",
                                                        R"({"name": "carpet", "position": [2.71, 0.01, 2.3], "normal": [0, 1, 0]})")),
         test::quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
-    INFO("not accounted " << 100 * b.relativeError() << " %, shots beyond the bound " << run.shooting.unbalancedShots);
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    INFO("not accounted " << 100 * b.relativeError() << " %, shots beyond the bound " << run.lighting.shooting.unbalancedShots);
     CHECK(std::abs(b.relativeError()) < 1e-3);
-    CHECK(run.shooting.unbalancedShots == 0);
+    CHECK(run.lighting.shooting.unbalancedShots == 0);
 }

@@ -52,7 +52,7 @@ TEST_CASE("a luminaire in a closed sphere: direct light from its table, indirect
     auto run = app::runPipeline(test::writeTempScene("luminaire_sphere", json), quiet());
     const scene::Photometry web = scene::readPhotometry(kIes);
     const double flux = web.integratedFlux();
-    REQUIRE(run.lights->emittedFlux() == Approx(flux).epsilon(1e-12));
+    REQUIRE(run.lighting.lights->emittedFlux() == Approx(flux).epsilon(1e-12));
     // Direct: I(γ, C) at distance 1 on the sphere, normal toward the centre (cos = 1).
     const double expectedDirect[3] = {web.intensity(0, 0), web.intensity(45, 0), web.intensity(45, 90)};
     const double expectedIndirect = rho / (1 - rho) * flux / run.mesh.totalArea();
@@ -64,7 +64,7 @@ TEST_CASE("a luminaire in a closed sphere: direct light from its table, indirect
     }
     CHECK(expectedDirect[1] != Approx(expectedDirect[2]).epsilon(0.01));  // the table does differ by azimuth
     // The energy account holds with a strongly directional source.
-    const auto balance = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    const auto balance = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     CHECK(std::abs(balance.relativeError()) < 5e-4);
 }
 
@@ -283,7 +283,7 @@ TEST_CASE("light groups: each group's part, scaled, gives what a re-solve with t
         const auto parts = app::solveLightGroups(file, options, full, groups);
         CHECK(app::largestGroupSumDifference(full.sensors, parts) < sumBound);
         // The re-solve with the full solve's ΔI_max, as the groups' solves.
-        auto dimmedOptions = quiet({{"clusters.max_illuminance_step_lx", fmt::format("{:.17g}", full.maxIlluminanceStep)}});
+        auto dimmedOptions = quiet({{"clusters.max_illuminance_step_lx", fmt::format("{:.17g}", full.lighting.maxIlluminanceStep)}});
         const auto dimmed = app::runPipeline(test::writeTempScene("groups_dimmed", room(0.3, solver)), dimmedOptions);
         double worst = 0;
         for (size_t i = 0; i < full.sensors.size(); ++i) {

@@ -73,12 +73,12 @@ TEST_CASE("a wall mirror with tilted bevel strips in a closed box: the account c
     auto run = app::runPipeline(test::writeTempScene(fmt::format("wall_mirror_{}_{}_{}", areaLight, gap, height),
                                                      mirrorRoom(height, areaLight, gap)),
                                 quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO((areaLight ? "24-gon lamp" : "point light") << ", gap " << gap << " m, ceiling " << height << " m: direct "
                                                      << 100 * b.directError() << " %, secondary "
                                                      << 100 * b.secondaryError() << " %, mirrors absorbed "
                                                      << b.mirrorAbsorbed << " lm");
-    CHECK(run.mirrorImages == 5);
+    CHECK(run.lighting.mirrorImages == 5);
     CHECK(b.mirrorAbsorbed > 0);
     CHECK(std::abs(b.directError()) < 1e-3);
     CHECK(std::abs(b.relativeError()) < 1e-3);
@@ -94,7 +94,7 @@ TEST_CASE("light on the back of a mirror wound backwards is booked as absorbed t
                     {"type": "quad", "material": "mirror", "vertices": [[0.5, 1, 1], [0.5, 1, 3], [0.5, 2.5, 3], [0.5, 2.5, 1]]},
                     {"type": "polygon", "material": "lamp", "vertices": [[1.5, 2.98, 1.5], [2.5, 2.98, 1.5], [2.0, 2.98, 2.5]]}]})"),
                                 quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO("on backs " << b.backAbsorbed << " lm of " << b.emitted << "; not accounted " << 100 * b.relativeError()
                      << " %");
     CHECK(b.backAbsorbed > 0.02 * b.emitted);
@@ -123,9 +123,9 @@ TEST_CASE("mirror chains that can carry almost no light are cut by their etendue
                                 quiet());
     };
     auto all = runWith(0), cut = runWith(1e-5);
-    INFO("images: " << all.mirrorImages << " all, " << cut.mirrorImages << " with the cut");
-    CHECK(cut.mirrorImages >= 6);  // the five single mirrors, the facing one and its chains with the big mirror
-    CHECK(cut.mirrorImages * 3 < all.mirrorImages * 2);  // 46 -> 22 when written
+    INFO("images: " << all.lighting.mirrorImages << " all, " << cut.lighting.mirrorImages << " with the cut");
+    CHECK(cut.lighting.mirrorImages >= 6);  // the five single mirrors, the facing one and its chains with the big mirror
+    CHECK(cut.lighting.mirrorImages * 3 < all.lighting.mirrorImages * 2);  // 46 -> 22 when written
     REQUIRE(all.sensors.size() == cut.sensors.size());
     for (size_t k = 0; k < all.sensors.size(); ++k) {
         const double a = luminance(all.sensors[k].value.direct + all.sensors[k].value.indirect);

@@ -19,7 +19,7 @@ using test::quiet;
 namespace {
 
 bool allFinite(const app::PipelineRun& run) {
-    for (const auto& v : run.solution.indirect)
+    for (const auto& v : run.lighting.solution.indirect)
         if (!isFinite(v)) return false;
     for (const auto& s : run.sensors)
         if (!isFinite(s.value.direct) || !isFinite(s.value.indirect)) return false;
@@ -27,7 +27,7 @@ bool allFinite(const app::PipelineRun& run) {
 }
 
 double notAccounted(const app::PipelineRun& run) {
-    return radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux()).relativeError();
+    return radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux()).relativeError();
 }
 
 /// A closed box room w × h × d (metres) of reflectance rho with a point light, scaled by s.
@@ -56,14 +56,14 @@ TEST_CASE("stiff closed sphere: rho 0.9 / 0.99 / 0.999 within 1 % at three point
     std::string json = test::closedSphereScene(rho, 30, R"("max_edge": 10)");
     auto run = app::runPipeline(test::writeTempScene(fmt::format("stiff_sphere_{}", rho), json), quiet());
     REQUIRE(run.mesh.patches.size() >= 5000);
-    REQUIRE(run.clustering.multiPatchClusters() > 0);
+    REQUIRE(run.lighting.clustering.multiPatchClusters() > 0);
     REQUIRE(allFinite(run));
-    CHECK(run.solution.converged);
-    CHECK(run.shooting.conserving);
+    CHECK(run.lighting.solution.converged);
+    CHECK(run.lighting.shooting.conserving);
     double expected = rho / (1 - rho) * 4 * kPi * 100 / run.mesh.totalArea();
     for (const auto& s : run.sensors) {
         INFO("rho " << rho << " sensor " << s.sensor.name << " gathered " << luminance(s.value.indirect)
-                    << " expected " << expected << " shots " << run.solution.shots);
+                    << " expected " << expected << " shots " << run.lighting.solution.shots);
         CHECK(luminance(s.value.indirect) == Approx(expected).epsilon(0.01));
     }
     CHECK(std::abs(notAccounted(run)) < 1e-3);
@@ -73,8 +73,8 @@ TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot withi
     SECTION("the cube, clusters and corrections on") {
         auto run = app::runPipeline(test::sourcePath("scenes/cube/cube.json"),
                                     quiet({{"radiosity.max_edge", "0.5"}, {"clusters.max_illuminance_step_lx", "20"}}));
-        REQUIRE(run.shooting.corrections > 0);
-        CHECK(run.shooting.conserving);
+        REQUIRE(run.lighting.shooting.corrections > 0);
+        CHECK(run.lighting.shooting.conserving);
         CHECK(std::abs(notAccounted(run)) < 1e-3);
     }
     SECTION("a coloured room with a block, three channels") {
@@ -82,12 +82,12 @@ TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot withi
                                    R"(, {"type": "box", "material": "red", "min": [1, 0, 1], "max": [2, 1, 2]})");
         json.replace(json.find("\"m\": {"), 0, R"("red": {"reflectance": [0.7, 0.2, 0.1]}, )");
         auto run = app::runPipeline(test::writeTempScene("energy_room", json), quiet());
-        REQUIRE_FALSE(run.singleChannel);
-        CHECK(run.shooting.conserving);
+        REQUIRE_FALSE(run.lighting.singleChannel);
+        CHECK(run.lighting.shooting.conserving);
         // The block's shadow crosses 0.5 m floor patches (the direct pass samples those
         // more densely), and floor patches run under the block (their shots lose half
         // their light into it, and conservation puts it back).
-        auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+        auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
         INFO("direct pass " << 100 * b.directError() << " %, secondary " << 100 * b.secondaryError() << " %");
         CHECK(std::abs(b.directError()) < 1e-3);
         CHECK(std::abs(b.secondaryError()) < 1e-3);
@@ -100,8 +100,8 @@ TEST_CASE("energy accounting with a mirror: what the mirror absorbs is booked", 
     // images deliver Ks of what reaches the mirror; the rest, and what the wall behind
     // sends into the mirror's back, is booked as absorbed by the mirror.
     auto run = app::runPipeline(test::sourcePath("scenes/mirror_room/mirror_room.json"), quiet());
-    CHECK(run.shooting.conserving);
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.solution, run.lights->emittedFlux());
+    CHECK(run.lighting.shooting.conserving);
+    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO("mirrors " << b.mirrorAbsorbed << " lm, direct pass " << 100 * b.directError() << " %, secondary "
                     << 100 * b.secondaryError() << " %");
     CHECK(b.mirrorAbsorbed > 0.05 * b.emitted);
