@@ -85,9 +85,12 @@ TEST_CASE("seam vertices: a gather's near part and the rest add up to the whole 
     // On the floor a hair beside the box's foot, at two of its sides.
     for (const Vec3 x : {Vec3(1.29, 1e-9, 1.9), Vec3(2.0, 1e-9, 2.46)}) {
         const Vec3 n(0, 1, 0);
-        const Rgb all = gatherer.gatherWith(x, n, &corners, false, nullptr, 1, Part::All);
-        const Rgb near = gatherer.gatherWith(x, n, &corners, false, nullptr, 1, Part::Near);
-        const Rgb rest = gatherer.gatherWith(x, n, &corners, false, nullptr, 1, Part::AllButNear);
+        auto gather = [&](Part part) {
+            radiosity::Gatherer::Request request(x, n, &corners, radiosity::Gatherer::Threads::Serial);
+            request.part = part;
+            return gatherer.gatherWith(request);
+        };
+        const Rgb all = gather(Part::All), near = gather(Part::Near), rest = gather(Part::AllButNear);
         CHECK(luminance(near) > 0);
         CHECK(luminance(rest) > 0);
         CHECK(luminance(near + rest) == Approx(luminance(all)).epsilon(1e-12));

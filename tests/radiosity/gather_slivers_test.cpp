@@ -60,7 +60,9 @@ TEST_CASE("sensor gather: a chamfer molding of 4 mm strips beside the point is n
                 return Gatherer::Midpoint{(a << 20) ^ b,
                                           weightedVertexIndirect(run.mesh, run.lighting.solution, patch, {w[0], w[1], w[2]})};
             };
-            value[rule] = luminance(gatherer.gatherWith(at, n, &corners, false, &midpoints));
+            Gatherer::Request request(at, n, &corners, Gatherer::Threads::Serial);
+            request.midpoints = &midpoints;
+            value[rule] = luminance(gatherer.gatherWith(request));
         }
         INFO("z " << z << ": midpoints asked of slivers " << sliverMidpoints[0] << " → " << sliverMidpoints[1]
                   << ", of other patches " << otherMidpoints[0] << " → " << otherMidpoints[1] << "; " << value[0]

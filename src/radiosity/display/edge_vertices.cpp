@@ -175,11 +175,16 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
             }
             if (round == 0) {
                 nearSets[k] = gatherer.nearPatches({g.at, g.at});
-                rest[k] = gatherer.gatherWith(g.at, g.normal, &corners, false, nullptr, 1, Part::AllButNear,
-                                              luminance(solution.vertexIndirect[g.vertex]), &nearSets[k]);
+                Gatherer::Request far(g.at, g.normal, &corners, Gatherer::Threads::Serial);
+                far.part = Part::AllButNear;
+                far.expected = luminance(solution.vertexIndirect[g.vertex]);
+                far.nearSet = &nearSets[k];
+                rest[k] = gatherer.gatherWith(far);
             }
-            current[k] = rest[k] + gatherer.gatherWith(g.at, g.normal, &corners, /*parallel=*/false, nullptr, 1,
-                                                       Part::Near, 0, &nearSets[k]);
+            Gatherer::Request near(g.at, g.normal, &corners, Gatherer::Threads::Serial);
+            near.part = Part::Near;
+            near.nearSet = &nearSets[k];
+            current[k] = rest[k] + gatherer.gatherWith(near);
             if (round + 1 == levels || k >= seams) std::vector<uint32_t>().swap(nearSets[k]);  // not needed again
             size_t n = ++done;
             if (onProgress && n % 16 == 0) onProgress(static_cast<double>(n) / total);

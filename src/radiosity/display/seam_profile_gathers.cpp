@@ -99,8 +99,11 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
             const std::vector<uint32_t>& nearEdge = nearSets[c];
             auto nearAt = [&](const Vec3& y) {
                 ++taken;
-                return gatherer.gatherWith(nudgeInside(mesh, e.patch, y, nudge), n, &corners, /*parallel=*/false,
-                                           round > 0 ? &display : nullptr, 1, Part::Near, 0, &nearEdge);
+                Gatherer::Request near(nudgeInside(mesh, e.patch, y, nudge), n, &corners, Gatherer::Threads::Serial);
+                near.midpoints = round > 0 ? &display : nullptr;
+                near.part = Part::Near;
+                near.nearSet = &nearEdge;
+                return gatherer.gatherWith(near);
             };
             // A profile whose first node was small is not worth a second round (the other
             // wall's band changes it by a fraction of that: kSecondRoundShare).

@@ -137,9 +137,6 @@ class Gatherer {
     /// ρ F of the patch seen from the gathering point, the part of an error in the value
     /// that reaches that gather.
     using CornerSource = std::function<Rgb(size_t patch, int corner, double share)>;
-    /// One gather at x. With `cornerIndirectOf`, near patches get linear luminance from
-    /// exact direct light plus these indirect corner values; without, patch-constant.
-    /// `parallel` false: a serial sum (for callers that are parallel themselves).
     /// The point y halfway between points a and b of a near patch (ids: a mesh vertex,
     /// or an earlier midpoint): its id and its gathered indirect illuminance (lx, RGB).
     /// Ids, not positions, say which points are the same: the two sides of a contact
@@ -150,25 +147,45 @@ class Gatherer {
     };
     using MidpointSource =
         std::function<Midpoint(size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share)>;
-    /// With `midpoints` too, near patches are refined toward x with gathered indirect
-    /// light at their sub-triangles' corners (see the class comment).
-    /// `weight`: how much of an error in this gather reaches the sensor (the product of
-    /// ρ F along the chain of gathers that asked for it; 1 for the sensor's own). With a
-    /// minimum weight (GatherOptions::minWeight), the near patches of smallest share (ρ F),
-    /// as many as keep the sum of their shares within minWeight / weight, take their corner
-    /// values from the solution and are not refined; the others are refined to the
-    /// tolerance / weight, so the error either brings to the sensor is bounded alike.
-    /// `part` (with `cornerIndirectOf`) splits the sum in two that add up to the whole:
-    /// the near patches' linear luminance alone, the only part that depends on the corner
-    /// values, or everything else (far clusters, other patches, mirror images).
-    /// `expected`: the indirect illuminance (lx) x is expected to receive, as indirectAt.
-    /// `nearSet` (optional, from nearPatches): the near patches are these rather than those
-    /// near x — the same set for every point of a segment (seam_profiles.h compares the
-    /// near parts of points along an edge), found once.
+    /// Which part of the sum a gather returns (see Request::part).
     enum class Part { All, Near, AllButNear };
-    Rgb gatherWith(const Vec3& x, const Vec3& n, const CornerSource* cornerIndirectOf, bool parallel,
-                   const MidpointSource* midpoints = nullptr, double weight = 1, Part part = Part::All,
-                   double expected = 0, const std::vector<uint32_t>* nearSet = nullptr) const;
+    /// Serial: for callers that are parallel themselves.
+    enum class Threads { Parallel, Serial };
+
+    /// One point gather: where, how the near patches are valued, and what of the sum.
+    struct Request {
+        Request() = default;
+        Request(const Vec3& x, const Vec3& n, const CornerSource* corners = nullptr,
+                Threads threads = Threads::Parallel)
+            : x(x), n(n), corners(corners), threads(threads) {}
+        Vec3 x{0.0}, n{0.0};  ///< the point and its unit normal
+        /// With corners, near patches get linear luminance from exact direct light plus
+        /// these indirect corner values; without, patch-constant.
+        const CornerSource* corners = nullptr;
+        /// With midpoints too, near patches are refined toward x with gathered indirect
+        /// light at their sub-triangles' corners (see the class comment).
+        const MidpointSource* midpoints = nullptr;
+        Threads threads = Threads::Parallel;
+        /// How much of an error in this gather reaches the sensor (the product of ρ F along
+        /// the chain of gathers that asked for it; 1 for the sensor's own). With a minimum
+        /// weight (gatherMinWeight), the near patches of smallest share (ρ F), as many as
+        /// keep the sum of their shares within gatherMinWeight / weight, take their corner
+        /// values from the solution and are not refined; the others are refined to the
+        /// tolerance / weight, so the error either brings to the sensor is bounded alike.
+        double weight = 1;
+        /// With corners, the sum split in two that add up to the whole: the near patches'
+        /// linear luminance alone (the only part that depends on the corner values), or
+        /// everything else (far clusters, other patches, mirror images).
+        Part part = Part::All;
+        /// The indirect illuminance (lx) x is expected to receive, as for indirectAt.
+        double expected = 0;
+        /// From nearPatches: the near patches are these rather than those near x — the same
+        /// set for every point of a segment (the seam profiles compare the near parts of
+        /// points along an edge), found once.
+        const std::vector<uint32_t>* nearSet = nullptr;
+    };
+    /// Indirect illuminance (lx, RGB) of one gather.
+    Rgb gatherWith(const Request& request) const;
 
     /// The patches whose centroid lies within two of their own diameters (kNearDiameters)
     /// of the segment [a, b] (a == b: of a point), in cluster order: a gather's near
@@ -192,6 +209,28 @@ class Gatherer {
         uint64_t id;
         Rgb L, E;
     };
+    struct NearPatch;
+    struct NearCluster;
+    struct NearField;
+    struct PointSources;
+    /// The near patches of a gather with corner values (request.corners), with their
+    /// pieces (gather_near_field.cpp).
+    void findNearField(const Request& request, NearField& near) const;
+    /// Near patch e's light at the request's point, piece by piece, added to `into`.
+    void addNear(const Request& request, const NearField& near, const NearPatch& e, Rgb& into) const;
+    /// What the sum over sources needs of the request (gather_sources.cpp): how far a node
+    /// counts as far, and which mirror images and voxels can send the point light.
+    PointSources pointSources(const Request& request, const NearField& near) const;
+    /// The scene's own items of the sum: its clusters, or in a re-gather groups of far
+    /// clusters too (index clusters + g for group g).
+    std::vector<uint32_t> sceneItems(const PointSources& point) const;
+    /// Cluster c's light at the point as source s shows it (0: the scene, i + 1: image i).
+    Rgb clusterContribution(const PointSources& point, size_t s, size_t c) const;
+    /// Far group `index` of the cluster tree: its light times the share of its rays seen.
+    Rgb groupContribution(const PointSources& point, uint32_t index) const;
+    /// Σ over every source: the scene items, then every image's open clusters.
+    Rgb sumSources(const PointSources& point, const std::vector<uint32_t>& items) const;
+
     /// A gather whose error reaches the sensor with weight at most 10^−weightClass.
     Rgb gather(const Vec3& x, const Vec3& n, int level, int weightClass, GatherMemo& memo, double expected = 0) const;
     /// The class of a weight: k with 10^−(k+1) < weight ≤ 10^−k, so a class's weight is at

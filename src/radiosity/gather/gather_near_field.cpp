@@ -1,7 +1,7 @@
 // The gather's near field: the patches beside the point, their luminance linear between
 // corner values, refined toward the point with gathered midpoints where it is not linear
 // enough, and integrated exactly where the point sees a piece whole (see Gatherer).
-#include <radiosity/gather/gather.h>
+#include <radiosity/gather/gather_parts.h>
 #include <radiosity/mesh/patch_reflectance.h>
 
 #include <radiosity/form_factors/form_factor.h>
@@ -21,7 +21,91 @@ namespace {
 constexpr double kSplitRatio = 1.0;
 /// Near triangles are split at most this deep with gathered midpoints (then linearly).
 constexpr int kRefineDepth = 6;
+/// Near patches holding at least 1/kRefineShares of the near field's ρ F are refined to
+/// the full tolerance; smaller ones to a tolerance looser in proportion.
+constexpr double kRefineShares = 20;
 }  // namespace
+
+void Gatherer::addNear(const Request& request, const NearField& near, const NearPatch& e, Rgb& into) const {
+    for (uint32_t k = e.first; k < e.first + e.count; ++k) {
+        const NearPiece& piece = near.pieces[k];
+        into += integrateLinear(request.x, request.n, piece.p.data(), piece.L.data(), m_mesh.patches[e.patch].normal,
+                                piece.depth, e.known(piece));
+    }
+}
+
+void Gatherer::findNearField(const Request& request, NearField& near) const {
+    const Vec3& x = request.x;
+    const Vec3& n = request.n;
+    // The near patches that face x, in cluster order.
+    struct Candidate {
+        uint32_t cluster, patch;
+        double share;  ///< ρ F: how much of an error in its corner values reaches x
+        double F;
+    };
+    std::vector<Candidate> candidates;
+    // Near to x, or the set asked for (in cluster order either way).
+    const std::vector<uint32_t> nearX = request.nearSet ? std::vector<uint32_t>() : nearPatches({x, x});
+    for (uint32_t j : request.nearSet ? *request.nearSet : nearX) {
+        const Patch& p = m_mesh.patches[j];
+        const Rgb rho = patchReflectance(m_scene, m_mesh, j);
+        if (rho == Rgb(0.0)) continue;
+        const Vec3 v[3] = {m_mesh.corner(p, 0), m_mesh.corner(p, 1), m_mesh.corner(p, 2)};
+        const double F = formFactorToPolygon(x, n, v, 3, p.normal);
+        if (F > 0) candidates.push_back({m_clustering.clusterOf[j], j, std::max({rho[0], rho[1], rho[2]}) * F, F});
+    }
+    // The smallest shares whose sum stays within the floor keep the solution's corner
+    // values: what their error can bring to x is bounded by the floor, whatever their number.
+    double shareSum = 0;
+    for (const Candidate& e : candidates) shareSum += e.share;
+    double detailFrom = 0;  // shares from here on are gathered
+    const double weight = request.weight;
+    const double detailFloor = m_options.gatherMinWeight > 0 ? m_options.gatherMinWeight / weight : 0;
+    if (detailFloor > 0) {
+        std::vector<double> shares;
+        for (const Candidate& e : candidates) shares.push_back(e.share);
+        std::sort(shares.begin(), shares.end());
+        double pruned = 0;
+        for (double share : shares) {
+            if (pruned + share > detailFloor) break;
+            pruned += share;
+            detailFrom = std::nextafter(share, 2.0);
+        }
+    }
+    for (const Candidate& e : candidates) {
+        const uint32_t j = e.patch;
+        if (near.clusters.empty() || near.clusters.back().cluster != e.cluster)
+            near.clusters.push_back({e.cluster, near.patches.size(), near.patches.size()});
+        near.patches.push_back({j, m_treePosition[j], 0, 0, e.F});
+        near.clusters.back().end = near.patches.size();
+        if (request.part == Part::AllButNear) continue;  // which patches are near is all it needs
+        const Patch& p = m_mesh.patches[j];
+        const Rgb rho = patchReflectance(m_scene, m_mesh, j);
+        const bool sliver = 2 * p.area < m_options.minRefineWidth * p.diameter;
+        const bool detailed = e.share >= detailFrom;
+        std::array<RefinePoint, 3> corners;
+        for (int k = 0; k < 3; ++k) {
+            const Rgb E(m_solution.directCorner[3 * j + k]);
+            const Rgb indirect = detailed ? (*request.corners)(j, k, e.share) : solutionCorner(j, k);
+            corners[k] = {m_mesh.corner(p, k), p.v[k], rho * (E + indirect) / kPi, E};
+        }
+        // A piece is refined while its midpoints depart from linear by more than the
+        // tolerance; patches holding less than 1/kRefineShares of the near field's share
+        // may depart more, in proportion (400 slivers of a sofa do not each need it), and
+        // so may a gather whose error reaches the sensor with weight w < 1, by 1/w.
+        const double tolerance = m_options.gatherRefineTolerance * std::max(1.0, shareSum / (kRefineShares * e.share)) /
+                                 (m_options.gatherMinWeight > 0 ? weight : 1.0);
+        const size_t first = near.pieces.size();
+        refineNear(x, j, corners, 0, detailed && !sliver ? request.midpoints : nullptr, e.share, tolerance,
+                   near.pieces);
+        near.patches.back().first = static_cast<uint32_t>(first);
+        near.patches.back().count = static_cast<uint32_t>(near.pieces.size() - first);
+    }
+    for (const NearCluster& c : near.clusters)
+        std::sort(near.patches.begin() + static_cast<std::ptrdiff_t>(c.begin),
+                  near.patches.begin() + static_cast<std::ptrdiff_t>(c.end),
+                  [](const NearPatch& a, const NearPatch& b) { return a.position < b.position; });
+}
 
 void Gatherer::refineNear(const Vec3& x, size_t patch, const std::array<RefinePoint, 3>& c, int depth,
                           const MidpointSource* midpoints, double share, double tolerance,
