@@ -250,12 +250,7 @@ bool ShootingCore<V>::coplanar(const Cluster& a, const Cluster& b) const {
 }
 
 template <class V>
-void ShootingCore<V>::shootCluster(size_t c, int radius) {
-    CHECK(!m_finished);
-    Light& light = m_light[c];
-    int r = radius >= 0 ? radius : radiusFor(c);
-    const size_t n = m_clustering.clusters.size();
-    const Cluster& C = m_clustering.clusters[c];
+std::vector<V> ShootingCore<V>::overshootOf(const Cluster& C) const {
     // With overshooting each member also ships what it will receive later, ρ_i E_amb / π,
     // and keeps minus that as unshot light. A patch that has received no light so far
     // (the underside of a box on the floor) is taken to receive none later: it gets no
@@ -266,102 +261,91 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         uint32_t i = C.patches[k];
         if (isLit(i)) overshoot[k] = m_reflectance[i] * ambient / kPi;
     }
-    // The shooter as each source shows it (an image: its mirrored copy), built once per
-    // shot; none where nothing of c passes the source's chain.
-    std::vector<std::optional<Shooter>> shooters(m_sources.size());
-    for (size_t si = 0; si < m_sources.size(); ++si)
-        if (!m_sources[si].image || m_sources[si].sends[c]) shooters[si].emplace(shooter(m_sources[si], c));
-    // corrected[s][d]: receiver d already got source s's total in a correction.
-    std::vector<std::vector<char>> corrected(m_sources.size(), std::vector<char>(n, 0));
-    const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
-    double redelivered = 0;  // lm (at the source) of earlier shots the corrections took away
-    const bool throughMirrors = m_sources.size() > 1;
-    AtSource delivered{throughMirrors};  // this shot's deliveries at the source
+    return overshoot;
+}
 
-    if (correcting && light.radius > 0 && r > light.radius)
-        redelivered = correctRing(c, r, overshoot, shooters, corrected, delivered);
-    if (correcting) r = std::max(r, light.radius);  // r_v never shrinks: each receiver switches once
-
-    // The shooter's unshot light (plus the overshoot) leaves now; it may receive some of
-    // it back (intra-cluster).
-    std::vector<V> unshot(C.patches.size());
-    std::vector<double> unshotPower(C.patches.size());  // ΔL_i A_i, where the rays leave from
+template <class V>
+void ShootingCore<V>::releaseUnshot(Shot& shot) {
+    const Cluster& C = m_clustering.clusters[shot.c];
+    Light& light = m_light[shot.c];
+    shot.unshot.resize(C.patches.size());
+    shot.unshotPower.resize(C.patches.size());
     V deltaLC(0.0), keptLC(0.0);
-    double shotFlux = 0;  // lm
     for (size_t k = 0; k < C.patches.size(); ++k) {
         uint32_t i = C.patches[k];
-        unshot[k] = m_unshot[i] + overshoot[k];
-        m_unshot[i] = -overshoot[k];
+        shot.unshot[k] = m_unshot[i] + shot.overshoot[k];
+        m_unshot[i] = -shot.overshoot[k];
         double a = m_patchArea[i];
-        unshotPower[k] = lum(unshot[k]) * a;
-        shotFlux += kPi * unshotPower[k];
-        deltaLC += unshot[k] * a;
-        keptLC -= overshoot[k] * a;
+        shot.unshotPower[k] = lum(shot.unshot[k]) * a;
+        shot.shotFlux += kPi * shot.unshotPower[k];
+        deltaLC += shot.unshot[k] * a;
+        keptLC -= shot.overshoot[k] * a;
     }
-    deltaLC = deltaLC / C.area;
+    shot.deltaLC = deltaLC / C.area;
     light.unshot = keptLC / C.area;
     light.absUnshot = std::abs(lum(keptLC)) / C.area;  // every member keeps −ρ_i E_amb/π: one sign
-    const ClusterSamples samples = powerSamples(C, unshotPower);
-    // Deliveries are collected first (patch→patch in m_shotE, cluster→cluster in
-    // m_shotPending) so that a closed scene can scale them to the flux shot.
+}
 
+template <class V>
+void ShootingCore<V>::prepareSources(Shot& shot, const ClusterSamples& samples) const {
+    const size_t sources = m_sources.size();
+    shot.localSamples.resize(sources);
+    shot.regionOpen.resize(sources);
+    for (size_t si = 0; si < sources; ++si) {
+        if (!shot.shooters[si]) continue;
+        const Source& s = m_sources[si];
+        const Cluster& Cs = shot.shooters[si]->cluster();
+        shot.localSamples[si] = shot.shooters[si]->local(samples);
+        if (!s.image) continue;
+        shot.regionOpen[si].resize(m_regions.regions.size());
+        for (size_t k = 0; k < shot.regionOpen[si].size(); ++k)
+            shot.regionOpen[si][k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions.regions[k].centre,
+                                                      m_regions.regions[k].radius);
+    }
+}
+
+template <class V>
+void ShootingCore<V>::shootClusterToCluster(Shot& shot) {
     // Every source's transfers to receiver d are made by one task, source by source, so
     // each receiver's deliveries add up in the same order at any thread count; the
-    // sources share each pass's parallel loop (a loop per source cost the living room's
-    // 12 sources 24 forks and joins a shot).
-    const size_t sources = m_sources.size();
-    std::vector<ClusterSamples> localSamples(sources);
-    std::vector<std::vector<char>> regionOpen(sources);  // images: the voxels light can reach through the chain
-    for (size_t si = 0; si < sources; ++si) {
-        if (!shooters[si]) continue;
-        const Source& s = m_sources[si];
-        const Cluster& Cs = shooters[si]->cluster();
-        localSamples[si] = shooters[si]->local(samples);
-        if (!s.image) continue;
-        regionOpen[si].resize(m_regions.regions.size());
-        for (size_t k = 0; k < regionOpen[si].size(); ++k)
-            regionOpen[si][k] = s.image->mayPass(Cs.centroid, 0.5 * Cs.diameter, m_regions.regions[k].centre,
-                                                 m_regions.regions[k].radius);
-    }
-    // Each receiver's deliveries, booked at their source for the conservation and the
-    // mirrors' account by its own task, sources in order; added up in receiver order after
-    // the passes (the same sums at any thread count).
-    std::vector<AtSource> bookedAt(n, AtSource{throughMirrors});
-    std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, imageTransfers{0}, imageLit{0}, patchPairs{0};
-    // Cluster→cluster now; the receivers within r_v are marked for patch→patch, per source
-    // and (nearAny) per receiver, so the list below need not scan every source's marks.
-    std::vector<char> isNear(sources * n, 0), nearAny(n, 0);
+    // sources share each pass's parallel loop (a loop per source would fork and join once
+    // per source and shot).
+    const size_t c = shot.c, n = m_clustering.clusters.size(), sources = m_sources.size();
+    const Cluster& C = m_clustering.clusters[c];
+    shot.isNear.assign(sources * n, 0);
+    shot.nearAny.assign(n, 0);
+    std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, imageTransfers{0}, imageLit{0};
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
         int64_t cc = 0, split = 0, ccImage = 0, litImage = 0;
         for (size_t d = range.begin(); d != range.end(); ++d) {
             const Cluster& D = m_clustering.clusters[d];
             for (size_t si = 0; si < sources; ++si) {
-                if (!shooters[si] || corrected[si][d]) continue;
+                if (!shot.shooters[si] || shot.corrected[si][d]) continue;
                 const Source& s = m_sources[si];
-                const Shooter& from = *shooters[si];
+                const Shooter& from = *shot.shooters[si];
                 const Cluster& Cs = from.cluster();
                 bool self = d == c && !s.image;
-                if (s.image && !regionOpen[si][m_regions.regionOf[d]]) continue;
+                if (s.image && !shot.regionOpen[si][m_regions.regionOf[d]]) continue;
                 if (self ? C.planar : coplanar(Cs, D)) continue;  // coplanar surfaces exchange no light
                 if (!canReach(s, Cs, c, d)) continue;
-                if (self || inNearField(s, Cs, c, d, r)) {
-                    isNear[si * n + d] = 1, nearAny[d] = 1;
+                if (self || inNearField(s, Cs, c, d, shot.r)) {
+                    shot.isNear[si * n + d] = 1, shot.nearAny[d] = 1;
                     continue;
                 }
                 SplitTransfer parts;
-                double t = clusterTransfer(from.mesh(), Cs, localSamples[si], m_mesh, D, *s.vis,
+                double t = clusterTransfer(from.mesh(), Cs, shot.localSamples[si], m_mesh, D, *s.vis,
                                            m_analyticDistance, m_clusterOptions.receiverDetail, &from.geometry,
                                            &parts);
                 bool carried = false;
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V
                     thread_local std::vector<double> visible;
-                    memberVisibility(from.mesh(), localSamples[si], m_mesh, D, *s.vis, visible);
-                    const Delivery got = addPending(Cs, d, deltaLC * s.weight * parts.open, &visible);
-                    bookedAt[d].add(s, got), ++split;
+                    memberVisibility(from.mesh(), shot.localSamples[si], m_mesh, D, *s.vis, visible);
+                    const Delivery got = addPending(Cs, d, shot.deltaLC * s.weight * parts.open, &visible);
+                    shot.bookedAt[d].add(s, got), ++split;
                     carried = got.flux != V(0.0);  // every member's rays may have been blocked
                 } else if (t > 0) {
                     // I_D += Ks ΔL_C π F V
-                    bookedAt[d].add(s, addPending(Cs, d, deltaLC * s.weight * t)), carried = true;
+                    shot.bookedAt[d].add(s, addPending(Cs, d, shot.deltaLC * s.weight * t)), carried = true;
                 }
                 ++cc;
                 if (s.image) ++ccImage, litImage += carried;
@@ -372,42 +356,83 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         imageTransfers += ccImage;
         imageLit += litImage;
     });
-    // Patch→patch to the receivers within r_v, with each source's emission.
+    m_stats.clusterTransfers += clusterTransfers;
+    m_stats.splitTransfers += splitTransfers;
+    m_stats.imageTransfers += imageTransfers, m_stats.imageTransfersLit += imageLit;
+}
+
+template <class V>
+void ShootingCore<V>::shootPatchToPatch(Shot& shot) {
+    const size_t n = m_clustering.clusters.size(), sources = m_sources.size();
     std::vector<size_t> nearReceivers;
     std::vector<char> sendsNear(sources, 0);
     for (size_t d = 0; d < n; ++d) {
-        if (!nearAny[d]) continue;
+        if (!shot.nearAny[d]) continue;
         nearReceivers.push_back(d);
-        for (size_t si = 0; si < sources; ++si) sendsNear[si] |= isNear[si * n + d];
+        for (size_t si = 0; si < sources; ++si) sendsNear[si] |= shot.isNear[si * n + d];
     }
     std::vector<std::optional<Emission>> shotLight(sources);
     for (size_t si = 0; si < sources; ++si)
-        if (sendsNear[si]) shotLight[si].emplace(emission(*shooters[si], c, unshot));
+        if (sendsNear[si]) shotLight[si].emplace(emission(*shot.shooters[si], shot.c, shot.unshot));
+    std::atomic<int64_t> patchPairs{0};
     const tbb::blocked_range<size_t> nearRange(0, nearReceivers.size(), 4);
     tbb::parallel_for(nearRange, [&](const tbb::blocked_range<size_t>& range) {
         int64_t pp = 0;
         for (size_t k = range.begin(); k != range.end(); ++k) {
             const size_t d = nearReceivers[k];
             for (size_t si = 0; si < sources; ++si) {
-                if (!isNear[si * n + d]) continue;
+                if (!shot.isNear[si * n + d]) continue;
                 const Source& s = m_sources[si];
-                bookedAt[d].add(s, shootPatches(s, *shooters[si], c, *shotLight[si], d, m_shotE, pp));
+                shot.bookedAt[d].add(s, shootPatches(s, *shot.shooters[si], shot.c, *shotLight[si], d, m_shotE, pp));
             }
         }
         patchPairs += pp;
     });
-    m_stats.clusterTransfers += clusterTransfers;
-    m_stats.splitTransfers += splitTransfers;
-    m_stats.imageTransfers += imageTransfers, m_stats.imageTransfersLit += imageLit;
     m_stats.patchPairs += patchPairs;
-    for (const AtSource& booked : bookedAt) delivered.add(booked);
+}
+
+template <class V>
+void ShootingCore<V>::shootCluster(size_t c, int radius) {
+    CHECK(!m_finished);
+    Light& light = m_light[c];
+    const Cluster& C = m_clustering.clusters[c];
+    const size_t n = m_clustering.clusters.size();
+    Shot shot;
+    shot.c = c;
+    shot.r = radius >= 0 ? radius : radiusFor(c);
+    shot.overshoot = overshootOf(C);
+    // The shooter as each source shows it (an image: its mirrored copy), built once per
+    // shot; none where nothing of c passes the source's chain.
+    shot.shooters.resize(m_sources.size());
+    for (size_t si = 0; si < m_sources.size(); ++si)
+        if (!m_sources[si].image || m_sources[si].sends[c]) shot.shooters[si].emplace(shooter(m_sources[si], c));
+    shot.corrected.assign(m_sources.size(), std::vector<char>(n, 0));
+    const bool correcting = m_clustering.enabled && m_clusterOptions.energyCorrection;
+    double redelivered = 0;  // lm (at the source) of earlier shots the corrections took away
+    const bool throughMirrors = m_sources.size() > 1;
+    AtSource delivered{throughMirrors};  // this shot's deliveries at the source
+    if (correcting && light.radius > 0 && shot.r > light.radius)
+        redelivered = correctRing(c, shot.r, shot.overshoot, shot.shooters, shot.corrected, delivered);
+    if (correcting) shot.r = std::max(shot.r, light.radius);  // r_v never shrinks: each receiver switches once
+
+    // The shooter's light leaves now; it may receive some of it back (intra-cluster).
+    // Deliveries are collected first (patch→patch in m_shotE, cluster→cluster in
+    // m_shotPending) so that a closed scene can scale them to the flux shot. Each
+    // receiver's deliveries are booked at their source by its own task, sources in order,
+    // and added up in receiver order after the passes (the same sums at any thread count).
+    releaseUnshot(shot);
+    prepareSources(shot, powerSamples(C, shot.unshotPower));
+    shot.bookedAt.assign(n, AtSource{throughMirrors});
+    shootClusterToCluster(shot);
+    shootPatchToPatch(shot);
+    for (const AtSource& booked : shot.bookedAt) delivered.add(booked);
     if (!m_mirrorBacks.empty()) {  // what goes into a mirror's back is absorbed there, not delivered
-        double back = intoMirrorBacks(C, unshotPower);
-        shotFlux -= back;
+        double back = intoMirrorBacks(C, shot.unshotPower);
+        shot.shotFlux -= back;
         m_stats.mirrorAbsorbed += back;
     }
-    deliver(shotFlux, redelivered, delivered);
-    light.radius = r;
+    deliver(shot.shotFlux, redelivered, delivered);
+    light.radius = shot.r;
 }
 
 template <class V>

@@ -171,6 +171,34 @@ class ShootingCore final : public ShootingCoreBase {
             mirrorLoss += other.mirrorLoss;
         }
     };
+    /// One shot of cluster c: what its passes share.
+    struct Shot {
+        size_t c = 0;
+        int r = 0;  ///< r_v in voxels: receivers nearer take patch→patch
+        std::vector<std::optional<Shooter>> shooters;  ///< per source; none where nothing of c passes its chain
+        std::vector<std::vector<char>> corrected;      ///< [source][receiver]: got the source's total in a correction
+        std::vector<V> overshoot;                      ///< per member: what it ships beyond its unshot light
+        std::vector<V> unshot;                         ///< per member: the light that leaves, cd/m²
+        std::vector<double> unshotPower;               ///< per member ΔL_i A_i: where the rays leave from
+        V deltaLC{0.0};                                ///< ΔL_C, cd/m²
+        double shotFlux = 0;                           ///< lm
+        std::vector<ClusterSamples> localSamples;      ///< per source: the ray samples in its shooter's mesh
+        std::vector<std::vector<char>> regionOpen;     ///< images: the voxel regions light reaches through the chain
+        std::vector<AtSource> bookedAt;                ///< per receiver: its deliveries, booked at their source
+        std::vector<char> isNear;                      ///< [source · n + receiver]: patch→patch
+        std::vector<char> nearAny;                     ///< per receiver: patch→patch from some source
+    };
+    /// With overshooting, what each member of C ships beyond its unshot light, ρ_i E_amb / π.
+    std::vector<V> overshootOf(const Cluster& C) const;
+    /// The shooter's unshot light (plus the overshoot) leaves: fills shot.unshot,
+    /// unshotPower, deltaLC and shotFlux; the members keep minus the overshoot.
+    void releaseUnshot(Shot& shot);
+    /// Each source's ray samples and, for images, the voxel regions its chain lets light reach.
+    void prepareSources(Shot& shot, const ClusterSamples& samples) const;
+    /// Cluster→cluster to every receiver beyond r_v; marks the nearer ones for patch→patch.
+    void shootClusterToCluster(Shot& shot);
+    /// Patch→patch to the receivers shootClusterToCluster marked, with each source's emission.
+    void shootPatchToPatch(Shot& shot);
     /// Receives this shot's collected deliveries (m_shotE, m_shotPending), adjusted to
     /// the flux shot when conserving. `redelivered`: the flux (lm, at the source) this
     /// shot's corrections took away to deliver again; `delivered`: the shot's deliveries
