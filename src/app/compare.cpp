@@ -152,6 +152,72 @@ tonemap::Picture sideBySide(const HdrImage& a, const HdrImage& b) {
     return p;
 }
 
+/// The pictures and reports compare writes, checked before any work.
+void addPictureAndReportOutputs(const CompareOptions& o, OutputFiles& files) {
+    for (const auto* path : {&o.diffMap, &o.sideBySide}) {
+        if (path->empty()) continue;
+        files.add(*path);
+        tonemap::checkImageFormat(*path);
+        if (tonemap::isHdrFormat(*path)) throw OutputError(placeMessage(*path, "", "a picture is a display image: use .png or .jpg"));
+    }
+    for (const auto* path : {&o.report, &o.csv})
+        if (!path->empty()) files.add(*path);
+}
+
+/// The figures as the console shows them (printed), as CSV and as JSON.
+struct Tables {
+    std::string csv;
+    nlohmann::json json;
+};
+
+Tables tabulate(const CompareOptions& o, const HdrImage& b, const std::vector<Region>& regions,
+                const std::vector<ErrorFigures>& figures, const std::array<double, 3>& factors,
+                const std::vector<tonemap::PointPair>& pairs, const tonemap::Homography& homography, double residual) {
+    fmt::print("{} against {} ({}×{}); calibration {} over {}: factors {:.5g} {:.5g} {:.5g}\n", o.a, o.b, b.width,
+               b.height, o.calibrate, regions.size() > 1 ? "the regions" : "the image", factors[0], factors[1], factors[2]);
+    if (!pairs.empty())
+        fmt::print("aligned by a homography through {} point pairs (largest residual {:.3g} px)\n", pairs.size(), residual);
+    fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>7} {:>7} {:>7}\n", "region", "pixels", "mean %", "|mean| %",
+               "median %", "p95 %", "rms ln", "SSIM", "ΔE00", "ΔE00 95", "FLIP");
+    std::string csv ="region,pixels,mean_rel_pct,mean_abs_rel_pct,median_abs_rel_pct,p95_abs_rel_pct,rms_log,ssim,"
+                      "mean_delta_e2000,p95_delta_e2000,mean_flip\n";
+    nlohmann::json j;
+    j["a"] = o.a, j["b"] = o.b, j["width"] = b.width, j["height"] = b.height;
+    j["calibration"] = {{"kind", o.calibrate}, {"factors", factors}};
+    if (!pairs.empty()) j["alignment"] = {{"pairs", pairs.size()}, {"homography_b_to_a", homography}, {"largest_residual_px", residual}};
+    j["regions"] = nlohmann::json::array();
+    for (size_t i = 0; i < regions.size(); ++i) {
+        const auto& f = figures[i];
+        fmt::print("{:<16} {:>9} {:>+9.3f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.4f} {:>7.4f} {:>7.3f} {:>7.3f} {:>7.4f}\n",
+                   regions[i].name.substr(0, 16), f.pixels, f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct,
+                   f.rmsLog, f.ssim, f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
+        csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", regions[i].name, f.pixels,
+                           f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct, f.rmsLog, f.ssim,
+                           f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
+        j["regions"].push_back({{"name", regions[i].name}, {"x", regions[i].x}, {"y", regions[i].y},
+                                {"width", regions[i].width}, {"height", regions[i].height}, {"pixels", f.pixels},
+                                {"mean_rel_pct", f.meanRelPct}, {"mean_abs_rel_pct", f.meanAbsRelPct},
+                                {"median_abs_rel_pct", f.medianAbsRelPct}, {"p95_abs_rel_pct", f.p95AbsRelPct},
+                                {"rms_log", f.rmsLog}, {"ssim", f.ssim}, {"mean_delta_e2000", f.meanDeltaE2000},
+                                {"p95_delta_e2000", f.p95DeltaE2000}, {"mean_flip", f.meanFlip}});
+    }
+    return {csv, j};
+}
+
+/// |a − b| / b after calibration in false colour, scaled to the larger of 10 % and twice p95.
+tonemap::Picture differenceMap(const HdrImage& a, const HdrImage& b, const ErrorFigures& whole) {
+        tonemap::ScalarField field{b.width, b.height, tonemap::relativeDifferencePct(a, b)};
+        double top = 0;
+        for (double v : field.values)
+            if (std::isfinite(v)) top = std::max(top, v);
+        tonemap::FalseColourOptions fc;
+        fc.maximum = std::max(1.0, std::min(top, std::max(10.0, 2 * whole.p95AbsRelPct)));
+        fc.title = fmt::format("|a - b| / b after calibration; mean {:.2f} %, p95 {:.2f} %", whole.meanAbsRelPct,
+                               whole.p95AbsRelPct);
+        fc.unit = "%";
+        return tonemap::renderFalseColour(field, fc);
+}
+
 }  // namespace
 
 int compareImages(const CompareOptions& o) {
@@ -174,14 +240,7 @@ int compareImages(const CompareOptions& o) {
             throw InputError(placeMessage(o.alignFile, "", e.what()));
         }
     }
-    for (const auto* path : {&o.diffMap, &o.sideBySide}) {
-        if (path->empty()) continue;
-        files.add(*path);
-        tonemap::checkImageFormat(*path);
-        if (tonemap::isHdrFormat(*path)) throw OutputError(placeMessage(*path, "", "a picture is a display image: use .png or .jpg"));
-    }
-    for (const auto* path : {&o.report, &o.csv})
-        if (!path->empty()) files.add(*path);
+    addPictureAndReportOutputs(o, files);
 
     HdrImage a = readLinear(o.a, o.aSpace, "--a-space");
     const HdrImage b = readLinear(o.b, o.bSpace, "--b-space");
@@ -214,34 +273,9 @@ int compareImages(const CompareOptions& o) {
     for (const auto& r : regions) figures.push_back(tonemap::compareImages(a, b, r));
 
     // Console, CSV, JSON.
-    fmt::print("{} against {} ({}×{}); calibration {} over {}: factors {:.5g} {:.5g} {:.5g}\n", o.a, o.b, b.width,
-               b.height, o.calibrate, regions.size() > 1 ? "the regions" : "the image", factors[0], factors[1], factors[2]);
-    if (!pairs.empty())
-        fmt::print("aligned by a homography through {} point pairs (largest residual {:.3g} px)\n", pairs.size(), residual);
-    fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>7} {:>7} {:>7}\n", "region", "pixels", "mean %", "|mean| %",
-               "median %", "p95 %", "rms ln", "SSIM", "ΔE00", "ΔE00 95", "FLIP");
-    std::string csv = "region,pixels,mean_rel_pct,mean_abs_rel_pct,median_abs_rel_pct,p95_abs_rel_pct,rms_log,ssim,"
-                      "mean_delta_e2000,p95_delta_e2000,mean_flip\n";
-    nlohmann::json j;
-    j["a"] = o.a, j["b"] = o.b, j["width"] = b.width, j["height"] = b.height;
-    j["calibration"] = {{"kind", o.calibrate}, {"factors", factors}};
-    if (!pairs.empty()) j["alignment"] = {{"pairs", pairs.size()}, {"homography_b_to_a", homography}, {"largest_residual_px", residual}};
-    j["regions"] = nlohmann::json::array();
-    for (size_t i = 0; i < regions.size(); ++i) {
-        const auto& f = figures[i];
-        fmt::print("{:<16} {:>9} {:>+9.3f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.4f} {:>7.4f} {:>7.3f} {:>7.3f} {:>7.4f}\n",
-                   regions[i].name.substr(0, 16), f.pixels, f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct,
-                   f.rmsLog, f.ssim, f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
-        csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", regions[i].name, f.pixels,
-                           f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct, f.rmsLog, f.ssim,
-                           f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
-        j["regions"].push_back({{"name", regions[i].name}, {"x", regions[i].x}, {"y", regions[i].y},
-                                {"width", regions[i].width}, {"height", regions[i].height}, {"pixels", f.pixels},
-                                {"mean_rel_pct", f.meanRelPct}, {"mean_abs_rel_pct", f.meanAbsRelPct},
-                                {"median_abs_rel_pct", f.medianAbsRelPct}, {"p95_abs_rel_pct", f.p95AbsRelPct},
-                                {"rms_log", f.rmsLog}, {"ssim", f.ssim}, {"mean_delta_e2000", f.meanDeltaE2000},
-                                {"p95_delta_e2000", f.p95DeltaE2000}, {"mean_flip", f.meanFlip}});
-    }
+    const Tables tables = tabulate(o, b, regions, figures, factors, pairs, homography, residual);
+    const std::string& csv = tables.csv;
+    nlohmann::json j = tables.json;
     // The bounds, on the whole image.
     int status = 0;
     j["bounds"] = nlohmann::json::array();
@@ -257,16 +291,7 @@ int compareImages(const CompareOptions& o) {
     if (!o.report.empty()) files.set(o.report, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     if (!o.csv.empty()) files.set(o.csv, csv);
     if (!o.diffMap.empty()) {
-        tonemap::ScalarField field{b.width, b.height, tonemap::relativeDifferencePct(a, b)};
-        double top = 0;
-        for (double v : field.values)
-            if (std::isfinite(v)) top = std::max(top, v);
-        tonemap::FalseColourOptions fc;
-        fc.maximum = std::max(1.0, std::min(top, std::max(10.0, 2 * figures[0].p95AbsRelPct)));
-        fc.title = fmt::format("|a - b| / b after calibration; mean {:.2f} %, p95 {:.2f} %", figures[0].meanAbsRelPct,
-                               figures[0].p95AbsRelPct);
-        fc.unit = "%";
-        const auto picture = tonemap::renderFalseColour(field, fc);
+        const auto picture = differenceMap(a, b, figures[0]);
         files.set(o.diffMap, tonemap::encodeDisplayImage(o.diffMap, picture.width, picture.height, picture.rgb));
     }
     if (!o.sideBySide.empty()) {

@@ -112,10 +112,14 @@ std::string readWholeFile(const std::string& path) {
     return data;
 }
 
-}  // namespace
+/// The header: the body's format, its elements, and where the body starts.
+struct Header {
+    Format format;
+    std::vector<Element> elements;
+    size_t bodyStart;
+};
 
-PlyMesh readPly(const std::string& path) {
-    const std::string data = readWholeFile(path);
+Header readHeader(const std::string& data) {
     // Header: text lines up to "end_header".
     size_t pos = 0;
     int lineNo = 0;
@@ -182,63 +186,74 @@ PlyMesh readPly(const std::string& path) {
         }
     }
     if (!haveFormat) throw std::runtime_error("the header has no 'format' line");
+    return {format, elements, pos};
 
-    PlyMesh mesh;
-    BodyReader body(data, pos, format);
-    for (const Element& e : elements) {
-        // Every record takes at least one byte (binary: its fixed part), so a count the
-        // rest of the file cannot hold is an error before anything is allocated.
-        uint64_t minRecord = 0;
-        for (const Property& p : e.properties) minRecord += static_cast<uint64_t>(typeSize(p.isList ? p.countType : p.type));
-        if (format == Format::Ascii) minRecord = e.properties.empty() ? 0 : 2 * e.properties.size() - 1;
-        if (minRecord > 0 && e.count > body.remaining() / minRecord)
-            throw std::runtime_error(fmt::format("element '{}' claims {} records, more than the {} bytes left can hold",
-                                                 e.name, e.count, body.remaining()));
-        const bool isVertex = e.name == "vertex", isFace = e.name == "face";
-        int ix = -1, iy = -1, iz = -1, iFace = -1;
-        for (size_t k = 0; k < e.properties.size(); ++k) {
-            const std::string& n = e.properties[k].name;
-            if (n == "x") ix = static_cast<int>(k);
-            if (n == "y") iy = static_cast<int>(k);
-            if (n == "z") iz = static_cast<int>(k);
-            if ((n == "vertex_indices" || n == "vertex_index") && e.properties[k].isList) iFace = static_cast<int>(k);
-        }
-        if (isVertex && (ix < 0 || iy < 0 || iz < 0))
-            throw std::runtime_error("element 'vertex' lacks one of the properties x, y, z");
-        // An element without properties has empty records: nothing to read, however many
-        // it claims (a hostile header claimed 2.7e15 of them: a loop, not an error).
-        if (e.properties.empty()) continue;
-        if (isVertex) mesh.positions.reserve(e.count);
-        if (isFace) mesh.faces.reserve(e.count);
-        std::vector<uint32_t> face;
-        for (uint64_t r = 0; r < e.count; ++r) {
-            const std::string what = fmt::format("{} {}", e.name, r);
-            Vec3 p(0.0);
-            face.clear();
-            for (size_t k = 0; k < e.properties.size(); ++k) {
-                const Property& prop = e.properties[k];
-                if (!prop.isList) {
-                    double v = body.read(prop.type, what);
-                    if (static_cast<int>(k) == ix) p.x = v;
-                    if (static_cast<int>(k) == iy) p.y = v;
-                    if (static_cast<int>(k) == iz) p.z = v;
-                    continue;
-                }
-                double n = body.read(prop.countType, what);
-                if (!(n >= 0) || n != std::floor(n) || n > 65536)
-                    throw std::runtime_error(fmt::format("{}: list length {} is not a count", what, n));
-                for (int i = 0; i < static_cast<int>(n); ++i) {
-                    double v = body.read(prop.type, what);
-                    if (static_cast<int>(k) != iFace) continue;
-                    if (!(v >= 0) || v != std::floor(v) || v > 4294967295.0)
-                        throw std::runtime_error(fmt::format("{}: vertex index {} is not a valid index", what, v));
-                    face.push_back(static_cast<uint32_t>(v));
-                }
-            }
-            if (isVertex) mesh.positions.push_back(p);
-            if (isFace) mesh.faces.push_back(face);
-        }
+}
+
+/// Element e's records, read from the body; vertices and faces go into `mesh`.
+void readElement(BodyReader& body, Format format, const Element& e, PlyMesh& mesh) {
+    // Every record takes at least one byte (binary: its fixed part), so a count the
+    // rest of the file cannot hold is an error before anything is allocated.
+    uint64_t minRecord = 0;
+    for (const Property& p : e.properties) minRecord += static_cast<uint64_t>(typeSize(p.isList ? p.countType : p.type));
+    if (format == Format::Ascii) minRecord = e.properties.empty() ? 0 : 2 * e.properties.size() - 1;
+    if (minRecord > 0 && e.count > body.remaining() / minRecord)
+        throw std::runtime_error(fmt::format("element '{}' claims {} records, more than the {} bytes left can hold",
+                                             e.name, e.count, body.remaining()));
+    const bool isVertex = e.name == "vertex", isFace = e.name == "face";
+    int ix = -1, iy = -1, iz = -1, iFace = -1;
+    for (size_t k = 0; k < e.properties.size(); ++k) {
+        const std::string& n = e.properties[k].name;
+        if (n == "x") ix = static_cast<int>(k);
+        if (n == "y") iy = static_cast<int>(k);
+        if (n == "z") iz = static_cast<int>(k);
+        if ((n == "vertex_indices" || n == "vertex_index") && e.properties[k].isList) iFace = static_cast<int>(k);
     }
+    if (isVertex && (ix < 0 || iy < 0 || iz < 0))
+        throw std::runtime_error("element 'vertex' lacks one of the properties x, y, z");
+    // An element without properties has empty records: nothing to read, however many
+    // it claims (a hostile header claimed 2.7e15 of them: a loop, not an error).
+    if (e.properties.empty()) return;
+    if (isVertex) mesh.positions.reserve(e.count);
+    if (isFace) mesh.faces.reserve(e.count);
+    std::vector<uint32_t> face;
+    for (uint64_t r = 0; r < e.count; ++r) {
+        const std::string what = fmt::format("{} {}", e.name, r);
+        Vec3 p(0.0);
+        face.clear();
+        for (size_t k = 0; k < e.properties.size(); ++k) {
+            const Property& prop = e.properties[k];
+            if (!prop.isList) {
+                double v = body.read(prop.type, what);
+                if (static_cast<int>(k) == ix) p.x = v;
+                if (static_cast<int>(k) == iy) p.y = v;
+                if (static_cast<int>(k) == iz) p.z = v;
+                continue;
+            }
+            double n = body.read(prop.countType, what);
+            if (!(n >= 0) || n != std::floor(n) || n > 65536)
+                throw std::runtime_error(fmt::format("{}: list length {} is not a count", what, n));
+            for (int i = 0; i < static_cast<int>(n); ++i) {
+                double v = body.read(prop.type, what);
+                if (static_cast<int>(k) != iFace) continue;
+                if (!(v >= 0) || v != std::floor(v) || v > 4294967295.0)
+                    throw std::runtime_error(fmt::format("{}: vertex index {} is not a valid index", what, v));
+                face.push_back(static_cast<uint32_t>(v));
+            }
+        }
+        if (isVertex) mesh.positions.push_back(p);
+        if (isFace) mesh.faces.push_back(face);
+    }
+}
+
+}  // namespace
+
+PlyMesh readPly(const std::string& path) {
+    const std::string data = readWholeFile(path);
+    const Header header = readHeader(data);
+    PlyMesh mesh;
+    BodyReader body(data, header.bodyStart, header.format);
+    for (const Element& e : header.elements) readElement(body, header.format, e, mesh);
     return mesh;
 }
 

@@ -23,21 +23,19 @@ constexpr int kMaxSplitDepth = 12;
 constexpr double kSecondRoundShare = 4.0;
 
 double nodeTau(int k) { return SeamProfiles::nodeTau(k); }
-}  // namespace
 
-SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
-                                const RadiositySolution& solution, const Visibility& vis,
-                                const std::vector<uint32_t>& seamVertices, double minEdge, int levels,
-                                size_t* gathers, const std::function<void(double)>& onProgress) {
-    levels = std::clamp(levels, 0, SeamProfiles::kNodes);
-    if (levels == 0 || seamVertices.empty() || solution.vertexIndirect.empty()) return {};
+/// An edge from a seam vertex to one off the seams, with a patch it bounds.
+struct Candidate {
+    uint32_t from, to;
+    size_t patch;
+};
+
+/// The edges at least `minEdge` m long from one of `seamVertices` to a vertex that is not
+/// one, sorted by (from, to), each once.
+std::vector<Candidate> profileEdges(const PatchMesh& mesh, const std::vector<uint32_t>& seamVertices, double minEdge) {
     // The edges from a seam vertex to one off the seams, each with a patch it bounds.
     std::vector<char> seam(mesh.vertices.size(), 0);
     for (uint32_t v : seamVertices) seam[v] = 1;
-    struct Candidate {
-        uint32_t from, to;
-        size_t patch;
-    };
     std::vector<Candidate> candidates;
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         if (!mesh.covered.empty() && mesh.covered[i]) continue;
@@ -53,6 +51,17 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
     candidates.erase(std::unique(candidates.begin(), candidates.end(),
                                  [](const Candidate& x, const Candidate& y) { return x.from == y.from && x.to == y.to; }),
                      candidates.end());
+    return candidates;
+}
+}  // namespace
+
+SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
+                                const RadiositySolution& solution, const Visibility& vis,
+                                const std::vector<uint32_t>& seamVertices, double minEdge, int levels,
+                                size_t* gathers, const std::function<void(double)>& onProgress) {
+    levels = std::clamp(levels, 0, SeamProfiles::kNodes);
+    if (levels == 0 || seamVertices.empty() || solution.vertexIndirect.empty()) return {};
+    const std::vector<Candidate> candidates = profileEdges(mesh, seamVertices, minEdge);
 
     GatherOptions options = GatherOptions::plain();  // near parts only: the far field's settings do not enter
     options.maxSplitDepth = kMaxSplitDepth;
