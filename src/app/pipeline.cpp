@@ -23,7 +23,7 @@ namespace {
 /// The scene built from its description, with its texture images opened.
 scene::Scene buildSceneFrom(const scene::SceneDesc& desc) {
     scene::Scene scene = scene::buildScene(desc);
-    if (!scene.textures.empty()) scene.textureImages = std::make_shared<tonemap::TextureImages>(scene.textures);
+    if (!scene.textures.empty()) scene.textureImages = tonemap::openTextureImages(scene.textures);
     return scene;
 }
 }  // namespace

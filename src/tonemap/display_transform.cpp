@@ -1,16 +1,14 @@
 #include <tonemap/display_transform.h>
 
 #include <core/input_error.h>
+#include <tonemap/image_library.h>
 
-#include <OpenColorIO/OpenColorIO.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
-
-namespace OCIO = OCIO_NAMESPACE;
 
 namespace rayrad::tonemap {
 
@@ -95,80 +93,21 @@ colorspaces:
 
 namespace {
 
-OCIO::ConstConfigRcPtr loadConfig(const DisplayOptions& o) {
-    try {
-        if (!o.ocioConfig.empty()) return OCIO::Config::CreateFromFile(o.ocioConfig.c_str());
-        std::istringstream in(embeddedOcioConfig());
-        return OCIO::Config::CreateFromStream(in);
-    } catch (const OCIO::Exception& e) {
-        throw InputError(placeMessage(o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig, "",
-                                      std::string("cannot load the OpenColorIO config: ") + e.what()));
-    }
-}
-
-/// `"a", "b" or "c"`.
-std::string quotedList(const std::vector<std::string>& names) {
-    std::string out;
-    for (size_t i = 0; i < names.size(); ++i)
-        out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("\"" + names[i] + "\"");
-    return out.empty() ? "none" : out;
-}
-
-/// A display and view of a loaded config, both checked to exist.
-struct DisplayView {
-    OCIO::ConstConfigRcPtr config;
-    std::string configName, display, view;
-};
-
-DisplayView resolveDisplayView(const DisplayOptions& o) {
-    DisplayView dv;
-    dv.config = loadConfig(o);
-    const auto& config = dv.config;
-    dv.configName = o.ocioConfig.empty() ? "embedded OCIO config" : o.ocioConfig;
-    dv.display = o.display.empty() ? config->getDefaultDisplay() : o.display;
-    std::vector<std::string> displays;
-    for (int i = 0; i < config->getNumDisplays(); ++i) displays.push_back(config->getDisplay(i));
-    if (std::find(displays.begin(), displays.end(), dv.display) == displays.end())
-        throw InputError(placeMessage(dv.configName, "--display",
-                                      "unknown display \"" + dv.display + "\" (the config has " + quotedList(displays) + ")"));
-    dv.view = o.view.empty() ? config->getDefaultView(dv.display.c_str()) : o.view;
-    std::vector<std::string> views;
-    for (int i = 0; i < config->getNumViews(dv.display.c_str()); ++i) views.push_back(config->getView(dv.display.c_str(), i));
-    if (std::find(views.begin(), views.end(), dv.view) == views.end())
-        throw InputError(placeMessage(dv.configName, "--view",
-                                      "unknown view \"" + dv.view + "\" for display \"" + dv.display + "\" (it has " +
-                                          quotedList(views) + ")"));
-    return dv;
-}
-
-/// The view transform's name ("" for a view that only encodes).
-std::string viewTransformOf(const DisplayView& dv) {
-    const char* name = dv.config->getDisplayViewTransformName(dv.display.c_str(), dv.view.c_str());
-    return name ? name : "";
-}
-
-OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayView& dv) {
-    try {
-        auto processor = dv.config->getProcessor(OCIO::ROLE_SCENE_LINEAR, dv.display.c_str(), dv.view.c_str(),
-                                                 OCIO::TRANSFORM_DIR_FORWARD);
-        return processor->getDefaultCPUProcessor();
-    } catch (const OCIO::Exception& e) {
-        throw InputError(placeMessage(dv.configName, "display \"" + dv.display + "\", view \"" + dv.view + "\"", e.what()));
-    }
+/// The options' display and view, resolved in their config (the embedded one by default).
+ResolvedView resolveDisplayView(const DisplayOptions& o) {
+    return imageLibrary().resolveView(o.ocioConfig, o.ocioConfig.empty() ? embeddedOcioConfig() : "", o.display, o.view);
 }
 
 }  // namespace
 
 std::optional<std::string> checkDisplayOptions(const DisplayOptions& options) {
-    const DisplayView dv = resolveDisplayView(options);
-    makeProcessor(dv);
-    const std::string curve = viewTransformOf(dv);
+    const std::string curve = resolveDisplayView(options).viewTransform;
     if (curve.empty() || options.tone.op == ToneOperator::Exposure) return std::nullopt;
     return "--view: the view's transform \"" + curve + "\" has its own tone curve, and --tonemap " +
            toneOperatorName(options.tone.op) + " maps the luminance before it: two tone curves (use --tonemap exposure)";
 }
 
-std::string viewToneCurve(const DisplayOptions& options) { return viewTransformOf(resolveDisplayView(options)); }
+std::string viewToneCurve(const DisplayOptions& options) { return resolveDisplayView(options).viewTransform; }
 
 DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display) {
     constexpr double kMaxExposureStops = 64;
@@ -244,21 +183,19 @@ std::string describeDisplay(const HdrImage& image, const DisplayOptions& options
 }
 
 std::vector<float> displayEncode(const std::vector<float>& rgb, const DisplayOptions& options) {
-    auto cpu = makeProcessor(resolveDisplayView(options));
+    const ResolvedView view = resolveDisplayView(options);
     std::vector<float> out = rgb;
-    for (size_t i = 0; i + 2 < out.size(); i += 3) cpu->applyRGB(&out[i]);
+    view.processor->apply(out.data(), out.size() / 3);
     return out;
 }
 
 std::vector<uint8_t> toDisplay(const HdrImage& image, const DisplayOptions& options) {
-    const DisplayView dv = resolveDisplayView(options);
-    auto cpu = makeProcessor(dv);
-    const std::vector<Rgb> linear = toneMapped(image, options, viewTransformOf(dv).empty());
+    const ResolvedView view = resolveDisplayView(options);
+    const std::vector<Rgb> linear = toneMapped(image, options, view.viewTransform.empty());
     std::vector<float> buf(linear.size() * 3);
     for (size_t i = 0; i < linear.size(); ++i)
         for (int c = 0; c < 3; ++c) buf[3 * i + c] = static_cast<float>(linear[i][c]);
-    OCIO::PackedImageDesc desc(buf.data(), image.width, image.height, 3);
-    cpu->apply(desc);
+    view.processor->apply(buf.data(), linear.size());
     std::vector<uint8_t> out(buf.size());
     for (size_t i = 0; i < buf.size(); ++i) {
         float v = std::isfinite(buf[i]) ? std::clamp(buf[i], 0.0f, 1.0f) : 0.0f;

@@ -1,5 +1,6 @@
-// Image files through OpenImageIO: EXR (linear cd/m²) and 8-bit PNG/JPEG, encoded in
-// memory (no library writes or exits on its own) and written by core/output_file.
+// Image files: EXR (linear cd/m²) and 8-bit PNG/JPEG, encoded in memory through OpenImageIO
+// in the image module (tonemap/image_library.h; no library writes or exits on its own) and
+// written by core/output_file.
 #pragma once
 
 #include <core/hdr_image.h>
@@ -36,7 +37,8 @@ void writeDisplayImage(const std::string& path, int width, int height, const std
 /// `attributes`, also its string attributes whose names start with "rayrad:".
 HdrImage readImage(const std::string& path, std::vector<std::pair<std::string, std::string>>* attributes = nullptr);
 
-/// "OpenImageIO 2.4.7, OpenColorIO 2.1.2": the versions this build runs with.
+/// "OpenImageIO 2.4.7, OpenColorIO 2.1.2 (loaded when …)": the versions this build was
+/// compiled against, told without loading them.
 std::string libraryVersions();
 
 }  // namespace rayrad::tonemap

@@ -17,6 +17,15 @@ check "csv rows" test "$(wc -l < "$work/s.csv")" -eq 4
 check "stage times on stderr" grep -q "secondary pass (shooting)" "$work/solve.err"
 check "energy line" grep -q "energy: emitted" "$work/solve.err"
 
+# The image libraries are loaded only by commands that read or write an image: the program
+# does not link them, and a solve to a CSV never opens the image module.
+check "OpenImageIO not linked" test "$(ldd "$rayrad" | grep -c -e OpenImageIO -e OpenColorIO)" -eq 0
+LD_DEBUG=files "$rayrad" solve "$cube" --set radiosity.max_edge=2.5 --sensors "$work/s2.csv" -q > /dev/null 2> "$work/ld.txt"
+check "solve loads no image module" test "$(grep -c 'file=.*librayrad_image' "$work/ld.txt")" -eq 0
+LD_DEBUG=files "$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[8,8] -o "$work/l.png" -q \
+    > /dev/null 2> "$work/ld.txt"
+check "render loads the image module" grep -q 'file=.*librayrad_image' "$work/ld.txt"
+
 "$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[16,16] -o "$work/c.exr" -o "$work/c.png" -o "$work/c.jpg" -q > /dev/null 2>&1
 check "render exit 0" test $? -eq 0
 check "exr written" test -s "$work/c.exr"
