@@ -22,13 +22,14 @@ tonemap::Picture gridPicture(const std::vector<SensorResult>& results) {
         field.height = nv;
         field.values.assign(static_cast<size_t>(nu) * nv, std::numeric_limits<double>::quiet_NaN());
         for (const auto& r : results)
-            if (r.sensor.grid == stats.grid && r.sensor.gridU >= 0)
+            if (r.sensor.grid == stats.grid && r.sensor.gridU >= 0 && r.excluded.empty())  // inside a solid: blank
                 field.values[static_cast<size_t>(r.sensor.gridV) * nu + r.sensor.gridU] = luminance(r.value.direct + r.value.indirect);
         tonemap::FalseColourOptions o;
         o.unit = "lx";
         o.pixelsPerValue = std::clamp(480 / std::max(nu, nv), 4, 64);
-        o.title = fmt::format("{}: Emin {:.0f}, Eavg {:.0f}, Emax {:.0f} lx, U0 {:.2f}", stats.grid, stats.minimum, stats.mean,
-                              stats.maximum, stats.u0());
+        o.title = fmt::format("{}: Emin {:.0f}, Eavg {:.0f}, Emax {:.0f} lx, U0 {:.2f}{}", stats.grid, stats.minimum,
+                              stats.mean, stats.maximum, stats.u0(),
+                              stats.excluded ? fmt::format(" ({} inside solids left out)", stats.excluded) : "");
         pictures.push_back(tonemap::renderFalseColour(field, o));
     }
     return pictures.empty() ? tonemap::Picture{} : tonemap::stackPictures(pictures);

@@ -11,7 +11,8 @@ namespace rayrad::app {
 
 struct GridStatistics {
     std::string grid;
-    size_t points = 0;
+    size_t points = 0;    ///< the points the figures are of
+    size_t excluded = 0;  ///< points inside a solid or buried (SensorResult::excluded), not counted
     double minimum = 0, mean = 0, maximum = 0;  ///< total illuminance Y, lx
     double u0() const { return mean > 0 ? minimum / mean : 0; }         ///< Emin / Eavg
     double minToMax() const { return maximum > 0 ? minimum / maximum : 0; }  ///< Emin / Emax
@@ -19,13 +20,14 @@ struct GridStatistics {
 
 /// One entry per sensor grid, in the order the grids appear; the total illuminance
 /// (direct + gathered indirect) of each point, every point weighted alike (the points
-/// are cell centres of equal cells).
+/// are cell centres of equal cells). Points inside a solid are no measurement: counted
+/// apart, not in the figures (a grid with no other point has none: 0).
 std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& results);
 
 /// An aligned text table for the terminal.
 std::string gridTable(const std::vector<GridStatistics>& grids);
 
-/// CSV: grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax.
+/// CSV: grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax,excluded_points.
 std::string gridCsv(const std::vector<GridStatistics>& grids);
 
 /// The summary file beside a sensor CSV: "out/room.csv" → "out/room.grids.csv".

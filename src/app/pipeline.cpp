@@ -234,7 +234,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
     radiosity::findContacts(run.mesh, run.scene, *run.embree);
-    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors)) {
+    std::vector<std::string> inSolid;  // per sensor: why it is no measurement, or ""
+    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors, &inSolid)) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
         run.warnings.push_back(std::move(w));
     }
@@ -248,7 +249,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
 
     if (options.wantSensors && !run.scene.sensors.empty()) {
         const auto values = radiosity::gatherSensors(run.scene, run.mesh, *run.embree, run.lighting, log);
-        for (size_t i = 0; i < values.size(); ++i) run.sensors.push_back({run.scene.sensors[i], values[i]});
+        for (size_t i = 0; i < values.size(); ++i)
+            run.sensors.push_back({run.scene.sensors[i], values[i], i < inSolid.size() ? inSolid[i] : std::string()});
     } else if (options.wantSensors) {
         run.skipped.push_back("sensors (the scene has none)");
     } else if (!run.scene.sensors.empty()) {

@@ -78,12 +78,14 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
         if (r.sensor.refDirect) e["ref_direct_lx"] = *r.sensor.refDirect;
         if (r.sensor.refIndirect) e["ref_indirect_lx"] = *r.sensor.refIndirect;
         if (r.sensor.refTotal) e["ref_total_lx"] = *r.sensor.refTotal;
+        if (!r.excluded.empty()) e["excluded"] = r.excluded;
         j["sensors"].push_back(e);
     }
     j["grids"] = json::array();
     for (const auto& g : gridStatistics(run.sensors))
         j["grids"].push_back({{"grid", g.grid}, {"points", g.points}, {"emin_lx", g.minimum}, {"eavg_lx", g.mean},
-                              {"emax_lx", g.maximum}, {"u0", g.u0()}, {"emin_emax", g.minToMax()}});
+                              {"emax_lx", g.maximum}, {"u0", g.u0()}, {"emin_emax", g.minToMax()},
+                              {"excluded_points", g.excluded}});
     if (groups) j["light_groups"] = lightGroupJson(run.sensors, *groups);
     return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // names may come from --set or mesh files
 }

@@ -82,7 +82,8 @@ class Prober {
 }  // namespace
 
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
-                                       const raytrace::EmbreeScene& embree, bool checkSensors) {
+                                       const raytrace::EmbreeScene& embree, bool checkSensors,
+                                       std::vector<std::string>* inSolid) {
     std::vector<std::string> out = scene.warnings.missingTextures;
     const double diagonal = scene.diagonal();
     const double near = std::max(5e-3, 1e-4 * diagonal);  // "buried": covered within a few mm
@@ -150,6 +151,7 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
     // the sensors' order.
     const size_t sensors = checkSensors ? scene.sensors.size() : 0;
     std::vector<std::string> sensorLines(sensors);
+    if (inSolid) inSolid->assign(sensors, std::string());
     tbb::parallel_for(size_t(0), sensors, [&](size_t i) {
         const scene::Sensor& s = scene.sensors[i];
         // As the gather sees it: on a surface's rim, from just inside the sensor's patch.
@@ -158,19 +160,25 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
             if (radiosity::onSurfaceBoundary(mesh, *at, 1e-5 * diagonal, &embree))
                 x = radiosity::nudgeInside(mesh, at->patch, x, 1e-6 * diagonal);
         Probe p = prober.probe(x, s.normal, near);
+        std::string inside;  // why it is no measurement
         if (p.fraction(p.mirrorBacks) >= 0.5)
             sensorLines[i] = fmt::format("/sensors: sensor \"{}\" at {} is behind a mirror ({} of {} hemisphere rays "
                                          "hit its back): it will read about 0",
                                          s.name, toString(s.position), p.mirrorBacks, p.rays);
-        else if (p.coveredFraction() >= kEnclosedFraction)
+        else if (p.coveredFraction() >= kEnclosedFraction) {
+            inside = "buried";
             sensorLines[i] = fmt::format("/sensors: sensor \"{}\" at {} is buried: {:.0f} % of its view (cosine-weighted) "
                                          "meets a surface within {:.3g} m, so it will read about 0 (check its position "
                                          "and normal)",
                                          s.name, toString(s.position), 100 * p.coveredFraction(), near);
-        else if (enclosed(p))
+        } else if (enclosed(p)) {
+            inside = "inside a solid";
             sensorLines[i] = fmt::format("/sensors: sensor \"{}\" at {} is inside a solid ({} of {} hemisphere rays hit "
                                          "the inside of surfaces): it will read about 0",
                                          s.name, toString(s.position), p.backFaces, p.rays);
+        }
+        if (!inside.empty() && !s.grid.empty()) sensorLines[i] += "; left out of its grid's statistics";
+        if (inSolid) (*inSolid)[i] = inside;
     });
     for (auto& line : sensorLines)
         if (!line.empty()) out.push_back(std::move(line));

@@ -20,8 +20,11 @@ namespace rayrad::app {
 ///    will read about 0) or behind a mirror;
 ///  - a mirror whose front faces nothing (wound backwards, or against a wall).
 /// `checkSensors` false: the sensors are not looked at (a render that does not gather them).
+/// `inSolid` (optional, with checkSensors): per sensor, why it is no measurement — "inside
+/// a solid" or "buried" (under a surface within a few millimetres) — or "".
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
-                                       const raytrace::EmbreeScene& embree, bool checkSensors = true);
+                                       const raytrace::EmbreeScene& embree, bool checkSensors = true,
+                                       std::vector<std::string>* inSolid = nullptr);
 
 /// Above this share of the emitted flux, light on the backs of one-sided surfaces is
 /// worth a warning.

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include <optional>
@@ -58,6 +60,9 @@ std::string sensorCsv(const std::vector<SensorResult>& results) {
     if (refs) s += ",ref_direct_lx,ref_indirect_lx,ref_total_lx,err_direct_pct,err_indirect_pct,err_total_pct";
     s += ",indirect_vertex_lx";
     if (refs) s += ",err_indirect_vertex_pct";
+    // Points that are no measurement (inside a solid), marked when there are any.
+    const bool marks = std::any_of(results.begin(), results.end(), [](const SensorResult& r) { return !r.excluded.empty(); });
+    if (marks) s += ",excluded";
     s += "\n";
     for (const auto& r : results) {
         Row row = rowOf(r);
@@ -73,6 +78,7 @@ std::string sensorCsv(const std::vector<SensorResult>& results) {
                              cell(errorPct(row.total, r.sensor.refTotal), "{:.6f}"));
         s += "," + cell(row.vertex);
         if (refs) s += "," + cell(row.vertex ? errorPct(*row.vertex, r.sensor.refIndirect) : std::nullopt, "{:.6f}");
+        if (marks) s += "," + r.excluded;
         s += "\n";
     }
     return s;

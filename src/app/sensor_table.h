@@ -12,6 +12,10 @@ namespace rayrad::app {
 struct SensorResult {
     scene::Sensor sensor;
     radiosity::SensorValue value;
+    /// Why the point is no measurement — "inside a solid", "buried" (under a surface
+    /// within a few millimetres) — or "": such grid points are left out of the grid's
+    /// statistics, and the CSV marks them.
+    std::string excluded;
 };
 
 /// CSV with the columns

@@ -1,5 +1,8 @@
-// Grid statistics (issue 14): Emin, Eavg, Emax, U0 = Emin/Eavg and Emin/Emax per grid.
+// Grid statistics: Emin, Eavg, Emax, U0 = Emin/Eavg and Emin/Emax per grid.
 #include <app/grid_statistics.h>
+#include <app/pipeline.h>
+
+#include "test_support.h"
 
 #include <catch2/catch.hpp>
 
@@ -31,7 +34,38 @@ TEST_CASE("grid statistics: minimum, mean, maximum and uniformities of each grid
     CHECK(grids[0].minToMax() == Approx(200.0 / 600));
     CHECK(grids[1].grid == "floor");
     CHECK(grids[1].u0() == Approx(1));
-    CHECK(app::gridCsv(grids) ==
-          "grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax\ndesk,3,200,400,600,0.500000,0.333333\nfloor,1,100,100,100,1.000000,1.000000\n");
+    CHECK(app::gridCsv(grids) == "grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax,excluded_points\n"
+                                 "desk,3,200,400,600,0.500000,0.333333,0\nfloor,1,100,100,100,1.000000,1.000000,0\n");
     CHECK(app::gridSummaryPath("out/room.csv") == "out/room.grids.csv");
+}
+
+TEST_CASE("grid statistics leave out points inside solids and count them", "[app][grids]") {
+    std::vector<app::SensorResult> results;
+    for (double e : {400.0, 0.0, 200.0}) {
+        app::SensorResult r;
+        r.sensor.grid = "floor";
+        r.value.direct = Rgb(e);
+        if (e == 0) r.excluded = "inside a solid";
+        results.push_back(r);
+    }
+    const auto grids = app::gridStatistics(results);
+    REQUIRE(grids.size() == 1);
+    CHECK(grids[0].points == 2);
+    CHECK(grids[0].excluded == 1);
+    CHECK(grids[0].minimum == Approx(200));
+    CHECK(grids[0].u0() == Approx(200.0 / 300));
+    CHECK(app::sensorCsv(results).find(",excluded\n") != std::string::npos);
+    CHECK(app::sensorCsv(results).find(",inside a solid\n") != std::string::npos);
+}
+
+TEST_CASE("the Cornell box's floor grid: the two points inside the blocks are left out", "[app][grids]") {
+    app::PipelineOptions o;
+    o.quiet = true;
+    o.overrides = {{"radiosity.max_edge", "0.1"}};
+    const auto run = app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), o);
+    const auto grids = app::gridStatistics(run.sensors);
+    REQUIRE(grids.size() == 1);
+    CHECK(grids[0].points == 14);
+    CHECK(grids[0].excluded == 2);
+    CHECK(grids[0].minimum > 0);
 }
