@@ -66,7 +66,7 @@ scene = {
          "counts": [4, 4], "normal": [0, 1, 0]},
     ],
     "radiosity": {"max_edge": 0.05, "stop_unshot": 0.001},
-    "render": {"spp": 16, "seed": 1, "area_light_samples": 16},
+    "render": {"spp": 16, "seed": 1},
 }
 json.dump(scene, sys.stdout, indent=1)
 print()

@@ -176,7 +176,10 @@ struct ReconstructionOptions {
 struct RenderOptions {
     int samplesPerPixel = 4;      ///< jittered (stratified) samples per pixel
     uint64_t seed = 1;            ///< the same seed gives the same image
-    int areaLightSamples = 16;    ///< shadow rays per area light per pixel (⌈n / spp⌉ per sample)
+    /// Shadow rays per area light per pixel (⌈n / spp⌉ per sample; fewer for far lights).
+    /// 64: the Cornell box at 256² and 16 spp shows no grain in its penumbrae (between two
+    /// seeds p95 3.0 % against 8.4 % at 16; the ray trace 1.09 against 0.58 CPU-s).
+    int areaLightSamples = 64;
     int sensorAreaLightSamples = 256;  ///< shadow rays per area light at a sensor
     /// Adaptive shadow testing at hits (DirectLight::illuminanceForDisplay): lights are
     /// shadow-tested strongest first until the rest could add less than this fraction of

@@ -21,6 +21,7 @@ app::PipelineRun renderCornell(int size, int spp, const std::string& maxEdge) {
     o.wantSensors = false;
     o.overrides = {{"camera.resolution", fmt::format("[{0}, {0}]", size)},
                    {"render.spp", std::to_string(spp)},
+                   {"render.area_light_samples", "16"},  // as when the reference was made
                    {"radiosity.max_edge", maxEdge}};
     return app::runPipeline(test::sourcePath("scenes/cornell/cornell.json"), o);
 }
