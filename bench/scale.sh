@@ -21,7 +21,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 if [ "${1:-}" = "--living-room" ]; then
-    scene=../shared/scenes/living-room/living-room.json
+    scene=scenes/living-room/living-room.json
     [ -f "$scene" ] || { echo "bench/scale.sh: $scene not found" >&2; exit 2; }
     # shellcheck disable=SC2086
     "$rayrad" render "$scene" --set radiosity.max_seconds="${2:-1800}" --set 'camera.resolution=[1280,720]' \

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark and picture (issue 16): a walkthrough of the living room (../shared/scenes/
+# Benchmark and picture (issue 16): a walkthrough of the living room (scenes/
 # living-room, all defaults: premeshing, mirrors on) solved once (solve --save), its 50
 # frames (bench/living_room_path.json, 480 × 270, 4 spp) rendered from the saved solution
 # by GNU parallel in five ranges of ten, a contact sheet (oiiotool), and the lit mesh
@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 rayrad=$PWD/build/src/rayrad
 [ -x "$rayrad" ] || scripts/build
-scene=${SCENE:-../shared/scenes/living-room/living-room.json}
+scene=${SCENE:-scenes/living-room/living-room.json}
 out=${1:-out/walkthrough}
 mkdir -p "$out"
 path=$(tr -d '\n' < bench/living_room_path.json)

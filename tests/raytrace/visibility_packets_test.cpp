@@ -66,10 +66,9 @@ TEST_CASE("rays traced together answer as single rays do (office: furniture on t
     CHECK(m.fromEdges <= m.raysFromEdges / 1000);
 }
 
-TEST_CASE("rays traced together answer as single rays do (living room: an imported mesh, when beside the checkout)",
-          "[visibility]") {
-    const std::string file = test::sourcePath("../shared/scenes/living-room/living-room.json");
-    if (!std::filesystem::exists(file)) return;  // the real scene lives outside the repository
+TEST_CASE("rays traced together answer as single rays do (the living room: an imported mesh)", "[visibility]") {
+    const std::string file = test::sourcePath("scenes/living-room/living-room.json");
+    REQUIRE(std::filesystem::exists(file));
     const Mismatches m = mismatches(file, 20000);
     CHECK(m.fromInside == 0);
     CHECK(m.fromEdges <= m.raysFromEdges / 1000);
