@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the bench hall (issue 12): a 20 x 40 x 4 m open-plan office with 100 ceiling
+"""Writes the bench hall: a 20 x 40 x 4 m open-plan office with 100 ceiling
 troffers (0.6 x 0.6 m emissive quads of 2 653 cd/m², 3 000 lm each, 1 cm below the ceiling), 100 desks
 (boxes standing on the carpet) and 20 cabinets along the long walls. With the default
 max_edge below it premeshes to 104 240 patches.
@@ -53,7 +53,7 @@ def main():
         objects.append(box("cabinet", [0.0, 0.0, z], [0.45, 1.2, z + 1.0]))
         objects.append(box("cabinet", [W - 0.45, 0.0, z], [W, 1.2, z + 1.0]))
     scene = {
-        "description": "Bench hall (issue 12): 20 x 40 x 4 m office, 100 troffers of 3 000 lm, "
+        "description": "Bench hall: 20 x 40 x 4 m office, 100 troffers of 3 000 lm, "
                        "100 desks, 20 cabinets. Written by bench/hall.py.",
         "materials": {
             "carpet": {"type": "diffuse", "reflectance": [0.25, 0.22, 0.2]},

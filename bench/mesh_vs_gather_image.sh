@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark (issue 15, item 3): how far the radiosity mesh's indirect light is from a final
+# Benchmark: how far the radiosity mesh's indirect light is from a final
 # gather at every hit, in an image. One solve, saved; then two renders from it with the
 # same seed (so the direct light is the same, sample for sample): the indirect light
 # interpolated from the mesh's vertex values (the default), and gathered at each hit

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scale benchmark (issue 12). For the paper's empty cube at each max_edge (default 1 0.5
+# Scale benchmark. For the paper's empty cube at each max_edge (default 1 0.5
 # 0.25 0.125 0.0625: 1 200 … 307 200 triangles; add 0.03125 for 1.2 M) it prints the
 # shots, the CPU seconds (user + sys, all threads) of each stage, wall time, peak memory,
 # bytes per patch above the peak after parsing, the growth exponent of the total CPU time
@@ -7,7 +7,7 @@
 # three sensors A/B/C (against Table 1; the Monte Carlo reference is 0.07–0.09 % above it).
 # Usage: bench/scale.sh [max_edge ...]
 #        bench/scale.sh --living-room [max_seconds]   (the living room, mirrors on, defaults: solve and
-#                                                      a 1280 x 720, 4 spp render, as issue 12's target
+#                                                      a 1280 x 720, 4 spp render, as target
 #                                                      counts them; stage table; the solve stops at
 #                                                      max_seconds, default 1800)
 #        bench/scale.sh --hall                        (bench/hall.py: 100 troffers, 104 k patches;

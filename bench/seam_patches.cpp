@@ -1,4 +1,4 @@
-// Benchmark (issue 15, item 3): the solution's patch values beside a concave seam against
+// Benchmark: the solution's patch values beside a concave seam against
 // the exact sum of the same solution at their centroids. For the Cornell box's ceiling and
 // back wall, the patches within 70 mm of the seam between them: the solve's indirect
 // illuminance E_P (collocated at the centroid) and a final gather at the centroid with
@@ -28,11 +28,14 @@ int main(int argc, char** argv) {
     options.quiet = true;
     for (int i = 1; i < argc; ++i) options.overrides.push_back(scene::parseOverride(argv[i]));
     const auto start = std::chrono::steady_clock::now();
-    const app::PipelineRun run = app::runPipeline(std::string(RAYRAD_SOURCE_DIR) + "/scenes/cornell/cornell.json", options);
+    const app::PipelineRun run =
+        app::runPipeline(std::string(RAYRAD_SOURCE_DIR) + "/scenes/cornell/cornell.json", options);
     const double solveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    radiosity::GatherOptions exact = radiosity::GatherOptions::plain();  // every patch on its own: levels 0, no far nodes, no shared rays
+    radiosity::GatherOptions exact =
+        radiosity::GatherOptions::plain();  // every patch on its own: levels 0, no far nodes, no shared rays
     exact.sharedRays = false;
-    const radiosity::Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree, exact);
+    const radiosity::Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree,
+                                       exact);
     radiosity::GatherMemo memo;
     // (surface, mm from the seam rounded to 0.1) → relative differences, %
     std::map<std::pair<std::string, double>, std::vector<double>> rows;
@@ -44,11 +47,13 @@ int main(int argc, char** argv) {
         const double mm = std::round(10000 * (wall ? kCeilingY - p.centroid.y : kBackZ - p.centroid.z)) / 10;
         const double gathered = luminance(gatherer.indirectAt(p.centroid, p.normal, memo));
         if (gathered > 0)
-            rows[{wall ? "back wall" : "ceiling", mm}].push_back(100 * (luminance(run.lighting.solution.indirect[i]) / gathered - 1));
+            rows[{wall ? "back wall" : "ceiling", mm}].push_back(
+                100 * (luminance(run.lighting.solution.indirect[i]) / gathered - 1));
     }
-    fmt::print("patches beside the Cornell ceiling's seam with the back wall: the solve's E_P against the exact sum at "
-               "the centroid (solve {:.1f} s wall, {} patches)\n",
-               solveSeconds, run.mesh.patches.size());
+    fmt::print(
+        "patches beside the Cornell ceiling's seam with the back wall: the solve's E_P against the exact sum at "
+        "the centroid (solve {:.1f} s wall, {} patches)\n",
+        solveSeconds, run.mesh.patches.size());
     fmt::print("{:<10} {:>8} {:>8} {:>10} {:>10}\n", "surface", "mm", "patches", "worst %", "median %");
     for (auto& [key, diffs] : rows) {
         std::sort(diffs.begin(), diffs.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });

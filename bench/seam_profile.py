@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The indirect light across a concave seam: the Cornell box's ceiling and back wall (issue 15 item 3).
+"""The indirect light across a concave seam: the Cornell box's ceiling and back wall .
 
 Sensors in four rows run away from the seam where the ceiling meets the back wall: two
 on the ceiling (x = 0.10 and 0.45 m) and two down the back wall, from 0.3 mm to 280 mm.

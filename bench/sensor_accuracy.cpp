@@ -1,5 +1,5 @@
 // Benchmark: the sensor gather on the paper's cube against an independent Monte Carlo
-// reference (issue 11, item 4; the path tracer is tests/cube_path_tracer.h). Prints the
+// reference (the path tracer is tests/cube_path_tracer.h). Prints the
 // points near an edge and a corner one by one (reference, how far its two independent
 // halves differ, gathered value, error), then RMS and max over random points on all six
 // walls (the ten worst listed), and the time of the solve and the gathers.
@@ -10,7 +10,7 @@
 //        (a K x K grid, default 32, at the cell centres of the back wall: the grid's error
 //        and the sensor stage's CPU seconds against the solve's, then the outer ring of
 //        cells beside the side walls run alone, where the corner and midpoint re-gathers
-//        are; issue 12)
+//        are)
 #include <app/pipeline.h>
 #include <core/random.h>
 
@@ -34,7 +34,9 @@ namespace cube = rayrad::test::cube;
 
 namespace {
 
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+double cpuSeconds() {
+    return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+}
 
 struct Point {
     Vec3 x, n;
@@ -65,9 +67,10 @@ int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstS
     if (!addSettings(argc, argv, firstSetting, options)) return 2;
     // A sensor on the back wall facing into the cube, appended to a scene's sensor list.
     auto addSensor = [](std::string& list, const std::string& name, const Vec3& x) {
-        list += fmt::format("{}{{\"name\": \"{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], "
-                            "\"normal\": [0, 0, -1]}}",
-                            list.empty() ? "" : ", ", name, x.x, x.y, x.z);
+        list += fmt::format(
+            "{}{{\"name\": \"{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], "
+            "\"normal\": [0, 0, -1]}}",
+            list.empty() ? "" : ", ", name, x.x, x.y, x.z);
     };
     std::vector<Vec3> points;
     std::string sensors;
@@ -117,8 +120,8 @@ int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstS
     double sum2 = 0, sum = 0, worst = 0, spread2 = 0;
     Vec3 worstAt(0.0);
     for (size_t i = 0; i < points.size(); ++i) {
-        const size_t d = static_cast<size_t>(
-            std::lower_bound(distinct.begin(), distinct.end(), canonical(points[i])) - distinct.begin());
+        const size_t d = static_cast<size_t>(std::lower_bound(distinct.begin(), distinct.end(), canonical(points[i])) -
+                                             distinct.begin());
         const double ref = 0.5 * (halfA[d] + halfB[d]);
         const double err = luminance(run.sensors[i].value.indirect) / ref - 1;
         sum += err, sum2 += err * err;
@@ -129,17 +132,19 @@ int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstS
         spread2 += s * s;
     }
     const double n = static_cast<double>(points.size());
-    fmt::print("cube, max_edge {} ({} triangles): {} x {} grid on the back wall, {} distinct references of 2 x {} "
-               "paths (their mean is good to {:.3f} % RMS)\n",
-               maxEdge, run.mesh.patches.size(), k, k, distinct.size(), paths,
-               100 * std::sqrt(spread2 / static_cast<double>(distinct.size())));
+    fmt::print(
+        "cube, max_edge {} ({} triangles): {} x {} grid on the back wall, {} distinct references of 2 x {} "
+        "paths (their mean is good to {:.3f} % RMS)\n",
+        maxEdge, run.mesh.patches.size(), k, k, distinct.size(), paths,
+        100 * std::sqrt(spread2 / static_cast<double>(distinct.size())));
     fmt::print("gathered indirect against the reference: RMS {:.3f} %, mean {:+.3f} %, max {:+.3f} % at {}\n",
                100 * std::sqrt(sum2 / n), 100 * sum / n, 100 * worst, toString(worstAt));
     fmt::print("solve {:.2f} CPU-s; sensor stage {:.2f} CPU-s ({:.2f} s wall, {} gathers): {:.2f} x the solve\n",
                solveCpu, sensorCpu, sensorWall, run.lighting.sensorGathers, sensorCpu / solveCpu);
-    fmt::print("the outer ring of cells alone, beside the side walls ({} sensors, a run of its own): "
-               "{:.2f} CPU-s, {} gathers\n",
-               ringCount, ringCpu, ringRun.lighting.sensorGathers);
+    fmt::print(
+        "the outer ring of cells alone, beside the side walls ({} sensors, a run of its own): "
+        "{:.2f} CPU-s, {} gathers\n",
+        ringCount, ringCpu, ringRun.lighting.sensorGathers);
     return 0;
 }
 
@@ -178,9 +183,9 @@ int main(int argc, char** argv) {
     }
     std::string sensors;
     for (size_t i = 0; i < points.size(); ++i)
-        sensors += fmt::format("{}{{\"name\": \"p{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], \"normal\": [{}, {}, {}]}}",
-                               i ? ", " : "", i, points[i].x.x, points[i].x.y, points[i].x.z, points[i].n.x,
-                               points[i].n.y, points[i].n.z);
+        sensors += fmt::format(
+            "{}{{\"name\": \"p{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], \"normal\": [{}, {}, {}]}}",
+            i ? ", " : "", i, points[i].x.x, points[i].x.y, points[i].x.z, points[i].n.x, points[i].n.y, points[i].n.z);
     const std::string path = "/tmp/rayrad_bench_sensor_accuracy.json";
     std::ofstream(path) << cube::scene(sensors, maxEdge);
     app::PipelineOptions options;
@@ -196,10 +201,11 @@ int main(int argc, char** argv) {
     double gatherSeconds = 0;
     for (const auto& stage : run.report.stages())
         if (stage.name.rfind("sensors", 0) == 0) gatherSeconds = stage.seconds;
-    fmt::print("cube, max_edge {} ({} triangles), gather_refine_levels {}: solve + {} gathers {:.1f} s wall, {:.1f} "
-               "CPU-s (gathers {:.1f} s wall); reference 2 x {} paths per point\n",
-               maxEdge, run.mesh.patches.size(), run.scene.gather.gatherRefineLevels, points.size(), seconds, cpu,
-               gatherSeconds, paths);
+    fmt::print(
+        "cube, max_edge {} ({} triangles), gather_refine_levels {}: solve + {} gathers {:.1f} s wall, {:.1f} "
+        "CPU-s (gathers {:.1f} s wall); reference 2 x {} paths per point\n",
+        maxEdge, run.mesh.patches.size(), run.scene.gather.gatherRefineLevels, points.size(), seconds, cpu,
+        gatherSeconds, paths);
     // The references, in parallel (each point's two halves have their own streams).
     std::vector<double> halfA(points.size()), halfB(points.size());
     tbb::parallel_for(size_t(0), 2 * points.size(), [&](size_t k) {
@@ -216,8 +222,8 @@ int main(int argc, char** argv) {
         rows.push_back({i, ref, std::abs(halfA[i] - halfB[i]) / ref, gathered, gathered / ref - 1});
     }
     auto print = [&](const Row& r) {
-        fmt::print("{:<14} {:>36} {:>11.2f} {:>8.3f}% {:>11.2f} {:>+7.3f}%\n", points[r.i].kind, toString(points[r.i].x),
-                   r.ref, 100 * r.spread, r.gathered, 100 * r.err);
+        fmt::print("{:<14} {:>36} {:>11.2f} {:>8.3f}% {:>11.2f} {:>+7.3f}%\n", points[r.i].kind,
+                   toString(points[r.i].x), r.ref, 100 * r.spread, r.gathered, 100 * r.err);
     };
     fmt::print("{:<14} {:>36} {:>11} {:>9} {:>11} {:>8}\n", "point", "position", "reference", "±halves", "gathered",
                "error");

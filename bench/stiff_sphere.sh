@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark: the closed diffuse sphere at ρ → 1 (issue 5). Radius 1, seen from inside,
+# Benchmark: the closed diffuse sphere at ρ → 1. Radius 1, seen from inside,
 # 100 cd off centre at (0.2, 0.4, 0.6); every point has E_ind = ρ/(1−ρ) Φ/A, A the
 # polyhedron's area (method.md). Prints shots, solve + gather time, the gathered E_ind at
 # three points with its error, the residual it stopped at, and the energy account, with

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Vertex reconstruction against the final gather on the Cornell box's floor (issue 15 item 3).
+"""Vertex reconstruction against the final gather on the Cornell box's floor .
 
 A 64 x 64 sensor grid lies on the floor (y = 0), so each point has both the final gather
 (`indirect_lx`) and the vertex-interpolated indirect light the ray tracer shows

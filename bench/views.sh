@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark (issue 16): three views of the office rendered one run each (three solves), in
+# Benchmark: three views of the office rendered one run each (three solves), in
 # one run with three --camera (one solve, three ray traces), and as solve --save followed by
 # three runs of render --solution (one solve, three ray traces in separate processes). Prints each run's CPU seconds
 # (user + sys, all threads, from the stage table) and wall seconds, and the stages of the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark and picture (issue 16): a walkthrough of the living room (scenes/
+# Benchmark and picture: a walkthrough of the living room (scenes/
 # living-room, all defaults: premeshing, mirrors on) solved once (solve --save), its 50
 # frames (bench/living_room_path.json, 480 × 270, 4 spp) rendered from the saved solution
 # by GNU parallel in five ranges of ten, a contact sheet (oiiotool), and the lit mesh

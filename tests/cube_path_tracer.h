@@ -1,4 +1,4 @@
-// An independent reference for the sensor gather on the paper's cube (issue 11, item 4),
+// An independent reference for the sensor gather on the paper's cube,
 // shared by tests/real_scenes/sensor_accuracy_test.cpp and bench/sensor_accuracy.cpp.
 // The cube [0, 10]³ is convex and closed, so a path tracer needs no visibility: from x,
 // cosine-sampled directions hit the walls at y_1, y_2, … and

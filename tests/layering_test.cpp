@@ -63,7 +63,8 @@ std::string forbidden(const std::string& from, const std::string& header) {
     if (a == b) return "";
     if (rank(b) > rank(a)) return a + " may not include " + b + " (it comes later in the data flow)";
     if (a == "tonemap" && b != "core") return "tonemap depends on core only";
-    if (a == "image_module" && b != "core" && b != "tonemap") return "the image module depends on core and tonemap only";
+    if (a == "image_module" && b != "core" && b != "tonemap")
+        return "the image module depends on core and tonemap only";
     if (b == "image_module") return "the image module is loaded (tonemap/image_library.h), not included";
     const bool outsideRadiosity = a == "raytrace" || a == "app";
     if (outsideRadiosity && b.rfind("radiosity/", 0) == 0)

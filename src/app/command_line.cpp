@@ -11,63 +11,81 @@ namespace rayrad::app {
 namespace {
 
 void addCommon(CLI::App* cmd, CommonArgs& a) {
-    cmd->add_option("scene", a.scene, "Scene file (JSON, see docs/scene-format.md); - reads it from standard input")->required();
+    cmd->add_option("scene", a.scene, "Scene file (JSON, see docs/scene-format.md); - reads it from standard input")
+        ->required();
     cmd->add_option("--set", a.sets, "Override a scene value, e.g. --set radiosity.max_edge=0.25 (repeatable)");
     cmd->add_option("--threads", a.threads, "Worker threads (default 0: all cores)")->check(CLI::Range(0, kMaxThreads));
     cmd->add_flag("-q,--quiet", a.quiet, "No progress line");
 }
 
 void addReports(CLI::App* cmd, ReportArgs& r) {
-    cmd->add_option("--convergence", r.convergence,
-                    "Log error against time at every push-pull as CSV (seconds, shots, unshot % of the emitted flux, and the "
-                    "indirect error at every sensor with a reference: vertex values always, the gather each "
-                    "time the unshot energy has halved)");
+    cmd->add_option(
+        "--convergence", r.convergence,
+        "Log error against time at every push-pull as CSV (seconds, shots, unshot % of the emitted flux, and the "
+        "indirect error at every sensor with a reference: vertex values always, the gather each "
+        "time the unshot energy has halved)");
     cmd->add_option("--report", r.report, "Write a JSON account of the run (stages, time, memory, sensors)");
-    cmd->add_option("--grid-picture", r.gridPicture,
-                    "Write the sensor grids' illuminance in false colour (.png/.jpg): isolux lines, legend, statistics");
+    cmd->add_option(
+        "--grid-picture", r.gridPicture,
+        "Write the sensor grids' illuminance in false colour (.png/.jpg): isolux lines, legend, statistics");
 }
 
 void addRender(CLI::App& cli, RenderArgs& a) {
     auto* render = cli.add_subcommand("render", "Solve the lighting and render the scene's camera view");
     addCommon(render, a.common);
-    render->add_option("-o,--output", a.outputs, "Output image(s): .exr (linear cd/m²), .png or .jpg (display)")->required();
-    render->add_option("--sensors", a.csv, "Also write the sensor table as CSV (sensors are gathered only when asked for)");
+    render->add_option("-o,--output", a.outputs, "Output image(s): .exr (linear cd/m²), .png or .jpg (display)")
+        ->required();
+    render->add_option("--sensors", a.csv,
+                       "Also write the sensor table as CSV (sensors are gathered only when asked for)");
     render->add_option("--solution", a.solution,
                        "Render from a solution saved by solve --save (no solve); refused if it was computed for other "
                        "geometry, materials, lights or settings");
     render->add_option("--tile", a.tile,
                        "I/N: render only the I-th of N horizontal bands into an EXR tile; rayrad merge joins the tiles "
                        "(bit-identical to rendering the whole)");
-    render->add_option("--frames", a.frames,
-                       "all, K or A:B: render these frames (from 0) of the scene's \"camera_path\", images NAME.KKKK.EXT, "
-                       "each written when done, all exposed alike (from the solution, not per frame)");
+    render->add_option(
+        "--frames", a.frames,
+        "all, K or A:B: render these frames (from 0) of the scene's \"camera_path\", images NAME.KKKK.EXT, "
+        "each written when done, all exposed alike (from the solution, not per frame)");
     render->add_option("--camera", a.cameras,
                        "The view(s) to render, by name (\"camera\", or a name in \"cameras\"), repeatable, or all; "
                        "several: one solve, a ray trace each, images NAME.VIEW.EXT (default: the first view)");
     render->add_option("--spp", a.spp, "Samples per pixel (default: render.spp, 4)")->check(CLI::Range(1, 65536));
-    render->add_option("--seed", a.seed, "Random seed; the same seed gives the same image (default 1)")->check(CLI::Range(0, std::numeric_limits<int>::max()));
-    render->add_option("--exposure", a.exposure, "\"auto\" (log-average luminance → 0.18) or stops: 2^stops per cd/m²")->default_str("auto");
-    render->add_option("--tonemap", a.tone,
-                       "Tone operator: exposure, tumblin-rushmeier, ward or reinhard (docs/cli.md gives the equations)")
+    render->add_option("--seed", a.seed, "Random seed; the same seed gives the same image (default 1)")
+        ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+    render->add_option("--exposure", a.exposure, "\"auto\" (log-average luminance → 0.18) or stops: 2^stops per cd/m²")
+        ->default_str("auto");
+    render
+        ->add_option("--tonemap", a.tone,
+                     "Tone operator: exposure, tumblin-rushmeier, ward or reinhard (docs/cli.md gives the equations)")
         ->default_str("exposure");
     render->add_option("--world-adaptation", a.display.tone.worldAdaptation,
                        "World adaptation luminance L_wa, cd/m² (default: the image's log-average)");
-    render->add_option("--display-max", a.display.tone.displayMax, "The display's white L_dmax, cd/m² (sRGB's reference display: 80)")->default_str("80");
+    render
+        ->add_option("--display-max", a.display.tone.displayMax,
+                     "The display's white L_dmax, cd/m² (sRGB's reference display: 80)")
+        ->default_str("80");
     render->add_option("--display-adaptation", a.display.tone.displayAdaptation,
                        "Display adaptation luminance L_da, cd/m² (tumblin-rushmeier; default L_dmax/2)");
     render->add_option("--max-contrast", a.display.tone.maxContrast, "The display's contrast C_max (tumblin-rushmeier)")
         ->default_str("100");
     render->add_option("--key", a.display.tone.key, "The key a (reinhard)")->default_str("0.18");
-    render->add_option("--white", a.display.tone.white,
-                       "The smallest luminance shown white, in key-scaled units (reinhard; default the image's largest)");
-    render->add_option("--white-balance", a.whiteBalance,
-                       "none, a colour temperature (3000K), grey-world or region:x,y,w,h: adapted to D65 (Bradford)")
+    render->add_option(
+        "--white", a.display.tone.white,
+        "The smallest luminance shown white, in key-scaled units (reinhard; default the image's largest)");
+    render
+        ->add_option("--white-balance", a.whiteBalance,
+                     "none, a colour temperature (3000K), grey-world or region:x,y,w,h: adapted to D65 (Bradford)")
         ->default_str("none");
-    render->add_option("--ocio-config", a.display.ocioConfig, "OpenColorIO config file (default: rayrad's embedded sRGB config)");
+    render->add_option("--ocio-config", a.display.ocioConfig,
+                       "OpenColorIO config file (default: rayrad's embedded sRGB config)");
     render->add_option("--display", a.display.display, "OCIO display (default: the config's default)");
-    render->add_option("--view", a.display.view, "OCIO view (default: the display's default; the embedded config: Standard, \"ACES 1.0 SDR-video\", Raw)");
-    render->add_option("--snapshots", a.snapshots,
-                       "Also render K images during the solve (NAME.snap01.EXT ...), evenly spaced in log unshot energy")
+    render->add_option(
+        "--view", a.display.view,
+        "OCIO view (default: the display's default; the embedded config: Standard, \"ACES 1.0 SDR-video\", Raw)");
+    render
+        ->add_option("--snapshots", a.snapshots,
+                     "Also render K images during the solve (NAME.snap01.EXT ...), evenly spaced in log unshot energy")
         ->check(CLI::Range(0, 100));
     render->add_option("--false-colour", a.reports.falseColour,
                        "Also write the rendering's luminance in false colour (.png/.jpg; log scale, legend in cd/m²)");
@@ -80,55 +98,72 @@ void addSolve(CLI::App& cli, SolveArgs& a) {
     auto* solve = cli.add_subcommand("solve", "Solve the lighting and report illuminance at the sensors (no image)");
     addCommon(solve, a.common);
     solve->add_option("--sensors", a.csv, "Write the sensor table as CSV");
-    solve->add_option("--save", a.save,
-                      "Write the solution (FILE.rrs): render --solution FILE.rrs then renders any view without solving");
+    solve->add_option(
+        "--save", a.save,
+        "Write the solution (FILE.rrs): render --solution FILE.rrs then renders any view without solving");
     addReports(solve, a.reports);
 }
 
 void addExport(CLI::App& cli, ExportArgs& a) {
-    auto* exporter = cli.add_subcommand("export", "Write the lit mesh as binary glTF (.glb) for walkthroughs: light baked into "
-                                                  "vertex colours, an unlit material, absolute luminance kept in _LUMINANCE");
+    auto* exporter = cli.add_subcommand("export",
+                                        "Write the lit mesh as binary glTF (.glb) for walkthroughs: light baked into "
+                                        "vertex colours, an unlit material, absolute luminance kept in _LUMINANCE");
     addCommon(exporter, a.common);
     exporter->add_option("-o,--output", a.output, "The .glb file")->required();
     exporter->add_option("--solution", a.solution, "Use a solution saved by solve --save (no solve)");
-    exporter->add_option("--exposure", a.exposure,
-                         "\"auto\" (the log-average luminance of the scene camera's view, else of the solution → 0.18) or stops: "
-                         "2^stops per cd/m²")
+    exporter
+        ->add_option(
+            "--exposure", a.exposure,
+            "\"auto\" (the log-average luminance of the scene camera's view, else of the solution → 0.18) or stops: "
+            "2^stops per cd/m²")
         ->default_str("auto");
     exporter->add_option("--tonemap", a.tone, "Tone operator: exposure, tumblin-rushmeier, ward or reinhard")
         ->default_str("exposure");
-    exporter->add_option("--white-balance", a.whiteBalance, "none, a colour temperature (3000K) or grey-world")->default_str("none");
+    exporter->add_option("--white-balance", a.whiteBalance, "none, a colour temperature (3000K) or grey-world")
+        ->default_str("none");
 }
 
 void addSweep(CLI::App& cli, SweepOptions& a) {
-    auto* sweep = cli.add_subcommand("sweep", "Expand a grid of scene values into independent jobs (one rayrad command line "
-                                              "each) for GNU parallel or a Slurm job array");
+    auto* sweep = cli.add_subcommand("sweep",
+                                     "Expand a grid of scene values into independent jobs (one rayrad command line "
+                                     "each) for GNU parallel or a Slurm job array");
     sweep->add_option("scene", a.scene, "Scene file")->required();
-    sweep->add_option("--vary", a.vary, "KEY=V1,V2,...: a --set key and the values it takes (repeatable; "
-                                                   "every combination is a job)")->required();
-    sweep->add_option("--run", a.command,
-                      "The rayrad subcommand and options of every job; {job} becomes the job's number, e.g. "
-                      "\"solve --sensors out/{job}.csv\"")->default_str("solve");
-    sweep->add_option("--jobs", a.jobsFile, "The jobs file to write (a .csv of each job's values beside it)")->required();
+    sweep
+        ->add_option("--vary", a.vary,
+                     "KEY=V1,V2,...: a --set key and the values it takes (repeatable; "
+                     "every combination is a job)")
+        ->required();
+    sweep
+        ->add_option("--run", a.command,
+                     "The rayrad subcommand and options of every job; {job} becomes the job's number, e.g. "
+                     "\"solve --sensors out/{job}.csv\"")
+        ->default_str("solve");
+    sweep->add_option("--jobs", a.jobsFile, "The jobs file to write (a .csv of each job's values beside it)")
+        ->required();
     sweep->add_option("--rayrad", a.rayrad, "The rayrad the jobs run (default: this one's absolute path)");
 }
 
 void addInfo(CLI::App& cli, CommonArgs& a) {
-    auto* info = cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
+    auto* info =
+        cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
     addCommon(info, a);
 }
 
 void addMerge(CLI::App& cli, MergeArgs& a) {
-    auto* merge = cli.add_subcommand("merge", "Join the tiles of one rendering (render --tile I/N) into the whole image");
-    merge->add_option("-o,--output", a.outputs, "Output image(s): .exr (bit-identical to rendering the whole), .png, .jpg")
+    auto* merge =
+        cli.add_subcommand("merge", "Join the tiles of one rendering (render --tile I/N) into the whole image");
+    merge
+        ->add_option("-o,--output", a.outputs,
+                     "Output image(s): .exr (bit-identical to rendering the whole), .png, .jpg")
         ->required()
         ->allow_extra_args(false);  // -o takes one file; the rest are tiles
     merge->add_option("tiles", a.tiles, "The tile EXR files, all N of them, in any order")->required();
 }
 
 void addCompare(CLI::App& cli, CompareOptions& a) {
-    auto* compare = cli.add_subcommand("compare", "Compare an image (a rendering) against a reference (a photograph or "
-                                                  "another rendering) in luminance; exit 1 when a --fail-above bound is exceeded");
+    auto* compare = cli.add_subcommand("compare",
+                                       "Compare an image (a rendering) against a reference (a photograph or "
+                                       "another rendering) in luminance; exit 1 when a --fail-above bound is exceeded");
     compare->add_option("a", a.a, "The image under test (EXR, PNG, JPEG); calibrated onto the reference")->required();
     compare->add_option("b", a.b, "The reference image")->required();
     compare->add_option("--a-space", a.aSpace, "linear, srgb or auto (EXR linear, PNG/JPEG sRGB)")->default_str("auto");
@@ -136,19 +171,23 @@ void addCompare(CLI::App& cli, CompareOptions& a) {
     compare->add_option("--align", a.alignFile,
                         "JSON file of 4 or more corresponding points [{\"a\": [x, y], \"b\": [x, y]}] (pixels from the "
                         "top-left): a is resampled onto b's grid through their homography");
-    compare->add_option("--regions", a.regionsFile,
-                        "JSON file of named regions [{\"name\", \"x\", \"y\", \"width\", \"height\"}] with their own figures");
-    compare->add_option("--calibrate", a.calibrate,
-                        "none, exposure (one least-squares factor) or channels (one per channel: exposure and white balance)")
+    compare->add_option(
+        "--regions", a.regionsFile,
+        "JSON file of named regions [{\"name\", \"x\", \"y\", \"width\", \"height\"}] with their own figures");
+    compare
+        ->add_option(
+            "--calibrate", a.calibrate,
+            "none, exposure (one least-squares factor) or channels (one per channel: exposure and white balance)")
         ->default_str("exposure");
     compare->add_option("--diff-map", a.diffMap, "Write |relative luminance difference| in false colour (.png/.jpg)");
     compare->add_option("--side-by-side", a.sideBySide, "Write the calibrated image and the reference side by side");
     compare->add_option("--report", a.report, "Write the figures as JSON");
     compare->add_option("--csv", a.csv, "Write the figures as CSV, one row per region");
-    compare->add_option("--fail-above", a.failAbove,
-                        "METRIC=VALUE, repeatable: exit 1 when the whole image's figure exceeds it (mean_abs_rel_pct, "
-                        "median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, rms_log, ssim_loss = 1 − SSIM, mean_delta_e2000, "
-                        "p95_delta_e2000, mean_flip)");
+    compare->add_option(
+        "--fail-above", a.failAbove,
+        "METRIC=VALUE, repeatable: exit 1 when the whole image's figure exceeds it (mean_abs_rel_pct, "
+        "median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, rms_log, ssim_loss = 1 − SSIM, mean_delta_e2000, "
+        "p95_delta_e2000, mean_flip)");
 }
 
 void addValidate(CLI::App& cli, CommandLine& args) {
@@ -158,11 +197,13 @@ void addValidate(CLI::App& cli, CommandLine& args) {
         "cube", "The empty cube: mesh sweep and cluster sweep (paper Tables 2-3), ablations, error-vs-time plots");
     args.validateSphere.sceneDir = bundledPath(args.validateSphere.sceneDir);
     auto* validateSphere = validate->add_subcommand(
-        "sphere", "The sphere with mirrors: SPH2 and SPH4, 768 and 12 288 triangles, clusters on and off (paper Table 4)");
+        "sphere",
+        "The sphere with mirrors: SPH2 and SPH4, 768 and 12 288 triangles, clusters on and off (paper Table 4)");
     validateSphere->add_flag("--quick", args.validateSphere.quick, "The 768-triangle sphere only (seconds)");
     validateSphere->add_option("--scenes", args.validateSphere.sceneDir, "Directory with sph2.json and sph4.json")
         ->default_str(args.validateSphere.sceneDir);
-    validateSphere->add_option("--out", args.validateSphere.outDir, "Output directory")->default_str(args.validateSphere.outDir);
+    validateSphere->add_option("--out", args.validateSphere.outDir, "Output directory")
+        ->default_str(args.validateSphere.outDir);
     validateSphere->add_option("--threads", args.validateSphere.threads, "Worker threads per run (default: all cores)")
         ->check(CLI::Range(0, kMaxThreads));
     args.validateLuminaire.dataDir = bundledPath(args.validateLuminaire.dataDir);
@@ -170,11 +211,15 @@ void addValidate(CLI::App& cli, CommandLine& args) {
         "luminaire", "Every bundled photometric file: direct light from its table, a closed sphere's indirect light");
     validateLuminaire->add_option("--data", args.validateLuminaire.dataDir, "Directory with .ies and .ldt files")
         ->default_str(args.validateLuminaire.dataDir);
-    validateLuminaire->add_option("--out", args.validateLuminaire.outDir, "Output directory")->default_str(args.validateLuminaire.outDir);
+    validateLuminaire->add_option("--out", args.validateLuminaire.outDir, "Output directory")
+        ->default_str(args.validateLuminaire.outDir);
     validate->require_subcommand(1);
-    validateCube->add_flag("--quick", args.validateCube.quick, "A subset at 1 200 and 4 800 triangles (about a minute)");
-    validateCube->add_option("--scene", args.validateCube.scene, "The cube scene")->default_str(args.validateCube.scene);
-    validateCube->add_option("--out", args.validateCube.outDir, "Output directory")->default_str(args.validateCube.outDir);
+    validateCube->add_flag("--quick", args.validateCube.quick,
+                           "A subset at 1 200 and 4 800 triangles (about a minute)");
+    validateCube->add_option("--scene", args.validateCube.scene, "The cube scene")
+        ->default_str(args.validateCube.scene);
+    validateCube->add_option("--out", args.validateCube.outDir, "Output directory")
+        ->default_str(args.validateCube.outDir);
     validateCube->add_option("--threads", args.validateCube.threads, "Worker threads per run (default: all cores)")
         ->check(CLI::Range(0, kMaxThreads));
 }
@@ -202,20 +247,24 @@ void noteChosenCommand(const CLI::App& cli, CommandLine& args) {
         return;
     }
     const std::pair<const char*, Command> names[] = {
-        {"render", Command::Render}, {"solve", Command::Solve},     {"export", Command::Export},
-        {"sweep", Command::Sweep},   {"info", Command::Info},       {"merge", Command::Merge},
-        {"compare", Command::Compare}};
+        {"render", Command::Render}, {"solve", Command::Solve}, {"export", Command::Export},  {"sweep", Command::Sweep},
+        {"info", Command::Info},     {"merge", Command::Merge}, {"compare", Command::Compare}};
     for (const auto& [name, command] : names)
         if (cli.got_subcommand(name)) args.command = command;
 }
 
 const CommonArgs* CommandLine::common() const {
     switch (command) {
-        case Command::Render: return &render.common;
-        case Command::Solve: return &solve.common;
-        case Command::Export: return &exporter.common;
-        case Command::Info: return &info;
-        default: return nullptr;
+        case Command::Render:
+            return &render.common;
+        case Command::Solve:
+            return &solve.common;
+        case Command::Export:
+            return &exporter.common;
+        case Command::Info:
+            return &info;
+        default:
+            return nullptr;
     }
 }
 

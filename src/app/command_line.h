@@ -60,7 +60,18 @@ struct MergeArgs {
 
 /// Every subcommand's arguments; `command` says which one the command line chose.
 struct CommandLine {
-    enum class Command { Render, Solve, Export, Sweep, Info, Merge, Compare, ValidateCube, ValidateSphere, ValidateLuminaire };
+    enum class Command {
+        Render,
+        Solve,
+        Export,
+        Sweep,
+        Info,
+        Merge,
+        Compare,
+        ValidateCube,
+        ValidateSphere,
+        ValidateLuminaire
+    };
     Command command = Command::Info;
     RenderArgs render;
     SolveArgs solve;

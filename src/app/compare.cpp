@@ -60,7 +60,8 @@ std::vector<tonemap::PointPair> readPointPairs(const std::string& path) {
                 if (!std::isfinite(v)) throw std::invalid_argument("not finite");
             pairs.push_back({a[0], a[1], b[0], b[1]});
         } catch (const std::exception&) {
-            throw InputError(placeMessage(path, "/" + std::to_string(i), "expected {\"a\": [x, y], \"b\": [x, y]} with finite numbers"));
+            throw InputError(placeMessage(path, "/" + std::to_string(i),
+                                          "expected {\"a\": [x, y], \"b\": [x, y]} with finite numbers"));
         }
     }
     return pairs;
@@ -70,7 +71,9 @@ std::vector<Region> readRegions(const std::string& path, int width, int height) 
     std::vector<Region> regions{{"image", 0, 0, width, height}};
     if (path.empty()) return regions;
     const nlohmann::json j = readJson(path, "regions file");
-    if (!j.is_array()) throw InputError(placeMessage(path, "", "expected an array of {\"name\", \"x\", \"y\", \"width\", \"height\"}"));
+    if (!j.is_array())
+        throw InputError(
+            placeMessage(path, "", "expected an array of {\"name\", \"x\", \"y\", \"width\", \"height\"}"));
     for (size_t i = 0; i < j.size(); ++i) {
         const std::string where = "/" + std::to_string(i);
         const auto& e = j[i];
@@ -80,11 +83,13 @@ std::vector<Region> readRegions(const std::string& path, int width, int height) 
             r.x = e.at("x").get<int>(), r.y = e.at("y").get<int>();
             r.width = e.at("width").get<int>(), r.height = e.at("height").get<int>();
         } catch (const nlohmann::json::exception&) {
-            throw InputError(placeMessage(path, where, "expected {\"name\": text, \"x\", \"y\", \"width\", \"height\": integers}"));
+            throw InputError(
+                placeMessage(path, where, "expected {\"name\": text, \"x\", \"y\", \"width\", \"height\": integers}"));
         }
         if (r.x < 0 || r.y < 0 || r.width <= 0 || r.height <= 0 || r.x + r.width > width || r.y + r.height > height)
-            throw InputError(placeMessage(path, where, fmt::format("the region {},{} {}×{} is not inside the {}×{} images", r.x,
-                                                                   r.y, r.width, r.height, width, height)));
+            throw InputError(placeMessage(path, where,
+                                          fmt::format("the region {},{} {}×{} is not inside the {}×{} images", r.x, r.y,
+                                                      r.width, r.height, width, height)));
         regions.push_back(r);
     }
     return regions;
@@ -103,7 +108,8 @@ double figure(const ErrorFigures& f, const std::string& metric) {
     if (metric == "p95_delta_e2000") return f.p95DeltaE2000;
     throw InputError(placeMessage("", "--fail-above",
                                   "unknown metric \"" + metric +
-                                      "\" (mean_abs_rel_pct, median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, rms_log, ssim_loss, mean_flip, "
+                                      "\" (mean_abs_rel_pct, median_abs_rel_pct, p95_abs_rel_pct, abs_mean_rel_pct, "
+                                      "rms_log, ssim_loss, mean_flip, "
                                       "mean_delta_e2000, p95_delta_e2000)"));
 }
 
@@ -158,7 +164,8 @@ void addPictureAndReportOutputs(const CompareOptions& o, OutputFiles& files) {
         if (path->empty()) continue;
         files.add(*path);
         tonemap::checkImageFormat(*path);
-        if (tonemap::isHdrFormat(*path)) throw OutputError(placeMessage(*path, "", "a picture is a display image: use .png or .jpg"));
+        if (tonemap::isHdrFormat(*path))
+            throw OutputError(placeMessage(*path, "", "a picture is a display image: use .png or .jpg"));
     }
     for (const auto* path : {&o.report, &o.csv})
         if (!path->empty()) files.add(*path);
@@ -174,48 +181,62 @@ Tables tabulate(const CompareOptions& o, const HdrImage& b, const std::vector<Re
                 const std::vector<ErrorFigures>& figures, const std::array<double, 3>& factors,
                 const std::vector<tonemap::PointPair>& pairs, const tonemap::Homography& homography, double residual) {
     fmt::print("{} against {} ({}×{}); calibration {} over {}: factors {:.5g} {:.5g} {:.5g}\n", o.a, o.b, b.width,
-               b.height, o.calibrate, regions.size() > 1 ? "the regions" : "the image", factors[0], factors[1], factors[2]);
+               b.height, o.calibrate, regions.size() > 1 ? "the regions" : "the image", factors[0], factors[1],
+               factors[2]);
     if (!pairs.empty())
-        fmt::print("aligned by a homography through {} point pairs (largest residual {:.3g} px)\n", pairs.size(), residual);
-    fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>7} {:>7} {:>7}\n", "region", "pixels", "mean %", "|mean| %",
-               "median %", "p95 %", "rms ln", "SSIM", "ΔE00", "ΔE00 95", "FLIP");
-    std::string csv ="region,pixels,mean_rel_pct,mean_abs_rel_pct,median_abs_rel_pct,p95_abs_rel_pct,rms_log,ssim,"
-                      "mean_delta_e2000,p95_delta_e2000,mean_flip\n";
+        fmt::print("aligned by a homography through {} point pairs (largest residual {:.3g} px)\n", pairs.size(),
+                   residual);
+    fmt::print("{:<16} {:>9} {:>9} {:>9} {:>9} {:>9} {:>8} {:>7} {:>7} {:>7} {:>7}\n", "region", "pixels", "mean %",
+               "|mean| %", "median %", "p95 %", "rms ln", "SSIM", "ΔE00", "ΔE00 95", "FLIP");
+    std::string csv =
+        "region,pixels,mean_rel_pct,mean_abs_rel_pct,median_abs_rel_pct,p95_abs_rel_pct,rms_log,ssim,"
+        "mean_delta_e2000,p95_delta_e2000,mean_flip\n";
     nlohmann::json j;
     j["a"] = o.a, j["b"] = o.b, j["width"] = b.width, j["height"] = b.height;
     j["calibration"] = {{"kind", o.calibrate}, {"factors", factors}};
-    if (!pairs.empty()) j["alignment"] = {{"pairs", pairs.size()}, {"homography_b_to_a", homography}, {"largest_residual_px", residual}};
+    if (!pairs.empty())
+        j["alignment"] = {
+            {"pairs", pairs.size()}, {"homography_b_to_a", homography}, {"largest_residual_px", residual}};
     j["regions"] = nlohmann::json::array();
     for (size_t i = 0; i < regions.size(); ++i) {
         const auto& f = figures[i];
         fmt::print("{:<16} {:>9} {:>+9.3f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.4f} {:>7.4f} {:>7.3f} {:>7.3f} {:>7.4f}\n",
-                   regions[i].name.substr(0, 16), f.pixels, f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct,
-                   f.rmsLog, f.ssim, f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
-        csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", regions[i].name, f.pixels,
-                           f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct, f.rmsLog, f.ssim,
+                   regions[i].name.substr(0, 16), f.pixels, f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct,
+                   f.p95AbsRelPct, f.rmsLog, f.ssim, f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
+        csv += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", regions[i].name,
+                           f.pixels, f.meanRelPct, f.meanAbsRelPct, f.medianAbsRelPct, f.p95AbsRelPct, f.rmsLog, f.ssim,
                            f.meanDeltaE2000, f.p95DeltaE2000, f.meanFlip);
-        j["regions"].push_back({{"name", regions[i].name}, {"x", regions[i].x}, {"y", regions[i].y},
-                                {"width", regions[i].width}, {"height", regions[i].height}, {"pixels", f.pixels},
-                                {"mean_rel_pct", f.meanRelPct}, {"mean_abs_rel_pct", f.meanAbsRelPct},
-                                {"median_abs_rel_pct", f.medianAbsRelPct}, {"p95_abs_rel_pct", f.p95AbsRelPct},
-                                {"rms_log", f.rmsLog}, {"ssim", f.ssim}, {"mean_delta_e2000", f.meanDeltaE2000},
-                                {"p95_delta_e2000", f.p95DeltaE2000}, {"mean_flip", f.meanFlip}});
+        j["regions"].push_back({{"name", regions[i].name},
+                                {"x", regions[i].x},
+                                {"y", regions[i].y},
+                                {"width", regions[i].width},
+                                {"height", regions[i].height},
+                                {"pixels", f.pixels},
+                                {"mean_rel_pct", f.meanRelPct},
+                                {"mean_abs_rel_pct", f.meanAbsRelPct},
+                                {"median_abs_rel_pct", f.medianAbsRelPct},
+                                {"p95_abs_rel_pct", f.p95AbsRelPct},
+                                {"rms_log", f.rmsLog},
+                                {"ssim", f.ssim},
+                                {"mean_delta_e2000", f.meanDeltaE2000},
+                                {"p95_delta_e2000", f.p95DeltaE2000},
+                                {"mean_flip", f.meanFlip}});
     }
     return {csv, j};
 }
 
 /// |a − b| / b after calibration in false colour, scaled to the larger of 10 % and twice p95.
 tonemap::Picture differenceMap(const HdrImage& a, const HdrImage& b, const ErrorFigures& whole) {
-        tonemap::ScalarField field{b.width, b.height, tonemap::relativeDifferencePct(a, b)};
-        double top = 0;
-        for (double v : field.values)
-            if (std::isfinite(v)) top = std::max(top, v);
-        tonemap::FalseColourOptions fc;
-        fc.maximum = std::max(1.0, std::min(top, std::max(10.0, 2 * whole.p95AbsRelPct)));
-        fc.title = fmt::format("|a - b| / b after calibration; mean {:.2f} %, p95 {:.2f} %", whole.meanAbsRelPct,
-                               whole.p95AbsRelPct);
-        fc.unit = "%";
-        return tonemap::renderFalseColour(field, fc);
+    tonemap::ScalarField field{b.width, b.height, tonemap::relativeDifferencePct(a, b)};
+    double top = 0;
+    for (double v : field.values)
+        if (std::isfinite(v)) top = std::max(top, v);
+    tonemap::FalseColourOptions fc;
+    fc.maximum = std::max(1.0, std::min(top, std::max(10.0, 2 * whole.p95AbsRelPct)));
+    fc.title = fmt::format("|a - b| / b after calibration; mean {:.2f} %, p95 {:.2f} %", whole.meanAbsRelPct,
+                           whole.p95AbsRelPct);
+    fc.unit = "%";
+    return tonemap::renderFalseColour(field, fc);
 }
 
 }  // namespace
@@ -224,14 +245,16 @@ int compareImages(const CompareOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpuStart = std::clock();
     if (o.calibrate != "none" && o.calibrate != "exposure" && o.calibrate != "channels")
-        throw InputError(placeMessage("", "--calibrate", "expected none, exposure or channels, got \"" + o.calibrate + "\""));
+        throw InputError(
+            placeMessage("", "--calibrate", "expected none, exposure or channels, got \"" + o.calibrate + "\""));
     const std::vector<Bound> bounds = parseBounds(o.failAbove);
     OutputFiles files;
     files.addInput(o.a);
     files.addInput(o.b);
     if (!o.regionsFile.empty()) files.addInput(o.regionsFile);
     if (!o.alignFile.empty()) files.addInput(o.alignFile);
-    const std::vector<tonemap::PointPair> pairs = o.alignFile.empty() ? std::vector<tonemap::PointPair>{} : readPointPairs(o.alignFile);
+    const std::vector<tonemap::PointPair> pairs =
+        o.alignFile.empty() ? std::vector<tonemap::PointPair>{} : readPointPairs(o.alignFile);
     tonemap::Homography homography{};
     if (!pairs.empty()) {
         try {
@@ -253,9 +276,10 @@ int compareImages(const CompareOptions& o) {
         }
         a = tonemap::warpOnto(a, homography, b.width, b.height);
     } else if (a.width != b.width || a.height != b.height) {
-        throw InputError(placeMessage(o.a, "", fmt::format("is {}×{} but {} is {}×{}: give --align with four or more "
-                                                           "corresponding points, or images of one size",
-                                                           a.width, a.height, o.b, b.width, b.height)));
+        throw InputError(placeMessage(o.a, "",
+                                      fmt::format("is {}×{} but {} is {}×{}: give --align with four or more "
+                                                  "corresponding points, or images of one size",
+                                                  a.width, a.height, o.b, b.width, b.height)));
     }
     const std::vector<Region> regions = readRegions(o.regionsFile, b.width, b.height);
 
@@ -302,7 +326,8 @@ int compareImages(const CompareOptions& o) {
     for (const auto* path : {&o.diffMap, &o.sideBySide, &o.report, &o.csv})
         if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    fmt::print(stderr, "compare: {:.2f} s wall, {:.2f} CPU-s\n", wall, static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC);
+    fmt::print(stderr, "compare: {:.2f} s wall, {:.2f} CPU-s\n", wall,
+               static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC);
     return status;
 }
 

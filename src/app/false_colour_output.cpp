@@ -15,7 +15,8 @@ tonemap::Picture gridPicture(const std::vector<SensorResult>& results) {
     for (const auto& stats : gridStatistics(results)) {
         int nu = 0, nv = 0;
         for (const auto& r : results)
-            if (r.sensor.grid == stats.grid) nu = std::max(nu, r.sensor.gridU + 1), nv = std::max(nv, r.sensor.gridV + 1);
+            if (r.sensor.grid == stats.grid)
+                nu = std::max(nu, r.sensor.gridU + 1), nv = std::max(nv, r.sensor.gridV + 1);
         if (nu <= 0 || nv <= 0) continue;
         tonemap::ScalarField field;
         field.width = nu;
@@ -23,7 +24,8 @@ tonemap::Picture gridPicture(const std::vector<SensorResult>& results) {
         field.values.assign(static_cast<size_t>(nu) * nv, std::numeric_limits<double>::quiet_NaN());
         for (const auto& r : results)
             if (r.sensor.grid == stats.grid && r.sensor.gridU >= 0 && r.excluded.empty())  // inside a solid: blank
-                field.values[static_cast<size_t>(r.sensor.gridV) * nu + r.sensor.gridU] = luminance(r.value.direct + r.value.indirect);
+                field.values[static_cast<size_t>(r.sensor.gridV) * nu + r.sensor.gridU] =
+                    luminance(r.value.direct + r.value.indirect);
         tonemap::FalseColourOptions o;
         o.unit = "lx";
         o.pixelsPerValue = std::clamp(480 / std::max(nu, nv), 4, 64);

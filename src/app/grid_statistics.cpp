@@ -12,7 +12,8 @@ std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& resu
     std::vector<GridStatistics> out;
     for (const auto& r : results) {
         if (r.sensor.grid.empty()) continue;
-        auto it = std::find_if(out.begin(), out.end(), [&](const GridStatistics& g) { return g.grid == r.sensor.grid; });
+        auto it =
+            std::find_if(out.begin(), out.end(), [&](const GridStatistics& g) { return g.grid == r.sensor.grid; });
         if (it == out.end()) {
             out.push_back({r.sensor.grid, 0, 0, std::numeric_limits<double>::infinity(), 0, 0});
             it = out.end() - 1;
@@ -28,19 +29,21 @@ std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& resu
         it->mean += e;
     }
     for (auto& g : out) {
-        if (g.points == 0) g.minimum = 0;
-        else g.mean /= static_cast<double>(g.points);
+        if (g.points == 0)
+            g.minimum = 0;
+        else
+            g.mean /= static_cast<double>(g.points);
     }
     return out;
 }
 
 std::string gridTable(const std::vector<GridStatistics>& grids) {
     if (grids.empty()) return "";
-    std::string s = fmt::format("{:<14} {:>7} {:>11} {:>11} {:>11} {:>8} {:>10}\n", "grid", "points", "Emin lx", "Eavg lx",
-                                "Emax lx", "U0", "Emin/Emax");
+    std::string s = fmt::format("{:<14} {:>7} {:>11} {:>11} {:>11} {:>8} {:>10}\n", "grid", "points", "Emin lx",
+                                "Eavg lx", "Emax lx", "U0", "Emin/Emax");
     for (const auto& g : grids)
-        s += fmt::format("{:<14} {:>7} {:>11.2f} {:>11.2f} {:>11.2f} {:>8.3f} {:>10.3f}{}\n", g.grid, g.points, g.minimum,
-                         g.mean, g.maximum, g.u0(), g.minToMax(),
+        s += fmt::format("{:<14} {:>7} {:>11.2f} {:>11.2f} {:>11.2f} {:>8.3f} {:>10.3f}{}\n", g.grid, g.points,
+                         g.minimum, g.mean, g.maximum, g.u0(), g.minToMax(),
                          g.excluded ? fmt::format("  ({} more inside solids, left out)", g.excluded) : "");
     return s;
 }

@@ -13,8 +13,8 @@ struct GridStatistics {
     std::string grid;
     size_t points = 0;    ///< the points the figures are of
     size_t excluded = 0;  ///< points inside a solid or buried (SensorResult::excluded), not counted
-    double minimum = 0, mean = 0, maximum = 0;  ///< total illuminance Y, lx
-    double u0() const { return mean > 0 ? minimum / mean : 0; }         ///< Emin / Eavg
+    double minimum = 0, mean = 0, maximum = 0;                               ///< total illuminance Y, lx
+    double u0() const { return mean > 0 ? minimum / mean : 0; }              ///< Emin / Eavg
     double minToMax() const { return maximum > 0 ? minimum / maximum : 0; }  ///< Emin / Emax
 };
 

@@ -9,8 +9,12 @@
 namespace rayrad::app {
 
 namespace {
-std::string groupName(const std::string& g) { return g.empty() ? "(none)" : g; }
-double total(const radiosity::SensorValue& v) { return luminance(v.direct + v.indirect); }
+std::string groupName(const std::string& g) {
+    return g.empty() ? "(none)" : g;
+}
+double total(const radiosity::SensorValue& v) {
+    return luminance(v.direct + v.indirect);
+}
 }  // namespace
 
 bool hasLightGroups(const scene::SceneDesc& desc) {
@@ -30,10 +34,12 @@ LightGroupParts solveLightGroups(const std::string& sceneFile, const PipelineOpt
         o.overrides = base.overrides;
         // The full solve's ΔI_max, not one derived from this group's own (dimmer) light:
         // every group's transfers are then refined to the same absolute accuracy.
-        o.overrides.push_back({"clusters.max_illuminance_step_lx", fmt::format("{:.17g}", full.lighting.maxIlluminanceStep)});
+        o.overrides.push_back(
+            {"clusters.max_illuminance_step_lx", fmt::format("{:.17g}", full.lighting.maxIlluminanceStep)});
         o.quiet = true;
         o.lightGroup = groups[g];
-        if (!base.quiet) fmt::print(stderr, "light group {} ({} of {}): solving\n", groupName(groups[g]), g + 1, groups.size());
+        if (!base.quiet)
+            fmt::print(stderr, "light group {} ({} of {}): solving\n", groupName(groups[g]), g + 1, groups.size());
         o.wantSensors = base.wantSensors;
         PipelineRun run = runPipeline(sceneFile, o);
         std::vector<radiosity::SensorValue> values;
@@ -78,8 +84,9 @@ std::string lightGroupCsv(const std::vector<SensorResult>& full, const LightGrou
     for (size_t i = 0; i < full.size(); ++i)
         for (size_t g = 0; g < parts.groups.size(); ++g) {
             const auto& v = parts.parts[g][i];
-            s += fmt::format("{},{},{:.9g},{:.9g},{:.9g}\n", csvField(full[i].sensor.name), csvField(groupName(parts.groups[g])),
-                             luminance(v.direct), luminance(v.indirect), total(v));
+            s +=
+                fmt::format("{},{},{:.9g},{:.9g},{:.9g}\n", csvField(full[i].sensor.name),
+                            csvField(groupName(parts.groups[g])), luminance(v.direct), luminance(v.indirect), total(v));
         }
     return s;
 }

@@ -12,7 +12,7 @@
 namespace rayrad::app {
 
 struct LightGroupParts {
-    std::vector<std::string> groups;                     ///< "" is the emitters in no group
+    std::vector<std::string> groups;                         ///< "" is the emitters in no group
     std::vector<std::vector<radiosity::SensorValue>> parts;  ///< parts[g][i]: sensor i lit by group g alone
     std::vector<radiosity::GroupSolution> solutions;         ///< each group's solution, when kept (solve --save)
 };

@@ -78,7 +78,8 @@ std::string exportLitMesh(const PipelineRun& run, const tonemap::DisplayOptions&
 
     scene::GlbExtras extras;
     extras.text = {{"scene", sceneFile},
-                   {"colours", "COLOR_0: linear display RGB of the luminance through " + tonemap::describeDisplay(luminances, steady)},
+                   {"colours", "COLOR_0: linear display RGB of the luminance through " +
+                                   tonemap::describeDisplay(luminances, steady)},
                    {"_LUMINANCE", "luminance Y of each vertex, cd/m² (absolute)"}};
     if (adaptation > 0) extras.numbers.push_back({"adaptation_luminance_cd_m2", adaptation});
     if (!steady.autoExposure) extras.numbers.push_back({"exposure_stops", steady.exposureStops});

@@ -1,40 +1,40 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
 #include <app/command_line.h>
-#include <app/image_output.h>
-#include <app/result_checks.h>
-#include <app/validate_runs.h>
-#include <app/version.h>
-#include <app/pipeline.h>
-#include <app/run_outputs.h>
-#include <app/validate_cube.h>
 #include <app/compare.h>
-#include <app/validate_luminaire.h>
-#include <app/scene_info.h>
-#include <app/tiles.h>
-#include <app/views.h>
-#include <app/walkthrough.h>
-#include <app/sweep.h>
+#include <app/image_output.h>
 #include <app/lit_mesh_export.h>
-#include <radiosity/radiosity.h>
-#include <app/validate_sphere.h>
+#include <app/pipeline.h>
+#include <app/result_checks.h>
+#include <app/run_outputs.h>
+#include <app/scene_info.h>
 #include <app/sensor_table.h>
 #include <app/solve_summary.h>
+#include <app/sweep.h>
+#include <app/tiles.h>
+#include <app/validate_cube.h>
+#include <app/validate_luminaire.h>
+#include <app/validate_runs.h>
+#include <app/validate_sphere.h>
+#include <app/version.h>
+#include <app/views.h>
+#include <app/walkthrough.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <core/result_error.h>
 #include <core/text.h>
+#include <radiosity/radiosity.h>
 #include <tonemap/display_transform.h>
 #include <tonemap/image_io.h>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <tbb/global_control.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 using namespace rayrad;
@@ -73,9 +73,10 @@ int runSolve(const app::SolveArgs& args) {
     // groups are dimmed can be rendered from it.
     auto groups = app::reportSensors(run, a.scene, o, csvs, files, !save.empty());
     if (!save.empty())
-        files.set(save, radiosity::encodeSolution(run.lighting.solution, radiosity::fingerprintOf(run.scene, run.mesh),
-                                                  run.mesh.vertices.size(),
-                                                  groups ? groups->solutions : std::vector<radiosity::GroupSolution>{}));
+        files.set(save,
+                  radiosity::encodeSolution(run.lighting.solution, radiosity::fingerprintOf(run.scene, run.mesh),
+                                            run.mesh.vertices.size(),
+                                            groups ? groups->solutions : std::vector<radiosity::GroupSolution>{}));
     if (groups && run.sensors.empty()) groups.reset();  // parts for the file only
     app::stageReports(run, a.scene, reports, groups ? &*groups : nullptr, files);
     files.commit();
@@ -112,8 +113,8 @@ int runFrames(const app::CommonArgs& a, app::PipelineOptions o, const std::vecto
         const auto view = app::renderCamera(run, fmt::format("frame {}, {} of {}", k, k - first + 1, last - first + 1),
                                             run.scene.pathFrames[static_cast<size_t>(k)], o);
         app::checkRenderedImage(view.image, allowBlack);
-        app::stageImages(paths, view.image, view.displayImage, steady, fmt::format("rayrad rendering of {}, frame {}", a.scene, k),
-                         files);
+        app::stageImages(paths, view.image, view.displayImage, steady,
+                         fmt::format("rayrad rendering of {}, frame {}", a.scene, k), files);
         files.commit();
         if (!a.quiet) app::reportWritten(paths);
     }
@@ -128,8 +129,9 @@ tonemap::DisplayOptions renderDisplay(const app::RenderArgs& args) {
     display.tone.op = tonemap::parseToneOperator(args.tone);
     tonemap::checkToneOptions(display.tone);
     if (args.exposure != "auto" && display.tone.op != tonemap::ToneOperator::Exposure)
-        throw InputError(placeMessage("", "--exposure", "sets the exposure operator's scale; --tonemap " + args.tone +
-                                                            " chooses its own (give --tonemap exposure)"));
+        throw InputError(placeMessage("", "--exposure",
+                                      "sets the exposure operator's scale; --tonemap " + args.tone +
+                                          " chooses its own (give --tonemap exposure)"));
     display.whiteBalance = tonemap::parseWhiteBalance(args.whiteBalance);
     display = tonemap::parseExposure(args.exposure, display);
     if (const auto warning = tonemap::checkDisplayOptions(display)) fmt::print(stderr, "warning: {}\n", *warning);
@@ -141,14 +143,16 @@ void checkRenderOptions(const app::RenderArgs& args, const app::Tile& tile, cons
     if (tile.count > 0) {
         for (const auto& path : args.outputs)
             if (!tonemap::isHdrFormat(path))
-                throw InputError(placeMessage(path, "--tile", "a tile is written as EXR (rayrad merge makes the PNG or JPEG)"));
+                throw InputError(
+                    placeMessage(path, "--tile", "a tile is written as EXR (rayrad merge makes the PNG or JPEG)"));
         if (args.snapshots > 0)
             throw InputError(placeMessage("", "--tile", "snapshots are of whole images: render them without --tile"));
         if (!args.reports.falseColour.empty())
             throw InputError(placeMessage("", "--tile", "a false-colour picture is of the whole image"));
     }
     if (!args.solution.empty() && args.snapshots > 0)
-        throw InputError(placeMessage("", "--snapshots", "a saved solution (--solution) has no solve to take snapshots of"));
+        throw InputError(
+            placeMessage("", "--snapshots", "a saved solution (--solution) has no solve to take snapshots of"));
     if (args.frames.empty()) return;
     const std::vector<std::pair<bool, const char*>> alone = {
         {!args.cameras.empty(), "--camera"},
@@ -158,7 +162,8 @@ void checkRenderOptions(const app::RenderArgs& args, const app::Tile& tile, cons
         {o.wantSensors || o.logConvergence, "--sensors, --report, --grid-picture or --convergence"}};
     for (const auto& [given, option] : alone)
         if (given)
-            throw InputError(placeMessage("", "--frames", std::string("renders the camera path's frames alone: not with ") + option));
+            throw InputError(placeMessage("", "--frames",
+                                          std::string("renders the camera path's frames alone: not with ") + option));
 }
 
 /// Every file a render writes, checked before the work: per view its images, the
@@ -263,7 +268,8 @@ int runExport(const app::ExportArgs& args) {
         throw InputError(placeMessage("", "--exposure", "sets the exposure operator's scale: give --tonemap exposure"));
     display.whiteBalance = tonemap::parseWhiteBalance(args.whiteBalance);
     if (display.whiteBalance.kind == tonemap::WhiteBalance::Kind::Region)
-        throw InputError(placeMessage("", "--white-balance", "a region is of an image: export takes none, a temperature or grey-world"));
+        throw InputError(placeMessage("", "--white-balance",
+                                      "a region is of an image: export takes none, a temperature or grey-world"));
     display = tonemap::parseExposure(args.exposure, display);
     if (lowerExtension(output) != ".glb")
         throw InputError(placeMessage(output, "-o", "the lit mesh is written as binary glTF: give a .glb file"));
@@ -295,16 +301,26 @@ int runExport(const app::ExportArgs& args) {
 int runCommand(const app::CommandLine& args) {
     using Command = app::CommandLine::Command;
     switch (args.command) {
-        case Command::Compare: return app::compareImages(args.compare);
-        case Command::Merge: return app::mergeTiles(args.merge.outputs, args.merge.tiles);
-        case Command::Sweep: return app::writeSweep(args.sweep);
-        case Command::ValidateSphere: return app::validateSphere(args.validateSphere);
-        case Command::ValidateLuminaire: return app::validateLuminaire(args.validateLuminaire);
-        case Command::ValidateCube: return app::validateCube(args.validateCube);
-        case Command::Render: return runRender(args.render);
-        case Command::Solve: return runSolve(args.solve);
-        case Command::Export: return runExport(args.exporter);
-        case Command::Info: return app::printSceneInfo(args.info.scene, overridesOf(args.info));
+        case Command::Compare:
+            return app::compareImages(args.compare);
+        case Command::Merge:
+            return app::mergeTiles(args.merge.outputs, args.merge.tiles);
+        case Command::Sweep:
+            return app::writeSweep(args.sweep);
+        case Command::ValidateSphere:
+            return app::validateSphere(args.validateSphere);
+        case Command::ValidateLuminaire:
+            return app::validateLuminaire(args.validateLuminaire);
+        case Command::ValidateCube:
+            return app::validateCube(args.validateCube);
+        case Command::Render:
+            return runRender(args.render);
+        case Command::Solve:
+            return runSolve(args.solve);
+        case Command::Export:
+            return runExport(args.exporter);
+        case Command::Info:
+            return app::printSceneInfo(args.info.scene, overridesOf(args.info));
     }
     return kExitInternalError;
 }
@@ -315,11 +331,12 @@ int main(int argc, char** argv) {
     // A file size limit (ulimit -f) then fails a write with EFBIG, which is reported,
     // instead of killing the process half-way through a file.
     std::signal(SIGXFSZ, SIG_IGN);
-    CLI::App cli{"rayrad — physically based lighting simulation: progressive hierarchical radiosity for the\n"
-                 "indirect light, a Whitted-style ray tracer for images, illuminance at sensors.\n"
-                 "Units: metres, cd, lx, cd/m². Exit codes: 0 done, 1 internal error, 2 bad input (scene, options),\n"
-                 "3 an output cannot be written (nothing is left half-written), 4 the result is not usable\n"
-                 "(non-finite, all black; nothing written)."};
+    CLI::App cli{
+        "rayrad — physically based lighting simulation: progressive hierarchical radiosity for the\n"
+        "indirect light, a Whitted-style ray tracer for images, illuminance at sensors.\n"
+        "Units: metres, cd, lx, cd/m². Exit codes: 0 done, 1 internal error, 2 bad input (scene, options),\n"
+        "3 an output cannot be written (nothing is left half-written), 4 the result is not usable\n"
+        "(non-finite, all black; nothing written)."};
     cli.set_version_flag("--version", app::versionText(), "Print the version of rayrad and of its libraries");
     cli.require_subcommand(1);
     app::CommandLine args;
@@ -337,7 +354,8 @@ int main(int argc, char** argv) {
     try {
         std::unique_ptr<tbb::global_control> threads;
         if (const app::CommonArgs* common = args.common(); common && common->threads > 0)
-            threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common->threads);
+            threads =
+                std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common->threads);
         return runCommand(args);
     } catch (const InputError& e) {
         std::cerr << "rayrad: " << e.what() << "\n";

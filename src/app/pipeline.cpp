@@ -48,10 +48,10 @@ void ensureShadingNormals(PipelineRun& run) {
 }
 
 /// L_c for the display average (render.display_range_compression), 0 when off.
-double displayCompression(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution) {
+double displayCompression(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                          const radiosity::RadiositySolution& solution) {
     return scene.render.displayRangeCompression ? raytrace::compressionLuminance(scene, mesh, solution) : 0.0;
 }
-
 
 std::optional<double> errorPct(double value, const std::optional<double>& ref) {
     if (!ref || *ref == 0) return std::nullopt;
@@ -96,8 +96,8 @@ class PushPullObserver {
         const double start = solution.initialUnshotFlux / std::max(1e-300, solution.unshotReference());
         const double stop = m_run.scene.shooting.stopUnshot;
         return m_options.snapshots > 0 && m_nextSnapshot <= m_options.snapshots &&
-               (solution.converged ||
-                solution.unshotFraction() <= start * std::pow(stop / start, double(m_nextSnapshot) / m_options.snapshots));
+               (solution.converged || solution.unshotFraction() <=
+                                          start * std::pow(stop / start, double(m_nextSnapshot) / m_options.snapshots));
     }
 
     void logRow(const radiosity::RadiositySolution& copy, double fraction, bool last) {
@@ -116,11 +116,13 @@ class PushPullObserver {
         radiosity::GatherMemo memo;  // the row's sensors share their re-gathers, as a run of the sensor stage does
         for (const auto& [s, where] : m_sensors) {
             std::optional<double> vertex;
-            if (where) vertex = luminance(radiosity::interpolateIndirect(m_run.mesh, copy, where->patch, where->u, where->v));
+            if (where)
+                vertex = luminance(radiosity::interpolateIndirect(m_run.mesh, copy, where->patch, where->u, where->v));
             row.vertexErrorPct.push_back(vertex ? errorPct(*vertex, s->refIndirect) : std::nullopt);
             std::optional<double> gathered;
             if (gatherer) {
-                Vec3 x = where ? radiosity::nudgeInside(m_run.mesh, where->patch, s->position, radiosity::pointNudge(m_run.scene))
+                Vec3 x = where ? radiosity::nudgeInside(m_run.mesh, where->patch, s->position,
+                                                        radiosity::pointNudge(m_run.scene))
                                : s->position;
                 gathered = errorPct(luminance(gatherer->indirectAt(x, s->normal, memo)), s->refIndirect);
             }
@@ -137,9 +139,10 @@ class PushPullObserver {
                                           m_run.scene.render, {}, &forDisplay);
         std::vector<std::string> paths;
         for (const auto& p : m_options.snapshotOutputs) paths.push_back(snapshotPath(p, m_nextSnapshot));
-        stageImages(paths, image, forDisplay.image, m_options.display,
-                    fmt::format("rayrad snapshot {} after {} shots, {:.3g} s", m_nextSnapshot, copy.shots, copy.seconds),
-                    *m_options.files);
+        stageImages(
+            paths, image, forDisplay.image, m_options.display,
+            fmt::format("rayrad snapshot {} after {} shots, {:.3g} s", m_nextSnapshot, copy.shots, copy.seconds),
+            *m_options.files);
         m_options.files->commit();
         for (const auto& p : paths) fmt::print(stderr, "wrote {}\n", p);
         ++m_nextSnapshot;
@@ -155,7 +158,8 @@ class PushPullObserver {
 scene::Camera findView(const scene::Scene& scene, const std::string& name) {
     for (const auto& v : scene.views)
         if (v.name == name) return v.camera;
-    throw InputError(placeMessage(scene.file, "--camera", "the scene has no view \"" + name + "\" (it has " + viewNames(scene) + ")"));
+    throw InputError(placeMessage(scene.file, "--camera",
+                                  "the scene has no view \"" + name + "\" (it has " + viewNames(scene) + ")"));
 }
 
 /// The ray tracer for one camera: the plain average (cd/m²) and the display average.
@@ -171,9 +175,9 @@ std::pair<HdrImage, HdrImage> traceImage(PipelineRun& run, const scene::Camera& 
     if (run.scene.render.gatherIndirect && run.scene.hasReflectance())
         gatherer = radiosity::sensorGatherer(run.scene, run.mesh, *run.embree, run.lighting,
                                              {nullptr, nullptr, options.quiet});  // timed as part of the ray trace
-    HdrImage image = raytrace::render(run.scene, run.mesh, solution, *run.lighting.lights, *run.embree, camera, run.scene.render,
-                                      [&](double f) { progress.update(f); },
-                                      &forDisplay, options.rowBegin, options.rowEnd, gatherer.get());
+    HdrImage image = raytrace::render(
+        run.scene, run.mesh, solution, *run.lighting.lights, *run.embree, camera, run.scene.render,
+        [&](double f) { progress.update(f); }, &forDisplay, options.rowBegin, options.rowEnd, gatherer.get());
     return {std::move(image), std::move(forDisplay.image)};
 }
 
@@ -258,7 +262,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
     }
 
     if (options.wantImage) {
-        run.report.begin(run.scene.render.gatherIndirect ? "ray trace (indirect: a final gather at each hit)" : "ray trace");
+        run.report.begin(run.scene.render.gatherIndirect ? "ray trace (indirect: a final gather at each hit)"
+                                                         : "ray trace");
         auto [image, display] = traceImage(run, *run.scene.camera, "ray trace", options);
         run.image = std::move(image);
         run.displayImage = std::move(display);

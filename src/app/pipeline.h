@@ -51,9 +51,9 @@ struct RenderedView {
 
 /// One line of the convergence log, taken at a push-pull.
 struct ConvergenceRow {
-    double seconds = 0;                      ///< solve time so far (logging excluded)
+    double seconds = 0;  ///< solve time so far (logging excluded)
     int64_t shots = 0;
-    double unshotFraction = 0;               ///< of the flux the direct pass left
+    double unshotFraction = 0;                            ///< of the flux the direct pass left
     std::vector<std::optional<double>> vertexErrorPct;    ///< per referenced sensor
     std::vector<std::optional<double>> gatheredErrorPct;  ///< only at some rows (costly)
 };
@@ -62,14 +62,14 @@ struct ConvergenceRow {
 struct PipelineRun {
     scene::Scene scene;
     radiosity::PatchMesh mesh;
-    bool shadingNormals = false;    ///< mesh.cornerNormal computed (before the first ray trace)
+    bool shadingNormals = false;  ///< mesh.cornerNormal computed (before the first ray trace)
     std::unique_ptr<raytrace::EmbreeScene> embree;
-    radiosity::Lighting lighting;   ///< the lights, clusters and solution, and the solve's counts
+    radiosity::Lighting lighting;  ///< the lights, clusters and solution, and the solve's counts
     std::vector<SensorResult> sensors;
     std::optional<HdrImage> image;         ///< cd/m², the plain average of each pixel's samples (EXR, numbers)
     std::optional<HdrImage> displayImage;  ///< the range-compressed average display images are made from
     StageReport report;
-    std::vector<std::string> skipped;  ///< "stage (reason)" for the stages not needed
+    std::vector<std::string> skipped;   ///< "stage (reason)" for the stages not needed
     std::vector<std::string> warnings;  ///< scenes that are probably wrong (sceneWarnings), one line each
     std::vector<ConvergenceRow> convergence;
     std::vector<std::string> convergenceSensors;  ///< names of the sensors with an indirect reference

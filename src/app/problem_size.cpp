@@ -11,22 +11,24 @@ namespace rayrad::app {
 
 namespace {
 /// CPU seconds a sensor's final gather takes at least: the far clusters are taken in
-/// groups, so it hardly grows with the mesh. Measured 2026-11-28 (2 cores): 0.7–1.3 ms a
+/// groups, so it hardly grows with the mesh. Measured on 2 cores: 0.7–1.3 ms a
 /// sensor on the cube (a 64 × 64 grid at 1 200 to 307 200 patches), 1.0 ms in the bench
 /// hall (512 sensors); near furniture and mirrors far more, 0.56 s on average for the
 /// living room's 16 × 12 work plane (its re-gathers around small near patches).
 constexpr double kGatherSecondsPerSensor = 1e-3;
-/// Peak memory model, measured: the process with its libraries and Embree (cube runs
-/// start near 130 MiB), and bytes per patch at 1.2 M patches (bench/scale.sh: 387 on
-/// 2026-11-24, 416 and then 382 on 2026-11-27; 400, the bound, errs high).
-constexpr double kBaseBytes = 130.0 * (1 << 20);
+/// Peak memory model, measured: the process with its libraries and Embree (a solve of the
+/// small cube peaks at 17 MiB), the image libraries when an image is read or written
+/// (the image module: 125 MiB more), and bytes per patch at 1.2 M patches (bench/scale.sh:
+/// 382–416 over runs; 400 errs high).
+constexpr double kBaseBytes = 20.0 * (1 << 20);
+constexpr double kImageLibraryBytes = 125.0 * (1 << 20);
 constexpr double kBytesPerPatch = 400;
 /// Voxels per side the cluster grid can index.
 constexpr double kMaxVoxelsPerSide = 1e9;
 
 /// The setting the cluster voxel comes from (see clusterVoxelSize()).
 std::string voxelSetting(const scene::ClusterOptions& o) {
-    return o.voxelSize > 0 ? "/clusters/voxel_size"
+    return o.voxelSize > 0           ? "/clusters/voxel_size"
            : o.patchesPerCluster > 0 ? "/clusters/patches_per_cluster"
                                      : "/clusters/size_percent";
 }
@@ -42,11 +44,12 @@ double checkPatchCount(const std::string& file, const scene::Scene& scene) {
                     edge, estimate, estimate * 1024 / (1 << 30), scene.meshing.maxPatches)));
 }
 
-double estimatePeakBytes(size_t patches, size_t clusters, size_t mirrorImages) {
+double estimatePeakBytes(size_t patches, size_t clusters, size_t mirrorImages, bool images) {
     // An image mirrors patches as they are used; it keeps two flags per cluster (which
     // clusters can send and receive through its chain).
     const double perImage = 2.0 * static_cast<double>(clusters);
-    return kBaseBytes + kBytesPerPatch * static_cast<double>(patches) + perImage * static_cast<double>(mirrorImages);
+    return kBaseBytes + (images ? kImageLibraryBytes : 0.0) + kBytesPerPatch * static_cast<double>(patches) +
+           perImage * static_cast<double>(mirrorImages);
 }
 
 std::vector<std::string> costWarnings(const std::string& file, const scene::Scene& scene,
@@ -56,8 +59,9 @@ std::vector<std::string> costWarnings(const std::string& file, const scene::Scen
     if (patches == 0) return out;
     if (scene.clusters.enabled) {
         const double voxel = radiosity::clusterVoxelSize(scene, mesh, scene.clusters);
-        const double side = std::max(scene.boundsMax.x - scene.boundsMin.x,
-                                     std::max(scene.boundsMax.y - scene.boundsMin.y, scene.boundsMax.z - scene.boundsMin.z));
+        const double side =
+            std::max(scene.boundsMax.x - scene.boundsMin.x,
+                     std::max(scene.boundsMax.y - scene.boundsMin.y, scene.boundsMax.z - scene.boundsMin.z));
         if (!(voxel > 0) || side / voxel > kMaxVoxelsPerSide)
             throw InputError(placeMessage(file, voxelSetting(scene.clusters),
                                           fmt::format("a cluster voxel of {:.3g} m makes {:.3g} voxels along the "
@@ -75,10 +79,11 @@ std::vector<std::string> costWarnings(const std::string& file, const scene::Scen
     if (gatherSensors && !scene.sensors.empty() && scene.hasReflectance()) {
         const double seconds = kGatherSecondsPerSensor * static_cast<double>(scene.sensors.size());
         if (seconds > 600)
-            out.push_back(fmt::format("/sensors: {} sensors: the final gather will take at least {:.0f} CPU-minutes "
-                                      "(about 1 ms a sensor in an open room, up to a second among furniture and "
-                                      "mirrors)",
-                                      scene.sensors.size(), seconds / 60));
+            out.push_back(
+                fmt::format("/sensors: {} sensors: the final gather will take at least {:.0f} CPU-minutes "
+                            "(about 1 ms a sensor in an open room, up to a second among furniture and "
+                            "mirrors)",
+                            scene.sensors.size(), seconds / 60));
     }
     return out;
 }

@@ -15,9 +15,9 @@ namespace rayrad::app {
 /// the estimate.
 double checkPatchCount(const std::string& file, const scene::Scene& scene);
 
-/// Expected peak memory of a solve, bytes: the process's base, the patches, and a few
-/// bytes per cluster and mirror image.
-double estimatePeakBytes(size_t patches, size_t clusters, size_t mirrorImages);
+/// Expected peak memory of a run, bytes: the process's base, the image libraries when it
+/// reads or writes `images`, the patches, and a few bytes per cluster and mirror image.
+double estimatePeakBytes(size_t patches, size_t clusters, size_t mirrorImages, bool images);
 
 /// After premeshing, one line each: a cluster voxel much smaller than the patches (every
 /// patch its own cluster, so each shot visits every patch), and sensor gathers that will

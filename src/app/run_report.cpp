@@ -60,13 +60,17 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
                   {"channels", run.lighting.singleChannel ? 1 : 3}};
     if (run.lighting.lights) {
         auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lighting.lights->emittedFlux());
-        j["energy_lm"] = {{"emitted", b.emitted}, {"absorbed", b.absorbed}, {"absorbed_by_mirrors", b.mirrorAbsorbed},
-                          {"absorbed_on_backs", b.backAbsorbed}, {"unshot", b.unshot},
+        j["energy_lm"] = {{"emitted", b.emitted},
+                          {"absorbed", b.absorbed},
+                          {"absorbed_by_mirrors", b.mirrorAbsorbed},
+                          {"absorbed_on_backs", b.backAbsorbed},
+                          {"unshot", b.unshot},
                           {"not_accounted_pct", 100 * b.relativeError()}};
     }
     j["stages"] = json::array();
     for (const auto& st : run.report.stages())
-        j["stages"].push_back({{"name", st.name}, {"seconds", st.seconds}, {"cpu_seconds", st.cpuSeconds}, {"peak_bytes", st.peakBytes}});
+        j["stages"].push_back(
+            {{"name", st.name}, {"seconds", st.seconds}, {"cpu_seconds", st.cpuSeconds}, {"peak_bytes", st.peakBytes}});
     j["total_seconds"] = run.report.totalSeconds();
     j["peak_bytes"] = peakMemoryBytes();
     j["sensors"] = json::array();
@@ -83,11 +87,17 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
     }
     j["grids"] = json::array();
     for (const auto& g : gridStatistics(run.sensors))
-        j["grids"].push_back({{"grid", g.grid}, {"points", g.points}, {"emin_lx", g.minimum}, {"eavg_lx", g.mean},
-                              {"emax_lx", g.maximum}, {"u0", g.u0()}, {"emin_emax", g.minToMax()},
+        j["grids"].push_back({{"grid", g.grid},
+                              {"points", g.points},
+                              {"emin_lx", g.minimum},
+                              {"eavg_lx", g.mean},
+                              {"emax_lx", g.maximum},
+                              {"u0", g.u0()},
+                              {"emin_emax", g.minToMax()},
                               {"excluded_points", g.excluded}});
     if (groups) j["light_groups"] = lightGroupJson(run.sensors, *groups);
-    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // names may come from --set or mesh files
+    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
+           "\n";  // names may come from --set or mesh files
 }
 
 }  // namespace rayrad::app

@@ -34,9 +34,9 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
                    m.isEmissive() ? fmt::format(", emits {} cd/m²", toString(m.emission)) : "");
     }
     fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
-    fmt::print("patches (premeshed triangles): {} (estimated {:.0f}; target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
-               mesh.patches.size(), estimate, mesh.edgeLength, mesh.vertices.size(),
-               mesh.totalArea());
+    fmt::print(
+        "patches (premeshed triangles): {} (estimated {:.0f}; target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
+        mesh.patches.size(), estimate, mesh.edgeLength, mesh.vertices.size(), mesh.totalArea());
     auto embree = raytrace::buildEmbreeScene(scene, mesh);
     const radiosity::Clustering clustering = radiosity::buildClusters(scene, mesh, scene.clusters, embree.get());
     fmt::print("{}\n", clustering.statistics());
@@ -61,16 +61,20 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
     const radiosity::DirectLight lights(scene);  // its virtual lights are the mirror images' copies of the lights
     const size_t images = lights.imageCount();
     if (!scene.mirrors.empty())
-        fmt::print("mirror images: {} ({}){}\n", images, scene.mirrorImages.imageMethod() ? "chains of reflections" : "mirrors ignored",
+        fmt::print("mirror images: {} ({}){}\n", images,
+                   scene.mirrorImages.imageMethod() ? "chains of reflections" : "mirrors ignored",
                    images > 0 ? fmt::format(", {} virtual lights", lights.virtualLightCount()) : "");
-    fmt::print("expected peak memory: about {:.0f} MiB ({} patches, {} clusters{})\n",
-               app::estimatePeakBytes(mesh.patches.size(), clustering.clusters.size(), images) / (1 << 20),
-               mesh.patches.size(), clustering.clusters.size(),
+    const auto peakMiB = [&](bool rendering) {
+        return app::estimatePeakBytes(mesh.patches.size(), clustering.clusters.size(), images, rendering) / (1 << 20);
+    };
+    fmt::print("expected peak memory: about {:.0f} MiB to solve, {:.0f} MiB to render ({} patches, {} clusters{})\n",
+               peakMiB(false), peakMiB(true), mesh.patches.size(), clustering.clusters.size(),
                images > 0 ? fmt::format(", {} mirror images", images) : "");
     for (const auto& v : scene.views)
-        fmt::print("view \"{}\": {}x{}, vfov {} deg{}\n", v.name, v.camera.width, v.camera.height, v.camera.verticalFovDeg,
-                   &v == &scene.views.front() ? " (the default)" : "");
-    fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax), scene.diagonal());
+        fmt::print("view \"{}\": {}x{}, vfov {} deg{}\n", v.name, v.camera.width, v.camera.height,
+                   v.camera.verticalFovDeg, &v == &scene.views.front() ? " (the default)" : "");
+    fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax),
+               scene.diagonal());
     if (scene.warnings.degeneratePolygons > 0)
         fmt::print("warning: {} zero-area or duplicate triangles dropped\n", scene.warnings.degeneratePolygons);
     if (scene.warnings.droppedMeshFaces > 0)
@@ -81,8 +85,7 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
                    scene.warnings.clampedFileReflectances, scene::kMaxFileReflectance);
     for (const auto& w : scene.warnings.missingTextures) fmt::print("warning: {}\n", w);
     if (!scene.textures.empty()) fmt::print("textures: {}\n", scene.textures.size());
-    fmt::print("stages needed: premesh, direct light{}{}{}\n",
-               scene.hasReflectance() ? ", secondary pass" : "",
+    fmt::print("stages needed: premesh, direct light{}{}{}\n", scene.hasReflectance() ? ", secondary pass" : "",
                scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");
     std::vector<std::string> skipped;
     if (!scene.hasReflectance()) skipped.push_back("secondary pass (no surface reflects light)");
@@ -91,6 +94,5 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
     for (const auto& s : skipped) fmt::print("not needed: {}\n", s);
     return 0;
 }
-
 
 }  // namespace rayrad::app

@@ -94,10 +94,10 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
         const auto& l = scene.lights[i];
         Probe p = prober.probe(l.position, Vec3(0.0), near);
         if (enclosed(p))
-            out.push_back(fmt::format("{}: the light at {} is inside a closed solid ({} of {} rays from it hit the "
-                                      "inside of surfaces): its light reaches nothing",
-                                      l.where.empty() ? fmt::format("/lights/{}", i) : l.where, toString(l.position),
-                                      p.backFaces, p.rays));
+            out.push_back(fmt::format(
+                "{}: the light at {} is inside a closed solid ({} of {} rays from it hit the "
+                "inside of surfaces): its light reaches nothing",
+                l.where.empty() ? fmt::format("/lights/{}", i) : l.where, toString(l.position), p.backFaces, p.rays));
     }
     for (const auto& g : scene.groups) {
         if (!scene.materials[g.material].isEmissive()) continue;
@@ -109,9 +109,10 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
             c /= static_cast<double>(v.size());
             Probe p = prober.probe(c, scene::polygonNormal(v), near);
             if (enclosed(p) || p.fraction(p.nearHits) >= kEnclosedFraction) {
-                out.push_back(fmt::format("{}: an emitter at {} faces the inside of a solid or a surface within {:.3g} m: "
-                                          "its light reaches almost nothing",
-                                          g.where, toString(c), near));
+                out.push_back(
+                    fmt::format("{}: an emitter at {} faces the inside of a solid or a surface within {:.3g} m: "
+                                "its light reaches almost nothing",
+                                g.where, toString(c), near));
                 break;  // one line per object
             }
         }
@@ -120,9 +121,10 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
         const auto& cam = *scene.camera;
         Probe p = prober.probe(cam.position, Vec3(0.0), near);
         if (enclosed(p))
-            out.push_back(fmt::format("/camera: the camera at {} is inside a closed solid ({} of {} rays hit the "
-                                      "inside of surfaces): the image will show only those",
-                                      toString(cam.position), p.backFaces, p.rays));
+            out.push_back(
+                fmt::format("/camera: the camera at {} is inside a closed solid ({} of {} rays hit the "
+                            "inside of surfaces): the image will show only those",
+                            toString(cam.position), p.backFaces, p.rays));
         // What the view itself shows: rays through a grid of image points.
         raytrace::ImageCamera camera(cam);
         int rays = 0, mirrorBacks = 0, misses = 0;
@@ -141,9 +143,10 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
                     ++mirrorBacks;
             }
         if (mirrorBacks >= rays / 2)
-            out.push_back(fmt::format("/camera: the camera at {} looks at the back of a mirror ({} of {} view rays): "
-                                      "a mirror's back is black, so the image will be mostly black",
-                                      toString(cam.position), mirrorBacks, rays));
+            out.push_back(
+                fmt::format("/camera: the camera at {} looks at the back of a mirror ({} of {} view rays): "
+                            "a mirror's back is black, so the image will be mostly black",
+                            toString(cam.position), mirrorBacks, rays));
         if (misses == rays)
             out.push_back(fmt::format("/camera: the camera at {} sees no surface at all", toString(cam.position)));
     }
@@ -162,20 +165,23 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
         Probe p = prober.probe(x, s.normal, near);
         std::string inside;  // why it is no measurement
         if (p.fraction(p.mirrorBacks) >= 0.5)
-            sensorLines[i] = fmt::format("/sensors: sensor \"{}\" at {} is behind a mirror ({} of {} hemisphere rays "
-                                         "hit its back): it will read about 0",
-                                         s.name, toString(s.position), p.mirrorBacks, p.rays);
+            sensorLines[i] = fmt::format(
+                "/sensors: sensor \"{}\" at {} is behind a mirror ({} of {} hemisphere rays "
+                "hit its back): it will read about 0",
+                s.name, toString(s.position), p.mirrorBacks, p.rays);
         else if (p.coveredFraction() >= kEnclosedFraction) {
             inside = "buried";
-            sensorLines[i] = fmt::format("/sensors: sensor \"{}\" at {} is buried: {:.0f} % of its view (cosine-weighted) "
-                                         "meets a surface within {:.3g} m, so it will read about 0 (check its position "
-                                         "and normal)",
-                                         s.name, toString(s.position), 100 * p.coveredFraction(), near);
+            sensorLines[i] = fmt::format(
+                "/sensors: sensor \"{}\" at {} is buried: {:.0f} % of its view (cosine-weighted) "
+                "meets a surface within {:.3g} m, so it will read about 0 (check its position "
+                "and normal)",
+                s.name, toString(s.position), 100 * p.coveredFraction(), near);
         } else if (enclosed(p)) {
             inside = "inside a solid";
-            sensorLines[i] = fmt::format("/sensors: sensor \"{}\" at {} is inside a solid ({} of {} hemisphere rays hit "
-                                         "the inside of surfaces): it will read about 0",
-                                         s.name, toString(s.position), p.backFaces, p.rays);
+            sensorLines[i] = fmt::format(
+                "/sensors: sensor \"{}\" at {} is inside a solid ({} of {} hemisphere rays hit "
+                "the inside of surfaces): it will read about 0",
+                s.name, toString(s.position), p.backFaces, p.rays);
         }
         if (!inside.empty() && !s.grid.empty()) sensorLines[i] += "; left out of its grid's statistics";
         if (inSolid) (*inSolid)[i] = inside;
@@ -191,23 +197,25 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
         const double size = std::sqrt(scene::polygonArea(m.polygon));
         Probe p = prober.probe(c, m.normal, 0.25 * size);
         if (p.fraction(p.backFaces + p.misses) >= kEnclosedFraction || p.fraction(p.nearHits) >= kEnclosedFraction)
-            out.push_back(fmt::format("{}: the mirror at {} faces nothing it could reflect (its front sees the back of "
-                                      "surfaces, the void, or a surface within {:.3g} m): is it wound backwards?",
-                                      m.where, toString(c), 0.25 * size));
+            out.push_back(
+                fmt::format("{}: the mirror at {} faces nothing it could reflect (its front sees the back of "
+                            "surfaces, the void, or a surface within {:.3g} m): is it wound backwards?",
+                            m.where, toString(c), 0.25 * size));
     }
     return out;
 }
 
-std::optional<std::string> backLightWarning(const scene::Scene& scene,
-                                            const radiosity::RadiositySolution& solution, double emittedFlux) {
+std::optional<std::string> backLightWarning(const scene::Scene& scene, const radiosity::RadiositySolution& solution,
+                                            double emittedFlux) {
     if (emittedFlux <= 0 || solution.backAbsorbedDirect < kBackLightShare * emittedFlux) return std::nullopt;
     const auto most = std::max_element(solution.backFlux.begin(), solution.backFlux.end());
     const auto& g = scene.groups[static_cast<size_t>(most - solution.backFlux.begin())];
-    return fmt::format("{:.3g} % of the direct light falls on the backs of one-sided surfaces and is absorbed there "
-                       "(most, {:.3g} %, on {}, material '{}'): a gap behind a surface, or a surface wound backwards? "
-                       "Close the gap, or make it \"two_sided\"",
-                       100 * solution.backAbsorbedDirect / emittedFlux, 100 * *most / emittedFlux, g.where,
-                       scene.materials[static_cast<size_t>(g.material)].name);
+    return fmt::format(
+        "{:.3g} % of the direct light falls on the backs of one-sided surfaces and is absorbed there "
+        "(most, {:.3g} %, on {}, material '{}'): a gap behind a surface, or a surface wound backwards? "
+        "Close the gap, or make it \"two_sided\"",
+        100 * solution.backAbsorbedDirect / emittedFlux, 100 * *most / emittedFlux, g.where,
+        scene.materials[static_cast<size_t>(g.material)].name);
 }
 
 }  // namespace rayrad::app

@@ -32,7 +32,7 @@ constexpr double kBackLightShare = 1e-3;
 
 /// After the direct pass: a warning when more than kBackLightShare of the emitted flux
 /// fell on the backs of one-sided surfaces, naming the surface that took most of it.
-std::optional<std::string> backLightWarning(const scene::Scene& scene,
-                                            const radiosity::RadiositySolution& solution, double emittedFlux);
+std::optional<std::string> backLightWarning(const scene::Scene& scene, const radiosity::RadiositySolution& solution,
+                                            double emittedFlux);
 
 }  // namespace rayrad::app

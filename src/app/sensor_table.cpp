@@ -25,7 +25,9 @@ std::optional<double> errorPct(double value, const std::optional<double>& ref) {
 
 /// A table cell in lx: two decimals, or 4 significant digits in exponent form when that
 /// would not fit the column (beyond 10⁸ lx).
-std::string lux(double v) { return std::abs(v) < 1e8 ? fmt::format("{:.2f}", v) : fmt::format("{:.4g}", v); }
+std::string lux(double v) {
+    return std::abs(v) < 1e8 ? fmt::format("{:.2f}", v) : fmt::format("{:.4g}", v);
+}
 
 std::string cell(const std::optional<double>& v, const char* format = "{:.9g}") {
     return v ? fmt::format(fmt::runtime(format), *v) : std::string();
@@ -61,7 +63,8 @@ std::string sensorCsv(const std::vector<SensorResult>& results) {
     s += ",indirect_vertex_lx";
     if (refs) s += ",err_indirect_vertex_pct";
     // Points that are no measurement (inside a solid), marked when there are any.
-    const bool marks = std::any_of(results.begin(), results.end(), [](const SensorResult& r) { return !r.excluded.empty(); });
+    const bool marks =
+        std::any_of(results.begin(), results.end(), [](const SensorResult& r) { return !r.excluded.empty(); });
     if (marks) s += ",excluded";
     s += "\n";
     for (const auto& r : results) {
@@ -87,8 +90,8 @@ std::string sensorCsv(const std::vector<SensorResult>& results) {
 std::string sensorTable(const std::vector<SensorResult>& results) {
     bool refs = anyReference(results);
     auto pct = [](const std::optional<double>& e) { return e ? fmt::format("{:+.2f}%", *e) : std::string("-"); };
-    std::string s = fmt::format("{:<14} {:>11} {:>11} {:>11} {:>14}", "sensor", "direct lx", "indirect lx",
-                                "total lx", "vertex ind lx");
+    std::string s = fmt::format("{:<14} {:>11} {:>11} {:>11} {:>14}", "sensor", "direct lx", "indirect lx", "total lx",
+                                "vertex ind lx");
     if (refs) s += fmt::format("  {:>9} {:>9} {:>9} {:>9}", "err dir", "err ind", "err tot", "err vtx");
     s += "\n";
     for (const auto& r : results) {

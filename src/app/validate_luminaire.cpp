@@ -21,12 +21,12 @@ namespace rayrad::app {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr double kHeight = 3.0;            ///< m, luminaire above the floor (more for a large opening)
-constexpr double kMaxGammaDeg = 80.0;      ///< farther out the floor points are too far away
-constexpr double kRho = 0.5;               ///< the closed sphere's reflectance
-constexpr double kDirectBound = 1e-6;      ///< relative: exact at the table's nodes
-constexpr double kIndirectBound = 0.015;   ///< relative: the tessellated sphere (as for a point light)
-constexpr double kEnergyBound = 1e-3;      ///< relative
+constexpr double kHeight = 3.0;           ///< m, luminaire above the floor (more for a large opening)
+constexpr double kMaxGammaDeg = 80.0;     ///< farther out the floor points are too far away
+constexpr double kRho = 0.5;              ///< the closed sphere's reflectance
+constexpr double kDirectBound = 1e-6;     ///< relative: exact at the table's nodes
+constexpr double kIndirectBound = 0.015;  ///< relative: the tessellated sphere (as for a point light)
+constexpr double kEnergyBound = 1e-3;     ///< relative
 
 /// The index of the stored plane nearest `c` degrees.
 size_t planeNear(const scene::Photometry& p, double c) {
@@ -57,7 +57,8 @@ Result validateFile(const std::string& file, const std::string& outDir) {
     const std::string absolute = fs::absolute(file).string();
     // (1) Direct light on a black floor at the table's nodes in the C0 and C90 planes,
     // beyond the near field (kNearFieldSizes opening sizes), where the luminaire is a point.
-    const double height = std::max(kHeight, 1.01 * scene::kNearFieldSizes * std::max(p.width, p.length) / std::cos(kMaxGammaDeg * kPi / 180));
+    const double height = std::max(
+        kHeight, 1.01 * scene::kNearFieldSizes * std::max(p.width, p.length) / std::cos(kMaxGammaDeg * kPi / 180));
     // C0 along +x; C90 = (−nadir) × c0 = +y × +x = −z.
     std::string sensors;
     struct Expected {
@@ -72,8 +73,9 @@ Result validateFile(const std::string& file, const std::string& outDir) {
             if (gamma >= kMaxGammaDeg) break;
             const double g = gamma * kPi / 180, rho = height * std::tan(g), cr = c * kPi / 180;
             const double x = rho * std::cos(cr), z = -rho * std::sin(cr);
-            sensors += fmt::format("{}{{\"name\": \"p{}\", \"position\": [{:.17g}, 0, {:.17g}], \"normal\": [0, 1, 0]}}",
-                                   sensors.empty() ? "" : ", ", expected.size(), x, z);
+            sensors +=
+                fmt::format("{}{{\"name\": \"p{}\", \"position\": [{:.17g}, 0, {:.17g}], \"normal\": [0, 1, 0]}}",
+                            sensors.empty() ? "" : ", ", expected.size(), x, z);
             expected.push_back({p.candela[h][v] * std::pow(std::cos(g), 3) / (height * height)});  // E = I cos³γ / h²
         }
     }
@@ -86,7 +88,8 @@ Result validateFile(const std::string& file, const std::string& outDir) {
     PipelineOptions quiet;
     quiet.quiet = true;
     const auto direct = runPipeline(writeScene(outDir, r.file + ".floor", floor), quiet);
-    const double peak = std::max_element(expected.begin(), expected.end(), [](auto& a, auto& b) { return a.lux < b.lux; })->lux;
+    const double peak =
+        std::max_element(expected.begin(), expected.end(), [](auto& a, auto& b) { return a.lux < b.lux; })->lux;
     for (size_t i = 0; i < expected.size(); ++i) {
         if (expected[i].lux < 1e-6 * peak) continue;
         ++r.points;
@@ -110,9 +113,11 @@ Result validateFile(const std::string& file, const std::string& outDir) {
         for (double y : {-1.0, 1.0})
             for (double z : {-1.0, 1.0}) directions.push_back(glm::normalize(Vec3(x, y, z)));
     for (size_t i = 0; i < directions.size(); ++i)
-        sphereSensors += fmt::format("{}{{\"name\": \"s{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], \"normal\": [{:.17g}, {:.17g}, {:.17g}]}}",
-                                     i ? ", " : "", i, directions[i].x, directions[i].y, directions[i].z, -directions[i].x,
-                                     -directions[i].y, -directions[i].z);
+        sphereSensors += fmt::format(
+            "{}{{\"name\": \"s{}\", \"position\": [{:.17g}, {:.17g}, {:.17g}], \"normal\": [{:.17g}, {:.17g}, "
+            "{:.17g}]}}",
+            i ? ", " : "", i, directions[i].x, directions[i].y, directions[i].z, -directions[i].x, -directions[i].y,
+            -directions[i].z);
     const std::string sphere = fmt::format(
         R"({{"materials": {{"m": {{"reflectance": {}}}}},
             "objects": [{{"type": "sphere", "material": "m", "radius": 1, "subdivisions": 16, "facing": "inward"}}],
@@ -129,7 +134,8 @@ Result validateFile(const std::string& file, const std::string& outDir) {
         ++r.sphereSensors;
         r.indirectError = std::max(r.indirectError, std::abs(luminance(s.value.indirect) / uniform - 1));
     }
-    const auto balance = radiosity::energyBalance(closed.scene, closed.mesh, closed.lighting.solution, closed.lighting.lights->emittedFlux());
+    const auto balance = radiosity::energyBalance(closed.scene, closed.mesh, closed.lighting.solution,
+                                                  closed.lighting.lights->emittedFlux());
     r.energyError = std::abs(balance.relativeError());
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
@@ -147,21 +153,26 @@ int validateLuminaire(const ValidateLuminaireOptions& o) {
     if (ec || files.empty()) throw InputError(placeMessage(o.dataDir, "", "no .ies or .ldt files here"));
     std::sort(files.begin(), files.end());
     fmt::print("rayrad validate luminaire: {} files from {}, results in {}\n\n", files.size(), o.dataDir, o.outDir);
-    std::string table = "| file | flux lm | direct: points, largest error | closed sphere: sensors, indirect error | energy not accounted | s |\n"
-                        "|---|---|---|---|---|---|\n";
+    std::string table =
+        "| file | flux lm | direct: points, largest error | closed sphere: sensors, indirect error | energy not "
+        "accounted | s |\n"
+        "|---|---|---|---|---|---|\n";
     std::string csv = "file,flux_lm,direct_points,direct_max_err,sphere_sensors,indirect_max_err,energy_err,seconds\n";
     bool ok = true;
     for (const auto& f : files) {
         const Result r = validateFile(f, o.outDir);
-        ok &= r.sphereSensors >= 3 && r.directError <= kDirectBound && r.indirectError <= kIndirectBound && r.energyError <= kEnergyBound;
-        table += fmt::format("| {} | {:.2f} | {}, {:.1e} | {}, {:.2f} % | {:.4f} % | {:.1f} |\n", r.file, r.flux, r.points,
-                             r.directError, r.sphereSensors, 100 * r.indirectError, 100 * r.energyError, r.seconds);
+        ok &= r.sphereSensors >= 3 && r.directError <= kDirectBound && r.indirectError <= kIndirectBound &&
+              r.energyError <= kEnergyBound;
+        table +=
+            fmt::format("| {} | {:.2f} | {}, {:.1e} | {}, {:.2f} % | {:.4f} % | {:.1f} |\n", r.file, r.flux, r.points,
+                        r.directError, r.sphereSensors, 100 * r.indirectError, 100 * r.energyError, r.seconds);
         csv += fmt::format("{},{:.6f},{},{:.3e},{},{:.6e},{:.6e},{:.3f}\n", r.file, r.flux, r.points, r.directError,
                            r.sphereSensors, r.indirectError, r.energyError, r.seconds);
     }
-    fmt::print("{}\nbounds: direct {:.0e} (exact at the table's nodes), indirect {:.1f} % (the tessellated sphere), "
-               "energy {:.1f} %: {}\n",
-               table, kDirectBound, 100 * kIndirectBound, 100 * kEnergyBound, ok ? "all within" : "SOME BEYOND");
+    fmt::print(
+        "{}\nbounds: direct {:.0e} (exact at the table's nodes), indirect {:.1f} % (the tessellated sphere), "
+        "energy {:.1f} %: {}\n",
+        table, kDirectBound, 100 * kIndirectBound, 100 * kEnergyBound, ok ? "all within" : "SOME BEYOND");
     writeFileAtomically(csvPath, csv);
     fmt::print("wrote {}\n", csvPath);
     return ok ? 0 : 1;

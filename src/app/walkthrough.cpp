@@ -14,7 +14,8 @@ namespace rayrad::app {
 
 std::pair<int, int> parseFrames(const std::string& text, int count, const std::string& sceneFile) {
     if (count == 0)
-        throw InputError(placeMessage(sceneFile, "--frames", "the scene has no \"camera_path\" (docs/scene-format.md#camera-path)"));
+        throw InputError(
+            placeMessage(sceneFile, "--frames", "the scene has no \"camera_path\" (docs/scene-format.md#camera-path)"));
     if (text == "all") return {0, count - 1};
     const auto number = [&](const std::string& s) {
         size_t used = 0;
@@ -25,10 +26,12 @@ std::pair<int, int> parseFrames(const std::string& text, int count, const std::s
             used = 0;
         }
         if (s.empty() || used != s.size() || v < 0)
-            throw InputError(placeMessage("", "--frames", "expected all, K or A:B (frame numbers from 0), got \"" + text + "\""));
+            throw InputError(
+                placeMessage("", "--frames", "expected all, K or A:B (frame numbers from 0), got \"" + text + "\""));
         if (v >= count)
-            throw InputError(placeMessage(sceneFile, "--frames",
-                                          fmt::format("frame {} is beyond the path's {} frames (0 to {})", v, count, count - 1)));
+            throw InputError(
+                placeMessage(sceneFile, "--frames",
+                             fmt::format("frame {} is beyond the path's {} frames (0 to {})", v, count, count - 1)));
         return static_cast<int>(v);
     };
     const auto colon = text.find(':');
@@ -37,7 +40,8 @@ std::pair<int, int> parseFrames(const std::string& text, int count, const std::s
         return {k, k};
     }
     const int a = number(text.substr(0, colon)), b = number(text.substr(colon + 1));
-    if (b < a) throw InputError(placeMessage("", "--frames", "the last frame comes before the first in \"" + text + "\""));
+    if (b < a)
+        throw InputError(placeMessage("", "--frames", "the last frame comes before the first in \"" + text + "\""));
     return {a, b};
 }
 
@@ -50,7 +54,8 @@ double solutionAdaptationLuminance(const PipelineRun& run) {
     return 0.18 * raytrace::compressionLuminance(run.scene, run.mesh, run.lighting.solution);  // L_c = L̄ / 0.18
 }
 
-double viewsAdaptationLuminance(PipelineRun& run, const std::vector<scene::Camera>& cameras, const PipelineOptions& options) {
+double viewsAdaptationLuminance(PipelineRun& run, const std::vector<scene::Camera>& cameras,
+                                const PipelineOptions& options) {
     constexpr size_t kSamples = 8;
     constexpr int kWidth = 64;
     if (cameras.empty()) return 0;

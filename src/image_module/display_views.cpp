@@ -48,15 +48,17 @@ DisplayView resolveDisplayView(const std::string& configFile, const std::string&
     std::vector<std::string> displays;
     for (int i = 0; i < config->getNumDisplays(); ++i) displays.push_back(config->getDisplay(i));
     if (std::find(displays.begin(), displays.end(), dv.display) == displays.end())
-        throw InputError(placeMessage(dv.configName, "--display",
-                                      "unknown display \"" + dv.display + "\" (the config has " + quotedList(displays) + ")"));
+        throw InputError(
+            placeMessage(dv.configName, "--display",
+                         "unknown display \"" + dv.display + "\" (the config has " + quotedList(displays) + ")"));
     dv.view = view.empty() ? config->getDefaultView(dv.display.c_str()) : view;
     std::vector<std::string> views;
-    for (int i = 0; i < config->getNumViews(dv.display.c_str()); ++i) views.push_back(config->getView(dv.display.c_str(), i));
+    for (int i = 0; i < config->getNumViews(dv.display.c_str()); ++i)
+        views.push_back(config->getView(dv.display.c_str(), i));
     if (std::find(views.begin(), views.end(), dv.view) == views.end())
-        throw InputError(placeMessage(dv.configName, "--view",
-                                      "unknown view \"" + dv.view + "\" for display \"" + dv.display + "\" (it has " +
-                                          quotedList(views) + ")"));
+        throw InputError(placeMessage(
+            dv.configName, "--view",
+            "unknown view \"" + dv.view + "\" for display \"" + dv.display + "\" (it has " + quotedList(views) + ")"));
     return dv;
 }
 
@@ -72,7 +74,8 @@ OCIO::ConstCPUProcessorRcPtr makeProcessor(const DisplayView& dv) {
                                                  OCIO::TRANSFORM_DIR_FORWARD);
         return processor->getDefaultCPUProcessor();
     } catch (const OCIO::Exception& e) {
-        throw InputError(placeMessage(dv.configName, "display \"" + dv.display + "\", view \"" + dv.view + "\"", e.what()));
+        throw InputError(
+            placeMessage(dv.configName, "display \"" + dv.display + "\", view \"" + dv.view + "\"", e.what()));
     }
 }
 

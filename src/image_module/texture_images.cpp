@@ -34,7 +34,8 @@ namespace {
 std::string makeTemporaryDirectory() {
     std::error_code error;
     const std::filesystem::path base = std::filesystem::temp_directory_path(error);
-    if (error) throw InputError(std::string("$TMPDIR: no directory for the decoded textures (") + error.message() + ")");
+    if (error)
+        throw InputError(std::string("$TMPDIR: no directory for the decoded textures (") + error.message() + ")");
     std::string pattern = (base / "rayrad-textures-XXXXXX").string();
     if (!mkdtemp(pattern.data()))
         throw InputError(pattern + ": cannot make a directory for the decoded textures (" + std::strerror(errno) + ")");
@@ -104,7 +105,9 @@ Rgb TextureImages::lookup(int index, double u, double v, const glm::dvec2& axisA
     return sample(index, u, v, axes);
 }
 
-Rgb TextureImages::texel(int index, double u, double v) const { return sample(index, u, v, nullptr); }
+Rgb TextureImages::texel(int index, double u, double v) const {
+    return sample(index, u, v, nullptr);
+}
 
 Rgb TextureImages::sample(int index, double u, double v, const glm::dvec2* axes) const {
     const Impl::Image& image = m_impl->images.at(static_cast<size_t>(index));
@@ -125,6 +128,8 @@ Rgb TextureImages::sample(int index, double u, double v, const glm::dvec2* axes)
     return Rgb(rgb[0], rgb[1], rgb[2]);
 }
 
-int TextureImages::resolution(int index) const { return m_impl->images.at(static_cast<size_t>(index)).resolution; }
+int TextureImages::resolution(int index) const {
+    return m_impl->images.at(static_cast<size_t>(index)).resolution;
+}
 
 }  // namespace rayrad::image_module

@@ -24,7 +24,9 @@ void StageLog::skip(const std::string& what) const {
     if (skipped) skipped->push_back(what);
 }
 
-double pointNudge(const scene::Scene& scene) { return 1e-6 * scene.diagonal(); }
+double pointNudge(const scene::Scene& scene) {
+    return 1e-6 * scene.diagonal();
+}
 
 MeshEstimate estimateMesh(const scene::Scene& scene) {
     return {estimatePatchCount(scene, scene.meshing), targetEdge(scene, scene.meshing)};
@@ -53,8 +55,10 @@ Lighting solveDirect(const scene::Scene& scene, const PatchMesh& mesh, const Vis
     Lighting lighting;
     lighting.lights = std::make_unique<DirectLight>(scene);
     lighting.mirrorImages = mirrorImagesFor(scene).size();
-    if (scene.mirrors.empty()) log.skip("virtual lights and shooters (no mirrors)");
-    else if (!scene.mirrorImages.imageMethod()) log.skip("virtual lights and shooters (mirrors ignored)");
+    if (scene.mirrors.empty())
+        log.skip("virtual lights and shooters (no mirrors)");
+    else if (!scene.mirrorImages.imageMethod())
+        log.skip("virtual lights and shooters (mirrors ignored)");
     log.begin(lighting.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
                                                       lighting.lights->virtualLightCount(), lighting.mirrorImages)
                                         : std::string("direct light"));
@@ -141,9 +145,8 @@ void reconstructDisplay(const scene::Scene& scene, const PatchMesh& mesh, const 
     // Edges as short as an input mesh's own detail are left linear, as the contacts are.
     const double minEdge = kContactMinEdges * mesh.edgeLength;
     solution.seamProfiles = gatherSeamProfiles(scene, mesh, clustering, solution, vis,
-                                               lighting.displayVertices.seamVertices, minEdge,
-                                               options.seamProfileNodes, &lighting.seamProfileGathers,
-                                               [&](double f) { progress.update(f); });
+                                               lighting.displayVertices.seamVertices, minEdge, options.seamProfileNodes,
+                                               &lighting.seamProfileGathers, [&](double f) { progress.update(f); });
 }
 
 std::unique_ptr<Gatherer> sensorGatherer(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,

@@ -47,12 +47,12 @@ struct Lighting {
     Clustering clustering;
     RadiositySolution solution;
     ShootingStatistics shooting;
-    double maxIlluminanceStep = 0;  ///< ΔI_max the shooting used, lx
-    bool singleChannel = false;     ///< the scene is grey: one channel was solved
-    size_t mirrorImages = 0;        ///< image chains of the image method
+    double maxIlluminanceStep = 0;     ///< ΔI_max the shooting used, lx
+    bool singleChannel = false;        ///< the scene is grey: one channel was solved
+    size_t mirrorImages = 0;           ///< image chains of the image method
     GatheredVertices displayVertices;  ///< vertices whose display value came from a point gather
-    size_t seamProfileGathers = 0;  ///< point gathers the seam profiles took
-    size_t sensorGathers = 0;       ///< point gathers the sensors took (their own and every re-gather)
+    size_t seamProfileGathers = 0;     ///< point gathers the seam profiles took
+    size_t sensorGathers = 0;          ///< point gathers the sensors took (their own and every re-gather)
 };
 
 // 1. The mesh.

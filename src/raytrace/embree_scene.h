@@ -3,9 +3,9 @@
 
 #include <core/visibility.h>
 
-#include <string>
 #include <radiosity/radiosity.h>
 #include <scene/scene.h>
+#include <string>
 
 #include <array>
 #include <memory>
@@ -28,8 +28,8 @@ std::vector<SpecularTriangle> specularTriangles(const scene::Scene& scene);
 /// specular triangle (index), and the distance.
 struct Hit {
     bool found = false;
-    bool specular = false;   ///< index is into the specular triangles, not the patches
-    uint32_t patch = 0;      ///< patch or specular triangle index
+    bool specular = false;  ///< index is into the specular triangles, not the patches
+    uint32_t patch = 0;     ///< patch or specular triangle index
     double u = 0, v = 0, t = 0;
 };
 

@@ -62,8 +62,8 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
                              onward, depth + 1, gather);
         if (R < 1) {
             Vec3 refracted = eta * unit + (eta * c - cosT) * n;  // Snell's law
-            L += (1 - R) * shadeRay(scene, mesh, solution, lights, embree, x - offset * n, refracted,
-                                    areaLightSamples, rng, onward, depth + 1, gather);
+            L += (1 - R) * shadeRay(scene, mesh, solution, lights, embree, x - offset * n, refracted, areaLightSamples,
+                                    rng, onward, depth + 1, gather);
         }
         return L;
     }
@@ -115,10 +115,11 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
     return area > 0 ? std::exp(sumLog / area) / 0.18 : 0.0;
 }
 
-HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
-                const radiosity::DirectLight& lights, const EmbreeScene& embree, const ImageCamera& camera,
-                const scene::RenderOptions& options, const std::function<void(double)>& onProgress, DisplayAverage* display,
-                int rowBegin, int rowEnd, const radiosity::Gatherer* gatherer) {
+HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                const radiosity::RadiositySolution& solution, const radiosity::DirectLight& lights,
+                const EmbreeScene& embree, const ImageCamera& camera, const scene::RenderOptions& options,
+                const std::function<void(double)>& onProgress, DisplayAverage* display, int rowBegin, int rowEnd,
+                const radiosity::Gatherer* gatherer) {
     HdrImage image(camera.width(), camera.height());
     const double Lc = display ? display->compressionLuminance : 0.0;
     if (display) display->image = HdrImage(camera.width(), camera.height());
@@ -132,7 +133,8 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
     const RayCone pixel = camera.pixelCone();
     const RayCone sampleCone{pixel.width / strata, pixel.spread / strata};
     std::atomic<int> rowsDone{0};
-    const int first = std::clamp(rowBegin, 0, image.height), last = rowEnd < 0 ? image.height : std::clamp(rowEnd, first, image.height);
+    const int first = std::clamp(rowBegin, 0, image.height),
+              last = rowEnd < 0 ? image.height : std::clamp(rowEnd, first, image.height);
     tbb::parallel_for(tbb::blocked_range<int>(first, last, 1), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
             radiosity::GatherMemo memo;  // the row's re-gathered corners (render.indirect "gather")
@@ -155,11 +157,10 @@ HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, con
                         jy = rng.nextDouble();
                     }
                     const CameraRay r = camera.ray(x + jx, y + jy);
-                    const Rgb sample =
-                        r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction, raysPerHit, rng,
-                                           sampleCone, 0, gather ? &*gather : nullptr,
-                                           options.shareFarShadows ? &pixelLights : nullptr)
-                                : Rgb(0.0);
+                    const Rgb sample = r.valid ? shadeRay(scene, mesh, solution, lights, embree, r.origin, r.direction,
+                                                          raysPerHit, rng, sampleCone, 0, gather ? &*gather : nullptr,
+                                                          options.shareFarShadows ? &pixelLights : nullptr)
+                                               : Rgb(0.0);
                     sum += sample;
                     if (Lc > 0) {
                         const double w = 1 / (1 + std::max(0.0, luminance(sample)) / Lc);

@@ -4,8 +4,8 @@
 #include <core/hdr_image.h>
 #include <radiosity/radiosity.h>
 #include <raytrace/camera.h>
-#include <raytrace/ray_cone.h>
 #include <raytrace/embree_scene.h>
+#include <raytrace/ray_cone.h>
 #include <scene/scene.h>
 
 #include <functional>
@@ -36,11 +36,11 @@ double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMes
 /// Only rows [rowBegin, rowEnd) are traced (the rest stay black; rowEnd −1: to the last):
 /// a tile of a render has the same pixels as the whole. `gatherer` (or null): E_indirect
 /// is a final gather at each hit instead (render.indirect "gather").
-HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
-                const radiosity::DirectLight& lights, const EmbreeScene& embree, const ImageCamera& camera,
-                const scene::RenderOptions& options, const std::function<void(double)>& onProgress = {},
-                DisplayAverage* display = nullptr, int rowBegin = 0, int rowEnd = -1,
-                const radiosity::Gatherer* gatherer = nullptr);
+HdrImage render(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                const radiosity::RadiositySolution& solution, const radiosity::DirectLight& lights,
+                const EmbreeScene& embree, const ImageCamera& camera, const scene::RenderOptions& options,
+                const std::function<void(double)>& onProgress = {}, DisplayAverage* display = nullptr, int rowBegin = 0,
+                int rowEnd = -1, const radiosity::Gatherer* gatherer = nullptr);
 
 /// A final gather at each hit (render.indirect "gather") and the memo of the corner
 /// values it re-gathers: render() keeps one per image row, so a row's pixels share them

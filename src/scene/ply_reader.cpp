@@ -43,8 +43,7 @@ struct Element {
 /// Reads values from the body: binary (either byte order) or ASCII tokens.
 class BodyReader {
   public:
-    BodyReader(const std::string& data, size_t offset, Format format)
-        : m_data(data), m_pos(offset), m_format(format) {}
+    BodyReader(const std::string& data, size_t offset, Format format) : m_data(data), m_pos(offset), m_format(format) {}
 
     /// Reads one scalar of `type` as a double. Throws with `what` on a short or bad file.
     double read(const std::string& type, const std::string& what) {
@@ -105,7 +104,8 @@ std::string readWholeFile(const std::string& path) {
     std::streamoff size = in.tellg();
     if (size < 0) throw std::runtime_error("cannot tell the file's size");
     if (static_cast<uint64_t>(size) > kMaxPlyBytes)
-        throw std::runtime_error(fmt::format("the file has {} bytes, more than the {} rayrad reads", size, kMaxPlyBytes));
+        throw std::runtime_error(
+            fmt::format("the file has {} bytes, more than the {} rayrad reads", size, kMaxPlyBytes));
     std::string data(static_cast<size_t>(size), '\0');
     in.seekg(0);
     if (size > 0 && !in.read(data.data(), size)) throw std::runtime_error("cannot read the file");
@@ -124,7 +124,8 @@ Header readHeader(const std::string& data) {
     size_t pos = 0;
     int lineNo = 0;
     auto nextLine = [&]() -> std::string {
-        if (pos >= data.size()) throw std::runtime_error(fmt::format("header line {}: the file ends before end_header", lineNo + 1));
+        if (pos >= data.size())
+            throw std::runtime_error(fmt::format("header line {}: the file ends before end_header", lineNo + 1));
         size_t end = data.find('\n', pos);
         if (end == std::string::npos || end - pos > 4096)
             throw std::runtime_error(fmt::format("header line {}: no end of line (not a PLY header)", lineNo + 1));
@@ -153,10 +154,14 @@ Header readHeader(const std::string& data) {
         if (keyword == "format") {
             std::string f, version;
             words >> f >> version;
-            if (f == "ascii") format = Format::Ascii;
-            else if (f == "binary_little_endian") format = Format::BinaryLittle;
-            else if (f == "binary_big_endian") format = Format::BinaryBig;
-            else throw bad("unknown format (expected ascii, binary_little_endian or binary_big_endian)");
+            if (f == "ascii")
+                format = Format::Ascii;
+            else if (f == "binary_little_endian")
+                format = Format::BinaryLittle;
+            else if (f == "binary_big_endian")
+                format = Format::BinaryBig;
+            else
+                throw bad("unknown format (expected ascii, binary_little_endian or binary_big_endian)");
             haveFormat = true;
         } else if (keyword == "element") {
             Element e;
@@ -187,7 +192,6 @@ Header readHeader(const std::string& data) {
     }
     if (!haveFormat) throw std::runtime_error("the header has no 'format' line");
     return {format, elements, pos};
-
 }
 
 /// Element e's records, read from the body; vertices and faces go into `mesh`.
@@ -195,7 +199,8 @@ void readElement(BodyReader& body, Format format, const Element& e, PlyMesh& mes
     // Every record takes at least one byte (binary: its fixed part), so a count the
     // rest of the file cannot hold is an error before anything is allocated.
     uint64_t minRecord = 0;
-    for (const Property& p : e.properties) minRecord += static_cast<uint64_t>(typeSize(p.isList ? p.countType : p.type));
+    for (const Property& p : e.properties)
+        minRecord += static_cast<uint64_t>(typeSize(p.isList ? p.countType : p.type));
     if (format == Format::Ascii) minRecord = e.properties.empty() ? 0 : 2 * e.properties.size() - 1;
     if (minRecord > 0 && e.count > body.remaining() / minRecord)
         throw std::runtime_error(fmt::format("element '{}' claims {} records, more than the {} bytes left can hold",

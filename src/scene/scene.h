@@ -7,8 +7,8 @@
 #include <scene/scene_desc.h>
 #include <scene/settings.h>
 
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,10 +21,10 @@ namespace rayrad::scene {
 struct Material {
     std::string name;
     SurfaceKind kind = SurfaceKind::Diffuse;
-    Rgb reflectance{0.0};   ///< diffuse reflectance per channel, in [0, 1)
-    Rgb emission{0.0};      ///< emitted luminance per channel, cd/m² (front side only)
-    Rgb specular{0.0};      ///< mirror: Ks per channel, in [0, 1]
-    double ior = 1.5;       ///< glass: index of refraction
+    Rgb reflectance{0.0};  ///< diffuse reflectance per channel, in [0, 1)
+    Rgb emission{0.0};     ///< emitted luminance per channel, cd/m² (front side only)
+    Rgb specular{0.0};     ///< mirror: Ks per channel, in [0, 1]
+    double ior = 1.5;      ///< glass: index of refraction
     /// One side of a two-sided diffuse surface: the builder adds the back as a coincident
     /// reversed surface (the ray tracer shows whichever side's front faces the ray).
     bool twoSided = false;
@@ -62,13 +62,13 @@ struct Mirror {
 /// Polygons that share vertices: one quad, one face of a box, a whole sphere or mesh.
 /// Vertex values (indirect light) are averaged only within a group.
 struct SurfaceGroup {
-    std::vector<Vec3> positions;                      ///< world space, metres
-    std::vector<std::vector<uint32_t>> polygons;      ///< indices, CCW seen from the front
+    std::vector<Vec3> positions;                  ///< world space, metres
+    std::vector<std::vector<uint32_t>> polygons;  ///< indices, CCW seen from the front
     /// Texture coordinates of each polygon's corners, in its order (empty: none); a mesh's
     /// seams keep their own coordinates on each side.
     std::vector<std::vector<glm::dvec2>> polygonUvs;
     int material = 0;
-    std::string where;                                ///< JSON pointer of the object
+    std::string where;  ///< JSON pointer of the object
 };
 
 /// A point light or a spot, in candela. I(θ) = intensity for θ ≤ inner, a smooth step
@@ -79,12 +79,12 @@ constexpr double kNearFieldSizes = 5.0;
 
 struct PointLight {
     Vec3 position{0.0};
-    Rgb intensity{0.0};     ///< cd per channel on the axis (luminance-weighted Y = given cd)
+    Rgb intensity{0.0};  ///< cd per channel on the axis (luminance-weighted Y = given cd)
     bool isSpot = false;
     Vec3 direction{0, 0, -1};
     double cosInner = -1, cosOuter = -1;
-    std::string where;      ///< JSON pointer (or mesh file) it came from, for messages
-    std::string lightGroup; ///< the light group it belongs to ("" none)
+    std::string where;       ///< JSON pointer (or mesh file) it came from, for messages
+    std::string lightGroup;  ///< the light group it belongs to ("" none)
     /// A luminaire: its measured distribution (shared by the lights of one file), its
     /// axes in the scene (nadir: γ = 0; c0: the C0 plane, ⟂ nadir; C90 = (−nadir) × c0,
     /// so C grows counter-clockwise seen from above), the factor on the file's candela
@@ -121,7 +121,7 @@ struct View {
 
 struct Sensor {
     std::string name;
-    std::string grid;  ///< the sensor grid it is a point of ("" for a single sensor)
+    std::string grid;            ///< the sensor grid it is a point of ("" for a single sensor)
     int gridU = -1, gridV = -1;  ///< its cell in the grid (u along the first axis)
     Vec3 position{0.0};
     Vec3 normal{0, 0, 1};
@@ -134,8 +134,8 @@ constexpr double kMaxFileReflectance = 0.95;
 /// Counts of what the builder dropped, reported as warnings.
 struct BuildWarnings {
     int degeneratePolygons = 0;
-    int droppedMeshFaces = 0;          ///< points, lines and faces with bad indices in mesh files
-    int clampedFileReflectances = 0;   ///< mesh-file materials whose reflectance was clamped
+    int droppedMeshFaces = 0;                  ///< points, lines and faces with bad indices in mesh files
+    int clampedFileReflectances = 0;           ///< mesh-file materials whose reflectance was clamped
     std::vector<std::string> missingTextures;  ///< mesh-file materials whose image is missing, one line each
 };
 
@@ -148,10 +148,10 @@ struct Scene {
     std::shared_ptr<const TextureSource> textureImages;
     std::vector<SurfaceGroup> groups;
     std::vector<PointLight> lights;
-    std::vector<Mirror> mirrors;    ///< every polygon of every mirror surface
-    std::optional<Camera> camera;   ///< the view being rendered (the default, or the one chosen)
-    std::vector<View> views;        ///< every named view
-    std::vector<Camera> pathFrames; ///< the walkthrough's frames ("camera_path"), in order
+    std::vector<Mirror> mirrors;     ///< every polygon of every mirror surface
+    std::optional<Camera> camera;    ///< the view being rendered (the default, or the one chosen)
+    std::vector<View> views;         ///< every named view
+    std::vector<Camera> pathFrames;  ///< the walkthrough's frames ("camera_path"), in order
     std::vector<Sensor> sensors;
     MeshingOptions meshing;
     ClusterOptions clusters;

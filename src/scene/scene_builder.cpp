@@ -23,7 +23,8 @@ Rgb PointLight::intensityToward(const Vec3& w) const {
     if (photometry) {
         // The luminaire's frame: C0, C90 = (−nadir) × C0, nadir.
         const Vec3 c90 = glm::cross(-nadir, c0);
-        return intensity * (photometricScale * photometry->intensityToward(glm::dot(w, c0), glm::dot(w, c90), glm::dot(w, nadir)));
+        return intensity *
+               (photometricScale * photometry->intensityToward(glm::dot(w, c0), glm::dot(w, c90), glm::dot(w, nadir)));
     }
     if (!isSpot) return intensity;
     double c = glm::dot(w, direction);
@@ -47,7 +48,9 @@ bool Scene::hasReflectance() const {
 
 namespace {
 
-Vec3 transformPoint(const glm::dmat4& m, const Vec3& p) { return Vec3(m * glm::dvec4(p, 1.0)); }
+Vec3 transformPoint(const glm::dmat4& m, const Vec3& p) {
+    return Vec3(m * glm::dvec4(p, 1.0));
+}
 
 /// A box's six faces, each a quad CCW seen from outside.
 std::vector<std::vector<Vec3>> boxFaces(const Vec3& lo, const Vec3& hi) {
@@ -138,8 +141,7 @@ class Builder {
             if (!m.texture.empty()) mat.texture = textureIndex(s, m.resolvedTexture, m.where + "/texture");
             s.materials.push_back(mat);
         }
-        for (const auto& o : m_desc.objects)
-            addObject(s, o, o.material.empty() ? -1 : materialIndex.at(o.material));
+        for (const auto& o : m_desc.objects) addObject(s, o, o.material.empty() ? -1 : materialIndex.at(o.material));
         addBackSides(s);
         collectMirrors(s);
         resolveFluxes(s);
@@ -151,7 +153,8 @@ class Builder {
             fail("/lights", "the scene has no light: add a light or an emissive material (the mesh files bring none)");
         s.sensors.reserve(m_desc.sensors.size());
         for (const auto& d : m_desc.sensors)
-            s.sensors.push_back({d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
+            s.sensors.push_back(
+                {d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
         addSurfaceGrids(s);
         if (m_desc.camera) s.camera = camera(s, *m_desc.camera);
         for (const auto& [name, c] : m_desc.views) s.views.push_back({name, camera(s, c)});
@@ -196,9 +199,11 @@ class Builder {
         if (!isQuad) {
             double off = maxPlaneDistance(v);
             if (off > 1e-4 * size)
-                fail(where + "/vertices", fmt::format("the polygon is not planar (a vertex is {:.3g} m off its plane)", off));
+                fail(where + "/vertices",
+                     fmt::format("the polygon is not planar (a vertex is {:.3g} m off its plane)", off));
         }
-        if (!isConvexAround(v, n) && isQuad) fail(where + "/vertices", "the quad is not convex (check the vertex order)");
+        if (!isConvexAround(v, n) && isQuad)
+            fail(where + "/vertices", "the quad is not convex (check the vertex order)");
         SurfaceGroup g;
         g.positions = std::move(v);
         g.polygons.push_back({});
@@ -219,11 +224,13 @@ class Builder {
         };
         if (material >= 0 && s.materials[material].kind == SurfaceKind::Mirror &&
             (o.kind == ObjectKind::Sphere || o.kind == ObjectKind::Mesh))
-            fail(o.where + "/material", "a mirror must be a quad, polygon or box (the image method needs a few planes, "
-                                        "not a curved surface)");
+            fail(o.where + "/material",
+                 "a mirror must be a quad, polygon or box (the image method needs a few planes, "
+                 "not a curved surface)");
         if (textured(s, material) && (o.kind == ObjectKind::Polygon || o.kind == ObjectKind::Sphere))
-            fail(o.where + "/material", "a texture is mapped onto quads, boxes and meshes with texture coordinates, "
-                                        "not onto a polygon or a sphere");
+            fail(o.where + "/material",
+                 "a texture is mapped onto quads, boxes and meshes with texture coordinates, "
+                 "not onto a polygon or a sphere");
         switch (o.kind) {
             case ObjectKind::Quad:
             case ObjectKind::Polygon:
@@ -232,8 +239,9 @@ class Builder {
                 break;
             case ObjectKind::Box:
                 for (auto& face : boxFaces(o.boxMin, o.boxMax))
-                    addPolygonGroup(s, place(face, o.inward), material, o.where, true,
-                                    textured(s, material) ? quadUvs(material, o.inward != mirrored) : std::vector<glm::dvec2>{});
+                    addPolygonGroup(
+                        s, place(face, o.inward), material, o.where, true,
+                        textured(s, material) ? quadUvs(material, o.inward != mirrored) : std::vector<glm::dvec2>{});
                 break;
             case ObjectKind::Sphere: {
                 SurfaceGroup g = cubeSphere(o.center, o.radius, o.subdivisions);
@@ -259,16 +267,18 @@ class Builder {
             if (m < 0) {
                 int fileIndex = mesh.triangleMaterial[t];
                 if (fileIndex < 0)
-                    fail(o.where + "/material", "the mesh file gives some triangles no material: give the object a "
-                                                "\"material\"");
+                    fail(o.where + "/material",
+                         "the mesh file gives some triangles no material: give the object a "
+                         "\"material\"");
                 m = fileMaterial(s, o, mesh.materials[fileIndex]);
             }
             SurfaceGroup& g = byMaterial[m];
             g.polygons.push_back(mesh.triangles[t]);
             if (textured(s, m)) {
                 if (t >= mesh.triangleUvs.size())
-                    fail(o.where + "/file", "material \"" + s.materials[m].name + "\" has a texture, but the mesh gives its "
-                                            "triangles no texture coordinates");
+                    fail(o.where + "/file", "material \"" + s.materials[m].name +
+                                                "\" has a texture, but the mesh gives its "
+                                                "triangles no texture coordinates");
                 g.polygonUvs.emplace_back(mesh.triangleUvs[t].begin(), mesh.triangleUvs[t].end());
             }
         }
@@ -304,12 +314,14 @@ class Builder {
         std::string textureFile;
         if (!m.diffuseTexture.empty()) {
             const std::filesystem::path t(m.diffuseTexture);
-            textureFile = t.is_absolute() ? t.string() : (std::filesystem::path(o.resolvedFile).parent_path() / t).string();
+            textureFile =
+                t.is_absolute() ? t.string() : (std::filesystem::path(o.resolvedFile).parent_path() / t).string();
             // Models often arrive without their images: a missing one is a warning, and the
             // material keeps its plain colour.
             if (const std::string problem = inputFileProblem(textureFile, "texture image"); !problem.empty()) {
-                s.warnings.missingTextures.push_back(fmt::format("{}/file: material \"{}\": texture {}: {} (its colour is used)",
-                                                                 o.where, m.name, textureFile, problem));
+                s.warnings.missingTextures.push_back(
+                    fmt::format("{}/file: material \"{}\": texture {}: {} (its colour is used)", o.where, m.name,
+                                textureFile, problem));
                 textureFile.clear();
             }
         }
@@ -317,7 +329,8 @@ class Builder {
             // The file's colour multiplies the texture (OBJ Kd × map_Kd, glTF baseColorFactor
             // × baseColorTexture); the product is clamped where it is looked up.
             mat.texture = textureIndex(s, textureFile, o.where + "/file (material \"" + m.name + "\")");
-            for (int c = 0; c < 3; ++c) mat.reflectance[c] = m.hasReflectance ? std::clamp(m.reflectance[c], 0.0, 1.0) : 1.0;
+            for (int c = 0; c < 3; ++c)
+                mat.reflectance[c] = m.hasReflectance ? std::clamp(m.reflectance[c], 0.0, 1.0) : 1.0;
         } else {
             // Reflectance must stay below 1 for the radiosity to converge; files often say 1.
             for (int c = 0; c < 3; ++c) mat.reflectance[c] = std::clamp(m.reflectance[c], 0.0, kMaxFileReflectance);
@@ -436,7 +449,8 @@ class Builder {
             for (const auto& g : s.groups)
                 if (g.material == static_cast<int>(mi))
                     for (const auto& poly : g.polygons) area += polygonArea(g.positions, poly);
-            if (area <= 0) fail(md.where + "/flux_lm", "no surface uses this emissive material, so its flux has no area");
+            if (area <= 0)
+                fail(md.where + "/flux_lm", "no surface uses this emissive material, so its flux has no area");
             s.materials[mi].emission = md.color / luminance(md.color) * (md.flux / (kPi * area));
         }
     }
@@ -457,7 +471,8 @@ class Builder {
                 }
             }
             const double fileFlux = web->integratedFlux();
-            if (!(fileFlux > 0)) fail(l.where + "/file", "'" + l.resolvedFile + "' emits no light (its candela table is zero)");
+            if (!(fileFlux > 0))
+                fail(l.where + "/file", "'" + l.resolvedFile + "' emits no light (its candela table is zero)");
             p.photometry = web;
             p.nadir = l.nadir;
             p.c0 = l.c0;
@@ -501,7 +516,8 @@ class Builder {
     Camera camera(const Scene& s, const CameraDesc& c) const {
         Camera cam{c.position, c.lookAt, c.up, c.verticalFovDeg, c.width, c.height, c.projection, c.orthoHeight};
         if (c.fromSensor.empty()) return cam;
-        const auto it = std::find_if(s.sensors.begin(), s.sensors.end(), [&](const Sensor& x) { return x.name == c.fromSensor; });
+        const auto it =
+            std::find_if(s.sensors.begin(), s.sensors.end(), [&](const Sensor& x) { return x.name == c.fromSensor; });
         if (it == s.sensors.end()) fail(c.where + "/from_sensor", "no sensor \"" + c.fromSensor + "\" in the scene");
         cam.position = it->position + 1e-3 * it->normal;
         cam.lookAt = cam.position + it->normal;
@@ -553,6 +569,8 @@ class Builder {
 
 }  // namespace
 
-Scene buildScene(const SceneDesc& desc) { return Builder(desc).build(); }
+Scene buildScene(const SceneDesc& desc) {
+    return Builder(desc).build();
+}
 
 }  // namespace rayrad::scene

@@ -1,9 +1,9 @@
 #include <scene/scene_parser.h>
 
+#include <core/colour_temperature.h>
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <scene/json_reader.h>
-#include <core/colour_temperature.h>
 #include <scene/overrides.h>
 #include <scene/sensor_names.h>
 #include <scene/sensor_parser.h>
@@ -79,7 +79,8 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name, const std::str
     if (type == "glass") {
         d.kind = SurfaceKind::Glass;
         d.ior = m.number("ior", 1.5);
-        if (!(d.ior >= 1.0 && d.ior <= 4.0)) m.error("ior", fmt::format("expected an index of refraction in [1, 4], got {}", d.ior));
+        if (!(d.ior >= 1.0 && d.ior <= 4.0))
+            m.error("ior", fmt::format("expected an index of refraction in [1, 4], got {}", d.ior));
         m.finish();
         return d;
     }
@@ -101,7 +102,8 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name, const std::str
         d.color = m.rgb("color", 0.0, 1e30, true).value_or(Rgb(1.0));
         if (luminance(d.color) <= 0) m.error("color", "emission colour must have a positive luminance");
         bool hasL = m.has("luminance_cd_m2"), hasF = m.has("flux_lm");
-        if (hasL == hasF) m.error("luminance_cd_m2", "an emissive material needs exactly one of \"luminance_cd_m2\" or \"flux_lm\"");
+        if (hasL == hasF)
+            m.error("luminance_cd_m2", "an emissive material needs exactly one of \"luminance_cd_m2\" or \"flux_lm\"");
         if (hasL) d.luminance = m.positive("luminance_cd_m2", 0.0);
         if (hasF) d.flux = m.positive("flux_lm", 0.0);
         d.lightGroup = lightGroupOf(m);
@@ -142,7 +144,8 @@ glm::dmat4 parseTransform(JsonObject t) {
     const glm::dmat4 total = trs * m;
     const double det = glm::determinant(glm::dmat3(total));
     if (!(std::abs(det) > 1e-12) && t.context().errors == 0)
-        t.context().error(t.path(), fmt::format("the transform is singular (determinant {:.3g}): it flattens the object", det));
+        t.context().error(t.path(),
+                          fmt::format("the transform is singular (determinant {:.3g}): it flattens the object", det));
     return total;
 }
 
@@ -181,11 +184,16 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
     o.required("type");
     std::string type = o.string("type").value_or("");
     static const std::vector<std::string> kTypes = {"quad", "polygon", "box", "sphere", "mesh"};
-    if (type == "quad") d.kind = ObjectKind::Quad;
-    else if (type == "polygon") d.kind = ObjectKind::Polygon;
-    else if (type == "box") d.kind = ObjectKind::Box;
-    else if (type == "sphere") d.kind = ObjectKind::Sphere;
-    else if (type == "mesh") d.kind = ObjectKind::Mesh;
+    if (type == "quad")
+        d.kind = ObjectKind::Quad;
+    else if (type == "polygon")
+        d.kind = ObjectKind::Polygon;
+    else if (type == "box")
+        d.kind = ObjectKind::Box;
+    else if (type == "sphere")
+        d.kind = ObjectKind::Sphere;
+    else if (type == "mesh")
+        d.kind = ObjectKind::Mesh;
     else if (!type.empty()) {
         std::string hint = closestMatch(type, kTypes);
         o.error("type", fmt::format("unknown object type \"{}\"{}", type,
@@ -249,11 +257,13 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
 
 /// A luminaire aimed: "aim" (a point) or "nadir" (a direction), and "c0_toward".
 void parseLuminaireAim(JsonObject& l, LightDesc& d) {
-    if (l.has("aim") && l.has("nadir")) l.error("nadir", "give either \"aim\" (a point) or \"nadir\" (a direction), not both");
+    if (l.has("aim") && l.has("nadir"))
+        l.error("nadir", "give either \"aim\" (a point) or \"nadir\" (a direction), not both");
     Vec3 nadir = l.has("aim") ? l.vec3("aim").value_or(d.position - Vec3(0, 1, 0)) - d.position
                               : l.vec3("nadir").value_or(Vec3(0, -1, 0));
     if (glm::length(nadir) == 0) {
-        l.error(l.has("aim") ? "aim" : "nadir", "the luminaire's axis must not be zero (aim at a point other than its position)");
+        l.error(l.has("aim") ? "aim" : "nadir",
+                "the luminaire's axis must not be zero (aim at a point other than its position)");
         nadir = Vec3(0, -1, 0);
     }
     d.nadir = glm::normalize(nadir);
@@ -298,7 +308,8 @@ void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
     }
     if (l.has("flux_lm")) d.fluxLm = l.positive("flux_lm", 1.0);
     d.dimming = l.number("dimming", 1.0);
-    if (!(d.dimming > 0 && d.dimming <= 1)) l.error("dimming", fmt::format("expected a factor in (0, 1], got {}", d.dimming));
+    if (!(d.dimming > 0 && d.dimming <= 1))
+        l.error("dimming", fmt::format("expected a factor in (0, 1], got {}", d.dimming));
     d.maintenance = l.number("maintenance_factor", 1.0);
     if (!(d.maintenance > 0 && d.maintenance <= 1))
         l.error("maintenance_factor", fmt::format("expected a factor in (0, 1], got {}", d.maintenance));
@@ -307,9 +318,10 @@ void parseLuminaire(JsonObject& l, LightDesc& d, const std::string& sceneDir) {
     if (l.has("cct_k")) {
         const double k = l.number("cct_k", 4000.0);
         if (!(k >= kMinColourTemperature && k <= kMaxColourTemperature))
-            l.error("cct_k", fmt::format("expected a colour temperature from {:g} to {:g} K, got {}", kMinColourTemperature,
-                                         kMaxColourTemperature, k));
-        else d.color = colourOfTemperature(k);
+            l.error("cct_k", fmt::format("expected a colour temperature from {:g} to {:g} K, got {}",
+                                         kMinColourTemperature, kMaxColourTemperature, k));
+        else
+            d.color = colourOfTemperature(k);
     }
 }
 
@@ -319,10 +331,14 @@ LightDesc parseLight(JsonObject l, const std::string& sceneDir) {
     d.lightGroup = lightGroupOf(l);
     l.required("type");
     std::string type = l.string("type").value_or("point");
-    if (type == "point") d.kind = LightKind::Point;
-    else if (type == "spot") d.kind = LightKind::Spot;
-    else if (type == "luminaire") d.kind = LightKind::Luminaire;
-    else l.error("type", fmt::format("unknown light type \"{}\" (expected \"point\", \"spot\" or \"luminaire\")", type));
+    if (type == "point")
+        d.kind = LightKind::Point;
+    else if (type == "spot")
+        d.kind = LightKind::Spot;
+    else if (type == "luminaire")
+        d.kind = LightKind::Luminaire;
+    else
+        l.error("type", fmt::format("unknown light type \"{}\" (expected \"point\", \"spot\" or \"luminaire\")", type));
     l.required("position");
     d.position = l.vec3("position").value_or(Vec3(0.0));
     if (d.kind != LightKind::Luminaire) {
@@ -330,8 +346,10 @@ LightDesc parseLight(JsonObject l, const std::string& sceneDir) {
         d.intensity = l.positive("intensity_cd", 1.0);
     }
     Rgb c = l.rgb("color", 0.0, 1e30, true).value_or(Rgb(1.0));
-    if (luminance(c) <= 0) l.error("color", "light colour must have a positive luminance");
-    else d.color = c / luminance(c);
+    if (luminance(c) <= 0)
+        l.error("color", "light colour must have a positive luminance");
+    else
+        d.color = c / luminance(c);
     if (d.kind == LightKind::Luminaire) parseLuminaire(l, d, sceneDir);
     if (d.kind == LightKind::Spot) {
         if (l.has("look_at") && l.has("direction"))
@@ -364,17 +382,21 @@ void readResolution(JsonObject& c, CameraDesc& d) {
         bool ok = r->size() == 2 && (*r)[0].is_number_integer() && (*r)[1].is_number_integer();
         if (ok) {
             long long w = (*r)[0].get<long long>(), h = (*r)[1].get<long long>();
-            if (w < 1 || h < 1 || w > 16384 || h > 16384 || w * h > 100'000'000LL) ok = false;
-            else d.width = static_cast<int>(w), d.height = static_cast<int>(h);
+            if (w < 1 || h < 1 || w > 16384 || h > 16384 || w * h > 100'000'000LL)
+                ok = false;
+            else
+                d.width = static_cast<int>(w), d.height = static_cast<int>(h);
         }
-        if (!ok) c.error("resolution", fmt::format("expected [width, height], each from 1 to 16384, got {}", describe(*r)));
+        if (!ok)
+            c.error("resolution", fmt::format("expected [width, height], each from 1 to 16384, got {}", describe(*r)));
     }
 }
 
 /// look_at away from position, up not along the viewing direction.
 void checkViewingDirection(JsonObject& c, const CameraDesc& d) {
     Vec3 forward = d.lookAt - d.position;
-    if (glm::length(forward) == 0) c.error("look_at", "look_at must differ from position");
+    if (glm::length(forward) == 0)
+        c.error("look_at", "look_at must differ from position");
     else if (glm::length(glm::cross(forward, d.up)) < 1e-9 * glm::length(forward) * glm::length(d.up))
         c.error("up", "up must not be parallel to the viewing direction");
 }
@@ -383,10 +405,14 @@ CameraDesc parseCamera(JsonObject c) {
     CameraDesc d;
     d.where = c.path();
     if (auto p = c.string("projection")) {
-        if (*p == "perspective") d.projection = Projection::Perspective;
-        else if (*p == "fisheye") d.projection = Projection::Fisheye;
-        else if (*p == "orthographic") d.projection = Projection::Orthographic;
-        else c.error("projection", "expected \"perspective\", \"fisheye\" or \"orthographic\", got \"" + *p + "\"");
+        if (*p == "perspective")
+            d.projection = Projection::Perspective;
+        else if (*p == "fisheye")
+            d.projection = Projection::Fisheye;
+        else if (*p == "orthographic")
+            d.projection = Projection::Orthographic;
+        else
+            c.error("projection", "expected \"perspective\", \"fisheye\" or \"orthographic\", got \"" + *p + "\"");
     }
     if (d.projection == Projection::Orthographic) {
         c.required("height_m");
@@ -447,7 +473,8 @@ CameraPathDesc parseCameraPath(JsonObject o) {
             k.finish();
             path.keyframes.push_back(d);
         }
-        if (keys->size() < 2) o.error("keyframes", fmt::format("a path needs at least 2 keyframes, got {}", keys->size()));
+        if (keys->size() < 2)
+            o.error("keyframes", fmt::format("a path needs at least 2 keyframes, got {}", keys->size()));
     }
     o.finish();
     return path;
@@ -461,7 +488,8 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     if (d.meshing.maxCellAspect < 1) r.error("max_cell_aspect", "expected a number >= 1");
     d.meshing.maxPatches = r.positive("max_patches", d.meshing.maxPatches);
     d.shooting.stopUnshot = r.number("stop_unshot", d.shooting.stopUnshot);
-    if (!(d.shooting.stopUnshot > 0 && d.shooting.stopUnshot < 1)) r.error("stop_unshot", "expected a number in (0, 1)");
+    if (!(d.shooting.stopUnshot > 0 && d.shooting.stopUnshot < 1))
+        r.error("stop_unshot", "expected a number in (0, 1)");
     d.shooting.maxShots = static_cast<int64_t>(r.nonNegative("max_shots", static_cast<double>(d.shooting.maxShots)));
     d.shooting.maxSeconds = r.nonNegative("max_seconds", d.shooting.maxSeconds);
     d.formFactors.analyticDistance = r.nonNegative("analytic_distance", d.formFactors.analyticDistance);
@@ -471,24 +499,30 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.gather.gatherRefineTolerance = r.nonNegative("gather_refine_tolerance", d.gather.gatherRefineTolerance);
     d.gather.gatherFarDiameters = r.nonNegative("gather_far_diameters", d.gather.gatherFarDiameters);
     if (d.gather.gatherFarDiameters > 0 && d.gather.gatherFarDiameters < 2)
-        r.error("gather_far_diameters", "expected 0 (every patch on its own) or at least 2 (nearer, a point sits "
-                                        "inside the node it would take as one source)");
+        r.error("gather_far_diameters",
+                "expected 0 (every patch on its own) or at least 2 (nearer, a point sits "
+                "inside the node it would take as one source)");
     d.shooting.shootFarDiameters = r.nonNegative("shoot_far_diameters", d.shooting.shootFarDiameters);
     if (d.shooting.shootFarDiameters > 0 && d.shooting.shootFarDiameters < 2)
-        r.error("shoot_far_diameters", "expected 0 (every member on its own) or at least 2 (nearer, a receiver sits "
-                                       "inside the node it would take as one source)");
+        r.error("shoot_far_diameters",
+                "expected 0 (every member on its own) or at least 2 (nearer, a receiver sits "
+                "inside the node it would take as one source)");
     d.gather.gatherMinWeight = r.number("gather_min_weight", d.gather.gatherMinWeight);
     if (!(d.gather.gatherMinWeight >= 0 && d.gather.gatherMinWeight < 1))
         r.error("gather_min_weight", "expected a number in [0, 1)");
     d.reconstruction.edgeGatherLevels = r.integer("edge_gather_levels", d.reconstruction.edgeGatherLevels, 0, 64);
-    d.reconstruction.seamProfileNodes = r.integer("seam_profile_nodes", d.reconstruction.seamProfileNodes, 0, ReconstructionOptions::kMaxSeamProfileNodes);
+    d.reconstruction.seamProfileNodes = r.integer("seam_profile_nodes", d.reconstruction.seamProfileNodes, 0,
+                                                  ReconstructionOptions::kMaxSeamProfileNodes);
     d.shooting.oneChannelWhenGrey = r.boolean("one_channel_when_grey").value_or(d.shooting.oneChannelWhenGrey);
     d.shooting.conserveEnergy = r.boolean("conserve_energy").value_or(d.shooting.conserveEnergy);
     d.shooting.overshoot = r.boolean("overshoot").value_or(d.shooting.overshoot);
     if (auto mode = r.string("mirrors")) {
-        if (*mode == "image") d.mirrorImages.mirrors = MirrorImageOptions::Mode::Image;
-        else if (*mode == "ignore") d.mirrorImages.mirrors = MirrorImageOptions::Mode::Ignore;
-        else r.error("mirrors", fmt::format("expected \"image\" or \"ignore\", got \"{}\"", *mode));
+        if (*mode == "image")
+            d.mirrorImages.mirrors = MirrorImageOptions::Mode::Image;
+        else if (*mode == "ignore")
+            d.mirrorImages.mirrors = MirrorImageOptions::Mode::Ignore;
+        else
+            r.error("mirrors", fmt::format("expected \"image\" or \"ignore\", got \"{}\"", *mode));
     }
     d.mirrorImages.mirrorDepth = r.integer("mirror_depth", d.mirrorImages.mirrorDepth, 1, 64);
     d.mirrorImages.mirrorMinWeight = r.number("mirror_min_weight", d.mirrorImages.mirrorMinWeight);
@@ -498,9 +532,12 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     if (!(d.mirrorImages.mirrorMinShare >= 0 && d.mirrorImages.mirrorMinShare < 1))
         r.error("mirror_min_share", "expected a number in [0, 1)");
     if (auto rec = r.string("reconstruction")) {
-        if (*rec == "linear") d.reconstruction.reconstruction = ReconstructionOptions::Mode::Linear;
-        else if (*rec == "average") d.reconstruction.reconstruction = ReconstructionOptions::Mode::Average;
-        else r.error("reconstruction", fmt::format("expected \"linear\" or \"average\", got \"{}\"", *rec));
+        if (*rec == "linear")
+            d.reconstruction.reconstruction = ReconstructionOptions::Mode::Linear;
+        else if (*rec == "average")
+            d.reconstruction.reconstruction = ReconstructionOptions::Mode::Average;
+        else
+            r.error("reconstruction", fmt::format("expected \"linear\" or \"average\", got \"{}\"", *rec));
     }
     r.finish();
 }
@@ -519,12 +556,16 @@ void parseClusters(JsonObject c, SceneDesc& d) {
     o.maxIlluminanceStep = c.nonNegative("max_illuminance_step_lx", o.maxIlluminanceStep);
     o.energyCorrection = c.boolean("energy_correction").value_or(o.energyCorrection);
     if (auto detail = c.string("receiver_detail")) {
-        if (*detail == "patch") o.receiverDetail = true;
-        else if (*detail == "cluster") o.receiverDetail = false;
-        else c.error("receiver_detail", fmt::format("expected \"patch\" or \"cluster\", got \"{}\"", *detail));
+        if (*detail == "patch")
+            o.receiverDetail = true;
+        else if (*detail == "cluster")
+            o.receiverDetail = false;
+        else
+            c.error("receiver_detail", fmt::format("expected \"patch\" or \"cluster\", got \"{}\"", *detail));
     }
     o.pushPullFraction = c.number("push_pull_fraction", o.pushPullFraction);
-    if (!(o.pushPullFraction > 0 && o.pushPullFraction <= 1)) c.error("push_pull_fraction", "expected a number in (0, 1]");
+    if (!(o.pushPullFraction > 0 && o.pushPullFraction <= 1))
+        c.error("push_pull_fraction", "expected a number in (0, 1]");
     c.finish();
 }
 
@@ -539,14 +580,19 @@ void parseRender(JsonObject r, SceneDesc& d) {
     d.render.sensorAreaLightSamples =
         r.integer("sensor_area_light_samples", d.render.sensorAreaLightSamples, 1, 1 << 20);
     d.render.maxDepth = r.integer("max_depth", d.render.maxDepth, 0, 64);
-    d.render.displayRangeCompression = r.boolean("display_range_compression").value_or(d.render.displayRangeCompression);
+    d.render.displayRangeCompression =
+        r.boolean("display_range_compression").value_or(d.render.displayRangeCompression);
     d.render.smoothingAngleDeg = r.number("smoothing_angle_deg", d.render.smoothingAngleDeg);
     if (!(d.render.smoothingAngleDeg >= 0 && d.render.smoothingAngleDeg < 90))
-        r.error("smoothing_angle_deg", fmt::format("expected an angle in [0, 90) (0: flat shading), got {}", d.render.smoothingAngleDeg));
+        r.error("smoothing_angle_deg",
+                fmt::format("expected an angle in [0, 90) (0: flat shading), got {}", d.render.smoothingAngleDeg));
     if (auto indirect = r.string("indirect")) {
-        if (*indirect == "mesh") d.render.gatherIndirect = false;
-        else if (*indirect == "gather") d.render.gatherIndirect = true;
-        else r.error("indirect", fmt::format("expected \"mesh\" or \"gather\", got \"{}\"", *indirect));
+        if (*indirect == "mesh")
+            d.render.gatherIndirect = false;
+        else if (*indirect == "gather")
+            d.render.gatherIndirect = true;
+        else
+            r.error("indirect", fmt::format("expected \"mesh\" or \"gather\", got \"{}\"", *indirect));
     }
     r.finish();
 }
@@ -554,8 +600,10 @@ void parseRender(JsonObject r, SceneDesc& d) {
 std::string lineColumn(const std::string& text, size_t byte) {
     size_t line = 1, column = 1;
     for (size_t i = 0; i < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') ++line, column = 1;
-        else ++column;
+        if (text[i] == '\n')
+            ++line, column = 1;
+        else
+            ++column;
     }
     return fmt::format("line {}, column {}", line, column);
 }
@@ -611,8 +659,8 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     top.string("description");
     top.string("provenance");
     // Unknown top-level keys first: a misspelt "Materials" explains the errors it causes.
-    top.finish({"materials", "objects", "lights", "camera", "cameras", "sensors", "sensor_grids", "work_planes", "surface_grids",
-                "camera_path", "radiosity", "clusters", "render"});
+    top.finish({"materials", "objects", "lights", "camera", "cameras", "sensors", "sensor_grids", "work_planes",
+                "surface_grids", "camera_path", "radiosity", "clusters", "render"});
 
     std::map<std::string, int> materialIndex;
     if (auto mats = top.object("materials")) {
@@ -623,7 +671,8 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
                 continue;
             }
             materialIndex[it.key()] = static_cast<int>(desc.materials.size());
-            desc.materials.push_back(parseMaterial(JsonObject(it.value(), mats->childPath(it.key()), ctx), it.key(), sceneDir));
+            desc.materials.push_back(
+                parseMaterial(JsonObject(it.value(), mats->childPath(it.key()), ctx), it.key(), sceneDir));
         }
         mats->finish([&] {
             std::set<std::string> all;

@@ -35,25 +35,26 @@ struct MeshingOptions {
 /// Clustering for the secondary pass (a voxel grid; two levels: clusters and patches).
 /// The voxel size is taken from the first of: voxelSize, patchesPerCluster, sizePercent.
 struct ClusterOptions {
-    bool enabled = true;            ///< false: every patch shoots and receives on its own
-    double voxelSize = 0;           ///< voxel edge in metres (0 = derive)
-    double patchesPerCluster = 0;   ///< target average patches per cluster (0 = off)
+    bool enabled = true;           ///< false: every patch shoots and receives on its own
+    double voxelSize = 0;          ///< voxel edge in metres (0 = derive)
+    double patchesPerCluster = 0;  ///< target average patches per cluster (0 = off)
     /// Cluster size as a percentage of the reference area (the paper's "1 % of the wall
     /// area"): voxel edge = sqrt(sizePercent/100 · referenceArea).
     double sizePercent = 1.0;
-    double referenceArea = 0;       ///< m²; 0 = the area of the largest input surface
+    double referenceArea = 0;  ///< m²; 0 = the area of the largest input surface
     /// A derived voxel edge (patchesPerCluster or sizePercent) shrinks by √2 at a time
     /// while a patch shares its voxel with more than this many patches on average
     /// (Σ_v n_v² / N, n_v the patches whose centroid lies in voxel v): patches of one
     /// voxel always exchange patch→patch, so this is the near field's size. A dense
     /// imported mesh (a sofa of 16 k triangles) otherwise fills a voxel. 0 = off.
     double maxVoxelCrowding = 4000;
-    double normalToleranceDeg = 20; ///< patches of one cluster have normals within this of the first (curved clusters: docs/validation.md)
+    double normalToleranceDeg =
+        20;  ///< patches of one cluster have normals within this of the first (curved clusters: docs/validation.md)
     /// ΔI_max in lx: cluster→cluster transfer only where one shot of the cluster's total
     /// power would give the receiver less than this. 0 = derive: 20 % of the mean
     /// illuminance (direct + estimated indirect) over the scene (see docs/validation.md).
     double maxIlluminanceStep = 0;
-    bool energyCorrection = true;   ///< the paper's energy-transfer correction
+    bool energyCorrection = true;  ///< the paper's energy-transfer correction
     /// How a cluster→cluster shot is shared among the receiver's patches. false (the
     /// paper, eq. 2): I_C pushed down uniformly. true: scaled for each patch by its own
     /// kernel cosθ_j cosθ_C / r_j² from the source cluster relative to the centroid's, so
@@ -83,8 +84,8 @@ struct MirrorImageOptions {
     enum class Mode { Image, Ignore };
     Mode mirrors = Mode::Image;
     bool imageMethod() const { return mirrors == Mode::Image; }
-    int mirrorDepth = 4;             ///< reflections per image chain
-    double mirrorMinWeight = 1e-3;   ///< drop chains whose Π Ks falls below this
+    int mirrorDepth = 4;            ///< reflections per image chain
+    double mirrorMinWeight = 1e-3;  ///< drop chains whose Π Ks falls below this
     /// Drop chains that could carry less than this share of a uniformly bright room's
     /// light: Π Ks · G / (π A), G the chain's étendue (m² sr), A the surface area.
     double mirrorMinShare = 1e-5;
@@ -174,8 +175,8 @@ struct ReconstructionOptions {
 
 /// The ray tracer and the sensor gather.
 struct RenderOptions {
-    int samplesPerPixel = 4;      ///< jittered (stratified) samples per pixel
-    uint64_t seed = 1;            ///< the same seed gives the same image
+    int samplesPerPixel = 4;  ///< jittered (stratified) samples per pixel
+    uint64_t seed = 1;        ///< the same seed gives the same image
     /// Shadow rays per area light per pixel (⌈n / spp⌉ per sample; fewer for far lights).
     /// 64: the Cornell box at 256² and 16 spp shows no grain in its penumbrae (between two
     /// seeds p95 3.0 % against 8.4 % at 16; the ray trace 1.09 against 0.58 CPU-s).
@@ -189,7 +190,7 @@ struct RenderOptions {
     /// traced at the first of them (DirectLight's PixelLightMemo); false: every sample
     /// traces its own.
     bool shareFarShadows = true;
-    int maxDepth = 8;             ///< Whitted recursion through mirrors and glass
+    int maxDepth = 8;  ///< Whitted recursion through mirrors and glass
     /// Display images average a pixel's samples after range compression (weights
     /// 1/(1 + L_s/L_c)), so emitter edges and highlights stay smooth; the EXR keeps the
     /// plain average.

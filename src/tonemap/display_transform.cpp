@@ -95,7 +95,8 @@ namespace {
 
 /// The options' display and view, resolved in their config (the embedded one by default).
 ResolvedView resolveDisplayView(const DisplayOptions& o) {
-    return imageLibrary().resolveView(o.ocioConfig, o.ocioConfig.empty() ? embeddedOcioConfig() : "", o.display, o.view);
+    return imageLibrary().resolveView(o.ocioConfig, o.ocioConfig.empty() ? embeddedOcioConfig() : "", o.display,
+                                      o.view);
 }
 
 }  // namespace
@@ -104,10 +105,13 @@ std::optional<std::string> checkDisplayOptions(const DisplayOptions& options) {
     const std::string curve = resolveDisplayView(options).viewTransform;
     if (curve.empty() || options.tone.op == ToneOperator::Exposure) return std::nullopt;
     return "--view: the view's transform \"" + curve + "\" has its own tone curve, and --tonemap " +
-           toneOperatorName(options.tone.op) + " maps the luminance before it: two tone curves (use --tonemap exposure)";
+           toneOperatorName(options.tone.op) +
+           " maps the luminance before it: two tone curves (use --tonemap exposure)";
 }
 
-std::string viewToneCurve(const DisplayOptions& options) { return resolveDisplayView(options).viewTransform; }
+std::string viewToneCurve(const DisplayOptions& options) {
+    return resolveDisplayView(options).viewTransform;
+}
 
 DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display) {
     constexpr double kMaxExposureStops = 64;
@@ -118,12 +122,14 @@ DisplayOptions parseExposure(const std::string& exposure, DisplayOptions display
         stops = std::stod(exposure, &used);
         if (used != exposure.size()) throw std::invalid_argument("trailing");
     } catch (const std::exception&) {
-        throw InputError(placeMessage("", "--exposure", "expected \"auto\" or a number of stops, got \"" + exposure + "\""));
+        throw InputError(
+            placeMessage("", "--exposure", "expected \"auto\" or a number of stops, got \"" + exposure + "\""));
     }
     if (!(std::abs(stops) <= kMaxExposureStops))
-        throw InputError(placeMessage("", "--exposure", fmt::format("expected stops between -{0} and {0}, got {1}: "
-                                                                    "that would make every pixel black or white",
-                                                                    kMaxExposureStops, exposure)));
+        throw InputError(placeMessage("", "--exposure",
+                                      fmt::format("expected stops between -{0} and {0}, got {1}: "
+                                                  "that would make every pixel black or white",
+                                                  kMaxExposureStops, exposure)));
     display.exposureStops = stops;
     display.autoExposure = false;
     return display;

@@ -11,16 +11,15 @@
 
 namespace rayrad::tonemap {
 
-
-bool isHdrFormat(const std::string& path) { return lowerExtension(path) == ".exr"; }
+bool isHdrFormat(const std::string& path) {
+    return lowerExtension(path) == ".exr";
+}
 
 void checkImageFormat(const std::string& path) {
     std::string e = lowerExtension(path);
     if (e != ".exr" && e != ".png" && e != ".jpg" && e != ".jpeg")
         throw OutputError(placeMessage(path, "", "unknown image format '" + e + "' (use .exr, .png or .jpg)"));
 }
-
-
 
 std::string encodeExr(const std::string& path, const HdrImage& image, const std::string& description,
                       const std::vector<std::pair<std::string, std::string>>& attributes) {
@@ -37,7 +36,8 @@ HdrImage readImage(const std::string& path, std::vector<std::pair<std::string, s
 }
 
 std::string libraryVersions() {
-    return "OpenImageIO " OIIO_VERSION_STRING ", OpenColorIO " OCIO_VERSION " (loaded when an image is read or written)";
+    return "OpenImageIO " OIIO_VERSION_STRING ", OpenColorIO " OCIO_VERSION
+           " (loaded when an image is read or written)";
 }
 
 void writeExr(const std::string& path, const HdrImage& image, const std::string& description) {
@@ -47,7 +47,5 @@ void writeExr(const std::string& path, const HdrImage& image, const std::string&
 void writeDisplayImage(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb8) {
     writeFileAtomically(path, encodeDisplayImage(path, width, height, rgb8));
 }
-
-
 
 }  // namespace rayrad::tonemap

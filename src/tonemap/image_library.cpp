@@ -56,8 +56,10 @@ const ImageLibrary* load() {
         g_loaded = true;
         return entry();  // never unloaded: objects it made may outlive any caller
     }
-    throw std::runtime_error("cannot load the image module librayrad_image.so (beside the rayrad program, or set "
-                             "RAYRAD_IMAGE_MODULE)" + errors);
+    throw std::runtime_error(
+        "cannot load the image module librayrad_image.so (beside the rayrad program, or set "
+        "RAYRAD_IMAGE_MODULE)" +
+        errors);
 }
 
 }  // namespace
@@ -67,6 +69,8 @@ const ImageLibrary& imageLibrary() {
     return *library;
 }
 
-bool imageLibraryLoaded() { return g_loaded; }
+bool imageLibraryLoaded() {
+    return g_loaded;
+}
 
 }  // namespace rayrad::tonemap

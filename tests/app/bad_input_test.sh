@@ -44,7 +44,7 @@ expect 3 "unwritable csv" "$work/nodir/out.csv: cannot write" -- solve "$work/go
 expect 2 "bad --set" "/radiosity/max_egde: unknown key (did you mean \"max_edge\"?)" -- solve "$work/good.json" --set radiosity.max_egde=1
 expect 2 "--set with slashes" "--set radiosity/max_edge=1: keys are separated by dots: did you mean radiosity.max_edge=1?" -- solve "$work/good.json" --set radiosity/max_edge=1
 expect 2 "bad --exposure" "--exposure: expected \"auto\" or a number" -- render "$work/good.json" -o "$work/out.png" --exposure bright
-# Tone reproduction and white balance (issue 15): named before any work.
+# Tone reproduction and white balance: named before any work.
 expect 2 "unknown --tonemap" "--tonemap: expected exposure, tumblin-rushmeier, ward or reinhard, got \"aces\"" -- render "$work/good.json" -o "$work/out.png" --tonemap aces
 expect 2 "--exposure with ward" "--exposure: sets the exposure operator's scale" -- render "$work/good.json" -o "$work/out.png" --tonemap ward --exposure 2
 expect 2 "--key nan" "--key: expected a number from 0.0001 to 10, got nan" -- render "$work/good.json" -o "$work/out.png" --tonemap reinhard --key nan
@@ -57,7 +57,7 @@ expect 2 "render without camera" "nocamera.json: /camera: rendering needs a came
 
 # An existing output survives a failed run untouched.
 
-# The catalogue (issue 5): one line each naming the file (and the place), exit 2.
+# The catalogue: one line each naming the file (and the place), exit 2.
 cat_case() {  # cat_case NAME WANT JSON
     scene "$1" "$3"
     expect 2 "$1" "$1.json: $2" -- solve "$work/$1.json"
@@ -113,7 +113,7 @@ expect 2 "PLY claiming 4e9 vertices" "huge.ply': element 'vertex' claims 4000000
 { printf 'ply\nformat binary_little_endian 1.0\n'; head -c 600 /dev/zero | tr '\0' '\377'; } > "$work/garbage.ply"
 scene ply_garbage "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"garbage.ply\", \"material\": \"white\"}], $good_light}"
 expect 2 "PLY with garbage after its header" "ply_garbage.json: /objects/0/file: mesh '$work/garbage.ply': header line 3" -- solve "$work/ply_garbage.json"
-# glTF, read by tinygltf and checked by rayrad (issue 13): the first input is the one that
+# glTF, read by tinygltf and checked by rayrad: the first input is the one that
 # made assimp read past its buffer under the fuzzer.
 mesh_case() {  # mesh_case NAME FILE WANT: a scene whose mesh is FILE (in $work)
     scene "$1" "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"$2\", \"material\": \"white\"}], $good_light}"
@@ -147,7 +147,7 @@ expect 2 "PLY element without properties" "ply_empty_element.json: /objects/0/fi
 mkdir -p "$work/adir.json"
 expect 2 "scene is a directory" "adir.json" -- solve "$work/adir.json"
 
-# Absurd sizes (issue 12): an error naming the setting, before anything is allocated.
+# Absurd sizes: an error naming the setting, before anything is allocated.
 scene tiny_edge "{$good_materials, $good_box, $good_light, \"radiosity\": {\"max_edge\": 1e-5}}"
 start=$(date +%s%N)
 expect 2 "max_edge 1e-5" "tiny_edge.json: /radiosity/max_edge: premeshing to 1e-05 m edges would make about 1.2e+11 patches" -- solve "$work/tiny_edge.json"
@@ -172,7 +172,7 @@ else
     echo "FAIL a million sensors: no estimate within 5 s"; head -n 3 "$work/million.txt"; failures=$((failures + 1))
 fi
 
-# Walkthroughs, export, sweeps and textures (issue 16, issue 15).
+# Walkthroughs, export, sweeps and textures.
 good_camera='"camera": {"position": [0.5,0.5,0.9], "look_at": [0.5,0.5,0], "resolution": [8, 8]}'
 good_path='"camera_path": {"frames": 3, "resolution": [8, 8], "keyframes": [{"position": [0.5,0.5,0.9], "look_at": [0.5,0.5,0]}, {"position": [0.4,0.5,0.8], "look_at": [0.5,0.4,0]}]}'
 scene walk "{$good_materials, $good_box, $good_light, $good_camera, $good_path}"

@@ -33,7 +33,7 @@ check "png written" test -s "$work/c.png"
 check "jpg written" test -s "$work/c.jpg"
 check "no temporary files left" test "$(ls -a "$work" | grep -c '\.tmp')" -eq 0
 
-# Tone reproduction and white balance (issue 15): recorded in the display image's metadata.
+# Tone reproduction and white balance: recorded in the display image's metadata.
 "$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[16,16] --tonemap ward --white-balance 3000K \
     -o "$work/ward.png" -q > /dev/null 2>&1
 check "ward render exit 0" test $? -eq 0
@@ -45,7 +45,7 @@ for op in tumblin-rushmeier reinhard; do
     check "$op render exit 0" test $? -eq 0
 done
 
-# rayrad compare (issue 15): an image against itself passes a tight bound; against another
+# rayrad compare: an image against itself passes a tight bound; against another
 # rendering it reports and fails a bound it exceeds (exit 1); outputs written.
 "$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[24,24] -o "$work/c1.exr" -q > /dev/null 2>&1
 "$rayrad" render "$cube" --set radiosity.max_edge=2.5 --set camera.resolution=[24,24] --set materials.wall.reflectance=0.6 \
@@ -82,7 +82,7 @@ check "compare: unknown metric is exit 2" test $? -eq 2
     --fail-above median_abs_rel_pct=0.5 --fail-above ssim_loss=0.005 > "$work/golden.txt" 2>&1
 check "compare: the golden Cornell box within bounds" test $? -eq 0
 
-# Named views (issue 16): one solve, a ray trace per view, an image each.
+# Named views: one solve, a ray trace per view, an image each.
 cat > "$work/views.json" <<'JSON'
 {"materials": {"w": {"reflectance": 0.5}},
  "objects": [{"type": "box", "min": [0, 0, 0], "max": [3, 2.5, 3], "facing": "inward", "material": "w"},
@@ -103,7 +103,7 @@ check "views: sensors only when asked" grep -q "sensors (not asked for" "$work/v
 check "views: an unknown view is exit 2" test $? -eq 2
 check "views: names the views" grep -q 'no view "top" (it has "front", "side", or all)' "$work/top.err"
 
-# A saved solution (issue 16): solve once, render without solving, the same image; a
+# A saved solution: solve once, render without solving, the same image; a
 # solution for other materials or a damaged file is refused.
 "$rayrad" solve "$work/views.json" --save "$work/views.rrs" -q > /dev/null 2>&1
 check "save: exit 0" test $? -eq 0 -a -s "$work/views.rrs"
@@ -132,14 +132,14 @@ check "black walls: indirect 0 at A" grep -q '^A,5,5,10,0,0,-1,2000,0,2000,' "$w
 "$rayrad" --help > "$work/help.txt"
 check "help lists commands" grep -q "render" "$work/help.txt"
 
-# A luminaire file (issue 14): info prints what it integrates to.
+# A luminaire file: info prints what it integrates to.
 "$rayrad" info "$src/tests/data/luminaires/radiance_examp1.ies" > "$work/ies.txt"
 check "info on an IES file: integrated flux" grep -q "integrated flux: 5296.65 lm" "$work/ies.txt"
 check "info on an IES file: output ratio" grep -q "light output ratio: 0.9132" "$work/ies.txt"
 "$rayrad" info "$src/tests/data/luminaires/eulumdatugr_sample_11.ldt" > "$work/ldt.txt"
 check "info on an LDT file: stated and integrated ratio" grep -q "light output ratio: 0.6497 (integrated / lamp flux); stated 0.6497" "$work/ldt.txt"
 
-# Light groups (issue 14): each group's part per sensor in the groups CSV and the JSON report.
+# Light groups: each group's part per sensor in the groups CSV and the JSON report.
 cat > "$work/groups.json" <<'JSON'
 {"materials": {"w": {"reflectance": 0.5}},
  "objects": [{"type": "box", "min": [0, 0, 0], "max": [3, 2.5, 3], "facing": "inward", "material": "w"}],

@@ -59,7 +59,8 @@ TEST_CASE("cube 4800: vertex values at A B C within 1.5% (seam vertices gathered
     CHECK(run.lighting.displayVertices.seams == 6 * (4 * 21 - 4));
     CHECK(run.lighting.displayVertices.contacts == 0);
     for (const auto& s : run.sensors) {
-        INFO(s.sensor.name << " vertex " << luminance(*s.value.indirectVertex) << " reference " << *s.sensor.refIndirect);
+        INFO(s.sensor.name << " vertex " << luminance(*s.value.indirectVertex) << " reference "
+                           << *s.sensor.refIndirect);
         REQUIRE(s.value.indirectVertex.has_value());
         CHECK(luminance(*s.value.indirectVertex) == Approx(*s.sensor.refIndirect).epsilon(0.015));
     }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Determinism (issue 5, item 7): the same scene, seed and options give bit-identical EXR,
+# Determinism: the same scene, seed and options give bit-identical EXR,
 # PNG and CSV files, whatever the thread count; another seed gives another image.
 set -u
 rayrad="$1"

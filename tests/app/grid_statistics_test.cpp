@@ -34,8 +34,9 @@ TEST_CASE("grid statistics: minimum, mean, maximum and uniformities of each grid
     CHECK(grids[0].minToMax() == Approx(200.0 / 600));
     CHECK(grids[1].grid == "floor");
     CHECK(grids[1].u0() == Approx(1));
-    CHECK(app::gridCsv(grids) == "grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax,excluded_points\n"
-                                 "desk,3,200,400,600,0.500000,0.333333,0\nfloor,1,100,100,100,1.000000,1.000000,0\n");
+    CHECK(app::gridCsv(grids) ==
+          "grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax,excluded_points\n"
+          "desk,3,200,400,600,0.500000,0.333333,0\nfloor,1,100,100,100,1.000000,1.000000,0\n");
     CHECK(app::gridSummaryPath("out/room.csv") == "out/room.grids.csv");
 }
 

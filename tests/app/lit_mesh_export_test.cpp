@@ -1,4 +1,4 @@
-// Walkthrough export (issue 16): the .glb holds every diffuse patch once, its colours are
+// Walkthrough export: the .glb holds every diffuse patch once, its colours are
 // in glTF's [0, 1], its absolute luminances agree with the solution's, and its camera
 // looks where the scene's does.
 #include <app/lit_mesh_export.h>
@@ -54,7 +54,8 @@ TEST_CASE("the lit mesh export: every patch once, colours in range, absolute lum
         "radiosity": {"max_edge": 0.1}})";
     const auto run = app::runPipeline(test::writeTempScene("export_room", json), test::quiet());
     tonemap::DisplayOptions display;
-    const auto [gltf, bin] = splitGlb(app::exportLitMesh(run, display, app::solutionAdaptationLuminance(run), "export_room.json"));
+    const auto [gltf, bin] =
+        splitGlb(app::exportLitMesh(run, display, app::solutionAdaptationLuminance(run), "export_room.json"));
 
     const auto& attributes = gltf["meshes"][0]["primitives"][0]["attributes"];
     const int indexAccessor = gltf["meshes"][0]["primitives"][0]["indices"];
@@ -91,8 +92,8 @@ TEST_CASE("the lit mesh export: every patch once, colours in range, absolute lum
     // The camera: its node's −Z is the scene camera's viewing direction.
     const auto& node = gltf["nodes"][1];
     REQUIRE(node.contains("camera"));
-    const glm::dquat q(node["rotation"][3].get<double>(), node["rotation"][0].get<double>(), node["rotation"][1].get<double>(),
-                       node["rotation"][2].get<double>());
+    const glm::dquat q(node["rotation"][3].get<double>(), node["rotation"][0].get<double>(),
+                       node["rotation"][1].get<double>(), node["rotation"][2].get<double>());
     const Vec3 forward = q * Vec3(0, 0, -1);
     const Vec3 expected = glm::normalize(Vec3(3, 0.5, 0.5) - Vec3(0.5, 1.5, 2.5));
     CHECK(glm::length(forward - expected) < 1e-6);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Outputs, results and inputs through the real command line (issue 13): an output that
+# Outputs, results and inputs through the real command line: an output that
 # cannot be written is refused before any work (exit 3) or fails cleanly at the end (exit
 # 3: no temporary file left, the old file byte-identical); a result that must not be
 # handed over is refused (exit 4); bad options and input files are named (exit 2).
@@ -158,7 +158,7 @@ else
     echo "FAIL every sensor dark: no warning"; failures=$((failures + 1))
 fi
 
-# Grid statistics beside the sensor CSV (issue 14): written with it, and checked with it.
+# Grid statistics beside the sensor CSV: written with it, and checked with it.
 grid_set='sensor_grids=[{"name": "floor", "origin": [0.1,0,0.1], "u": [0.8,0,0], "v": [0,0,0.8], "counts": [3,3], "normal": [0,1,0]}]'
 if "$rayrad" solve "$good" -q --set "$grid_set" --sensors "$work/grid.csv" >/dev/null 2>&1 &&
     grep -q '^floor,9,' "$work/grid.grids.csv"; then
@@ -170,7 +170,7 @@ echo keep > "$work/ro.grids.csv"; chmod 444 "$work/ro.grids.csv"
 expect 3 "read-only grid summary" "ro.grids.csv: cannot write: the file exists and is read-only" -- solve "$good" -q --set "$grid_set" --sensors "$work/ro.csv"
 if [ ! -e "$work/ro.csv" ]; then passed=$((passed + 1)); else echo "FAIL the sensor CSV was written although its summary could not be"; failures=$((failures + 1)); fi
 
-# False-colour pictures (issue 14): written when asked, checked like every output.
+# False-colour pictures: written when asked, checked like every output.
 if "$rayrad" render "$good" -q --set "$grid_set" --grid-picture "$work/fc_grid.png" --false-colour "$work/fc_lum.png" -o "$work/fc.png" >/dev/null 2>&1 &&
     [ -s "$work/fc_grid.png" ] && [ -s "$work/fc_lum.png" ]; then
     passed=$((passed + 1))

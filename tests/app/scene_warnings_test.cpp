@@ -1,4 +1,4 @@
-// Warnings for scenes that are probably wrong (issue 11, item 7): each case gets its one
+// Warnings for scenes that are probably wrong: each case gets its one
 // line, and a sound scene gets none.
 #include <app/pipeline.h>
 #include <app/scene_warnings.h>
@@ -17,9 +17,10 @@ namespace {
 /// `sensors` and an optional camera.
 std::vector<std::string> warningsFor(const std::string& name, const std::string& extra, const std::string& lights,
                                      const std::string& sensors = "", const std::string& camera = "") {
-    std::string json = R"({"materials": {"wall": {"reflectance": 0.5}, "mirror": {"type": "mirror", "specular_reflectance": 0.9}},
+    std::string json =
+        R"({"materials": {"wall": {"reflectance": 0.5}, "mirror": {"type": "mirror", "specular_reflectance": 0.9}},
         "objects": [{"type": "box", "material": "wall", "min": [0, 0, 0], "max": [4, 3, 4], "facing": "inward"})" +
-                       extra + R"(], "lights": [)" + lights + R"(], "sensors": [)" + sensors + "]" + camera + "}";
+        extra + R"(], "lights": [)" + lights + R"(], "sensors": [)" + sensors + "]" + camera + "}";
     auto scene = app::loadSceneFile(test::writeTempScene("warn_" + name, json), {});
     auto mesh = radiosity::premesh(scene, scene.meshing);
     auto embree = raytrace::buildEmbreeScene(scene, mesh);
@@ -49,10 +50,11 @@ TEST_CASE("a sound room gets no warning and sensors on edges and corners are not
 }
 
 TEST_CASE("a light, camera or sensor inside a solid is named", "[warnings]") {
-    auto w = warningsFor("inside", kBlock, R"({"type": "point", "position": [1.5, 0.5, 1.5], "intensity_cd": 100}, )" +
-                                               std::string(kLight),
-                         R"({"name": "under the block", "position": [1.5, 0, 1.5], "normal": [0, 1, 0]})",
-                         R"(, "camera": {"position": [1.4, 0.6, 1.4], "look_at": [3, 1, 3]})");
+    auto w =
+        warningsFor("inside", kBlock,
+                    R"({"type": "point", "position": [1.5, 0.5, 1.5], "intensity_cd": 100}, )" + std::string(kLight),
+                    R"({"name": "under the block", "position": [1.5, 0, 1.5], "normal": [0, 1, 0]})",
+                    R"(, "camera": {"position": [1.4, 0.6, 1.4], "look_at": [3, 1, 3]})");
     CHECK(mentions(w, "/lights/0: the light at (1.5, 0.5, 1.5) is inside a closed solid"));
     CHECK_FALSE(mentions(w, "/lights/1"));
     CHECK(mentions(w, "/camera: the camera at (1.4, 0.6, 1.4) is inside a closed solid"));

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tiles through a Slurm job array (issue 16), not in the default run: it installs Slurm and
+# Tiles through a Slurm job array, not in the default run: it installs Slurm and
 # munge and makes this machine a one-node cluster (scripts/slurm/single-node, needs root).
 # Four array tasks render four tiles from a saved solution; the merge is bit-identical to
 # rendering the whole; a sweep's jobs run as a job array. Run: ctest -L slurm (from build/).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Tiles (issue 16): a saved solution rendered as 4 tiles by GNU parallel on this machine
+# Tiles: a saved solution rendered as 4 tiles by GNU parallel on this machine
 # (-S : is the local host, as a list of hosts would be), merged: the EXR is bit-identical
 # to rendering the whole image; a missing or repeated tile is refused.
 set -u

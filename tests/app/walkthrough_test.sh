@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Walkthroughs, export and sweeps (issue 16): a camera path's frames (each the same image a
+# Walkthroughs, export and sweeps: a camera path's frames (each the same image a
 # camera at that place gives), rendered from a saved solution, also through GNU parallel;
 # the lit mesh exported as .glb, checked by the Khronos glTF validator and shown by the
 # three.js viewer in headless Chromium; a parameter sweep's jobs run by GNU parallel.

@@ -72,7 +72,7 @@ TEST_CASE("bisection splits a large triangle to size and leaves small neighbours
     }
     CHECK(after == Approx(before).epsilon(1e-12));
     CHECK(longest <= 1.0);
-    CHECK(small == 200);        // the strip is untouched
+    CHECK(small == 200);            // the strip is untouched
     CHECK(out.size() <= 200 + 64);  // the square: 16 m² in triangles of at most 1 m edges
     requireConforming(p, out);
     // Winding is kept: every triangle still faces +z.

@@ -1,8 +1,8 @@
 // The cluster tree: groups of clusters as one far source in the final gather's re-gathers.
 #include <radiosity/clusters/cluster_tree.h>
 #include <radiosity/clusters/clusters.h>
-#include <radiosity/form_factors/form_factor.h>
 #include <radiosity/clusters/member_tree.h>
+#include <radiosity/form_factors/form_factor.h>
 #include <radiosity/mesh/mesher.h>
 #include <scene/scene_parser.h>
 
@@ -53,9 +53,11 @@ TEST_CASE("the cluster tree holds every cluster once, and a far coherent group's
         Cluster all;  // the group's patches as one cluster: its member tree's root is the direct source
         std::vector<Rgb> L;
         for (uint32_t k = g.begin; k < g.end; ++k)
-            for (uint32_t j : clustering.clusters[tree.order[k]].patches) all.patches.push_back(j), L.push_back(luminanceOf(j));
+            for (uint32_t j : clustering.clusters[tree.order[k]].patches)
+                all.patches.push_back(j), L.push_back(luminanceOf(j));
         const std::vector<uint32_t>& members = all.patches;
-        const FarSource direct = farSources(mesh, all, memberTree(mesh, all, 8), L, FarRayTargets::PowerSamples).front();
+        const FarSource direct =
+            farSources(mesh, all, memberTree(mesh, all, 8), L, FarRayTargets::PowerSamples).front();
         const double size = 0.5 * direct.reach;
         REQUIRE(glm::length(g.far.at - direct.at) < 1e-9 * size);
         double cone = 1;
@@ -63,10 +65,12 @@ TEST_CASE("the cluster tree holds every cluster once, and a far coherent group's
         CHECK(std::cos(g.coneAngle) <= cone + 1e-6);  // the directions are kept in float
         CHECK(g.far.reach >= direct.reach * (1 - 1e-9));
         for (int a = 0; a < 3; ++a) {
-            for (int ch = 0; ch < 3; ++ch) CHECK(g.far.flux[ch][a] == Approx(direct.flux[ch][a]).margin(1e-4 * glm::length(direct.flux[ch])));
+            for (int ch = 0; ch < 3; ++ch)
+                CHECK(g.far.flux[ch][a] == Approx(direct.flux[ch][a]).margin(1e-4 * glm::length(direct.flux[ch])));
             CHECK(g.far.normal[a] == Approx(direct.normal[a]).margin(1e-5));
             for (int b = 0; b < 3; ++b) {
-                const double scale = std::abs(direct.moment[0][0]) + std::abs(direct.moment[1][1]) + std::abs(direct.moment[2][2]);
+                const double scale =
+                    std::abs(direct.moment[0][0]) + std::abs(direct.moment[1][1]) + std::abs(direct.moment[2][2]);
                 CHECK(g.far.moment[a][b] == Approx(direct.moment[a][b]).margin(1e-5 * scale));
                 const double turningScale = glm::length(direct.flux[0]) * size + 1e-12;
                 CHECK(g.far.turning[a][b] == Approx(direct.turning[a][b]).margin(1e-5 * turningScale));
@@ -88,7 +92,8 @@ TEST_CASE("the cluster tree holds every cluster once, and a far coherent group's
         const Vec3 facing(g.far.normal);
         for (const double reaches : {2.0, 4.0})
             for (const Vec3 side : {Vec3(0.0), Vec3(0.3, -0.2, 0.4)}) {
-                const Vec3 x = g.far.at + reaches * g.far.reach * glm::normalize(facing + side - glm::dot(side, facing) * facing);
+                const Vec3 x =
+                    g.far.at + reaches * g.far.reach * glm::normalize(facing + side - glm::dot(side, facing) * facing);
                 const Vec3 n = glm::normalize(g.far.at - x + Vec3(0.1, 0.05, 0));
                 double exact = 0;  // E = Σ π L_j F_j (lx)
                 for (uint32_t k = g.begin; k < g.end; ++k)

@@ -1,17 +1,17 @@
 // Clusters and the two-level shooting: invariants, push-pull, the energy correction.
-#include "solved_scene.h"
 #include <core/check.h>
-#include <radiosity/solution/energy_balance.h>
-#include <radiosity/shooting/cluster_transfer.h>
 #include <radiosity/clusters/clusters.h>
-#include <radiosity/form_factors/form_factor.h>
-#include <radiosity/gather/gather.h>
 #include <radiosity/direct/direct_pass.h>
-#include <radiosity/mesh/mesher.h>
+#include <radiosity/form_factors/form_factor.h>
 #include <radiosity/form_factors/patch_transfer.h>
+#include <radiosity/gather/gather.h>
+#include <radiosity/mesh/mesher.h>
+#include <radiosity/shooting/cluster_transfer.h>
 #include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/solution/energy_balance.h>
 #include <raytrace/embree_scene.h>
 #include <scene/scene_parser.h>
+#include "solved_scene.h"
 
 #include "test_support.h"
 
@@ -39,8 +39,8 @@ const char* kTwoQuads = R"({"materials": {"m": {"reflectance": 0.5}},
 
 /// The empty cube at max_edge 1, clustered, after its direct pass: where a shooting starts.
 struct DirectLitCube {
-    scene::Scene s = scene::buildScene(
-        scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "1"}}));
+    scene::Scene s =
+        scene::buildScene(scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "1"}}));
     PatchMesh mesh = premesh(s, s.meshing);
     Clustering clustering = buildClusters(s, mesh, s.clusters);
     raytrace::EmbreeScene embree{mesh, 1e-5 * s.diagonal()};
@@ -83,7 +83,8 @@ TEST_CASE("push-pull conserves energy", "[clusters]") {
     solver.initialize(sol);
     for (int k = 0; k < 20; ++k) solver.step(sol);
     double before = sol.unshotNetFlux, indirectBefore = 0, pending = 0;
-    for (size_t i = 0; i < mesh.patches.size(); ++i) indirectBefore += luminance(sol.indirect[i]) * mesh.patches[i].area;
+    for (size_t i = 0; i < mesh.patches.size(); ++i)
+        indirectBefore += luminance(sol.indirect[i]) * mesh.patches[i].area;
     for (size_t c = 0; c < clustering.clusters.size(); ++c)
         pending += kPi * luminance(solver.clusterLight()[c].pendingReflected) * clustering.clusters[c].area;
     REQUIRE(pending > 0);
@@ -93,7 +94,8 @@ TEST_CASE("push-pull conserves energy", "[clusters]") {
     CHECK(after == Approx(before + pending).epsilon(1e-12));
     // ρ = 2/3 everywhere: the pushed illuminance flux is pending / ρ.
     CHECK(indirectAfter - indirectBefore == Approx(pending * 1.5).epsilon(1e-9));
-    for (size_t c = 0; c < clustering.clusters.size(); ++c) REQUIRE(solver.clusterLight()[c].pendingReflected == Rgb(0.0));
+    for (size_t c = 0; c < clustering.clusters.size(); ++c)
+        REQUIRE(solver.clusterLight()[c].pendingReflected == Rgb(0.0));
 }
 
 TEST_CASE("solve() hands the solution the indirect light only at the push-pulls that want it and at the end",
@@ -106,11 +108,12 @@ TEST_CASE("solve() hands the solution the indirect light only at the push-pulls 
     solver.initialize(sol);
     int asked = 0, wanted = 0, askedWithArrays = 0;
     std::vector<size_t> sizes;  // the indirect array's size at each call
-    ShootingSolver::PushPullHook hook{[&](const RadiositySolution& x) {
-                                          if (!x.converged && !x.indirect.empty()) ++askedWithArrays;
-                                          return ++asked % 2 == 0;
-                                      },
-                                      [&](const RadiositySolution& x) { ++wanted, sizes.push_back(x.indirect.size()); }};
+    ShootingSolver::PushPullHook hook{
+        [&](const RadiositySolution& x) {
+            if (!x.converged && !x.indirect.empty()) ++askedWithArrays;
+            return ++asked % 2 == 0;
+        },
+        [&](const RadiositySolution& x) { ++wanted, sizes.push_back(x.indirect.size()); }};
     solver.solve(sol, hook);
     REQUIRE(sol.converged);
     REQUIRE(asked >= 3);
@@ -133,7 +136,8 @@ TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the to
     REQUIRE(clustering.clusters.size() == 2);
     raytrace::EmbreeScene embree(mesh, 1e-5 * s.diagonal());
     const size_t C = clustering.clusterOf[0], D = 1 - C;
-    REQUIRE(clustering.voxelDistance(clustering.clusters[C], clustering.clusters[D]) == 2);  // z = 3 is clamped into the last voxel
+    REQUIRE(clustering.voxelDistance(clustering.clusters[C], clustering.clusters[D]) ==
+            2);  // z = 3 is clamped into the last voxel
 
     // Only C is lit (direct light set by hand), so D's light all comes from C.
     RadiositySolution sol;
@@ -154,7 +158,8 @@ TEST_CASE("after a correction the receiver holds a patch-to-patch shot of the to
         Rgb expected(0.0);
         for (uint32_t i : clustering.clusters[C].patches) {
             Rgb L = Rgb(0.5) * sol.directMean[i] / kPi;  // C's total: it received nothing
-            const double f = patchFormFactor(mesh, mesh.patches[i], rec.centroid, rec.normal, s.formFactors.analyticDistance);
+            const double f =
+                patchFormFactor(mesh, mesh.patches[i], rec.centroid, rec.normal, s.formFactors.analyticDistance);
             if (f > 0 && embree.visibleFromSurface(rec.centroid, rec.normal, mesh.patches[i].centroid))
                 expected += L * (kPi * f);  // every member its own ray
         }
@@ -179,7 +184,7 @@ TEST_CASE("a shooting cluster's visibility rays leave from its members in propor
     Cluster c;
     c.patches = {10, 11, 12, 13};
     c.samples = {10, 11, 12, 13};
-    CHECK(powerSamples(c, {0, 0, 0, 0}) == c.samples);        // no power: the static samples
+    CHECK(powerSamples(c, {0, 0, 0, 0}) == c.samples);  // no power: the static samples
     CHECK(powerSamples(c, {0, 5, 0, 0}) == ClusterSamples{11, 11, 11, 11});
     CHECK(powerSamples(c, {1, 1, 0, 2}) == ClusterSamples{10, 11, 13, 13});
     CHECK(powerSamples(c, {-1, 0, 0, 1}) == ClusterSamples{10, 10, 13, 13});  // negative unshot light is shot too
@@ -204,8 +209,10 @@ TEST_CASE("a wall behind a panel 1 cm away: clustered and unclustered absorb the
 }
 
 TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]") {
-    const std::vector<scene::Override> o = {{"radiosity.max_edge", "0.5"}, {"radiosity.stop_unshot", "0.01"},
-                                            {"radiosity.gather_levels", "2"}, {"radiosity.edge_gather_levels", "2"}};
+    const std::vector<scene::Override> o = {{"radiosity.max_edge", "0.5"},
+                                            {"radiosity.stop_unshot", "0.01"},
+                                            {"radiosity.gather_levels", "2"},
+                                            {"radiosity.edge_gather_levels", "2"}};
     std::string path = test::sourcePath("scenes/cube/cube.json");
     auto a = test::solve(path, o);
     auto b = test::solve(path, o);
@@ -222,7 +229,8 @@ TEST_CASE("clustered solve: identical twice and for 1 or 2 threads", "[clusters]
                 Approx(luminance(a.lighting.solution.indirect[i])).epsilon(1e-9));
     }
     for (size_t k = 0; k < a.sensors.size(); ++k)
-        CHECK(luminance(one->sensors[k].value.indirect) == Approx(luminance(a.sensors[k].value.indirect)).epsilon(1e-9));
+        CHECK(luminance(one->sensors[k].value.indirect) ==
+              Approx(luminance(a.sensors[k].value.indirect)).epsilon(1e-9));
     REQUIRE(a.lighting.displayVertices.seams > 0);
     for (size_t v = 0; v < a.lighting.solution.vertexIndirect.size(); ++v) {
         REQUIRE(a.lighting.solution.vertexIndirect[v] == b.lighting.solution.vertexIndirect[v]);
@@ -240,11 +248,13 @@ TEST_CASE("a grey scene solved in one channel matches the three-channel solve", 
     REQUIRE(one.lighting.singleChannel);
     REQUIRE_FALSE(three.lighting.singleChannel);
     for (size_t i = 0; i < one.lighting.solution.indirect.size(); ++i) {
-        REQUIRE(luminance(one.lighting.solution.indirect[i]) == Approx(luminance(three.lighting.solution.indirect[i])).epsilon(1e-9));
+        REQUIRE(luminance(one.lighting.solution.indirect[i]) ==
+                Approx(luminance(three.lighting.solution.indirect[i])).epsilon(1e-9));
         REQUIRE(one.lighting.solution.indirect[i].r == one.lighting.solution.indirect[i].b);  // grey stays grey
     }
     for (size_t k = 0; k < one.sensors.size(); ++k)
-        CHECK(luminance(one.sensors[k].value.indirect) == Approx(luminance(three.sensors[k].value.indirect)).epsilon(1e-9));
+        CHECK(luminance(one.sensors[k].value.indirect) ==
+              Approx(luminance(three.sensors[k].value.indirect)).epsilon(1e-9));
     // A coloured scene is solved in three channels.
     auto cornell = [] {
         return test::solve(test::sourcePath("scenes/cornell/cornell.json"), {{"radiosity.max_edge", "0.2"}}, false);
@@ -258,8 +268,8 @@ TEST_CASE("a cluster's form factor summed through its member tree agrees with th
     // nodes of the member tree count as one (their second-order far field at unit
     // luminance): the sum must stay within 0.2 % of every member on its own, and both
     // within 0.5 % of the analytic form factor of the whole 10 m square.
-    auto s = scene::buildScene(scene::loadScene(test::sourcePath("scenes/cube/cube.json"),
-                                                {{"radiosity.max_edge", "0.25"}}));
+    auto s = scene::buildScene(
+        scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "0.25"}}));
     auto mesh = premesh(s, s.meshing);
     Cluster wall;
     for (uint32_t i = 0; i < mesh.patches.size(); ++i)
@@ -275,7 +285,8 @@ TEST_CASE("a cluster's form factor summed through its member tree agrees with th
             const double members = memberFormFactorSum(mesh, wall, nullptr, x, n, 4.0);
             const double throughTree = memberFormFactorSum(mesh, wall, &geometry, x, n, 4.0);
             const double exact = formFactorToPolygon(x, n, square, 4, Vec3(0, 0, -1));
-            INFO("x " << toString(x) << " n " << toString(n) << " members " << members << " tree " << throughTree << " exact " << exact);
+            INFO("x " << toString(x) << " n " << toString(n) << " members " << members << " tree " << throughTree
+                      << " exact " << exact);
             CHECK(throughTree == Approx(members).epsilon(2e-3));
             CHECK(throughTree == Approx(exact).epsilon(5e-3));
             opened += throughTree != members;
@@ -337,11 +348,13 @@ TEST_CASE("a ceiling above troffers hung 1 cm below it: no cluster-sized blotche
         {"type": "quad", "material": "wall", "vertices": [[0,0,8],[0,3,8],[8,3,8],[8,0,8]]})";
     const double troffers[4][2] = {{2.1, 2.3}, {5.7, 1.9}, {2.4, 5.8}, {6.1, 6.2}};
     for (const auto& t : troffers)
-        objects += fmt::format(R"(, {{"type": "quad", "material": "troffer", "vertices": [[{0},2.99,{1}],[{2},2.99,{1}],[{2},2.99,{3}],[{0},2.99,{3}]]}})",
-                               t[0] - 0.3, t[1] - 0.3, t[0] + 0.3, t[1] + 0.3);
+        objects += fmt::format(
+            R"(, {{"type": "quad", "material": "troffer", "vertices": [[{0},2.99,{1}],[{2},2.99,{1}],[{2},2.99,{3}],[{0},2.99,{3}]]}})",
+            t[0] - 0.3, t[1] - 0.3, t[0] + 0.3, t[1] + 0.3);
     const std::string json = R"({"materials": {"floor": {"reflectance": 0.3}, "ceiling": {"reflectance": 0.8},
         "wall": {"reflectance": 0.6}, "troffer": {"type": "emissive", "luminance_cd_m2": 2653, "reflectance": 0.7}},
-        "objects": )" + objects + R"(], "radiosity": {"max_edge": 0.25}})";
+        "objects": )" + objects +
+                             R"(], "radiosity": {"max_edge": 0.25}})";
     const std::string path = test::writeTempScene("troffer_ceiling", json);
     auto clustered = test::solve(path);
     auto plain = test::solve(path, {{"clusters.enabled", "false"}});
@@ -357,7 +370,8 @@ TEST_CASE("a ceiling above troffers hung 1 cm below it: no cluster-sized blotche
         const Patch& p = clustered.mesh.patches[i];
         if (p.normal.y > -0.99 || p.centroid.y < 2.995 || aboveTroffer(p.centroid)) continue;  // open ceiling only
         ++open;
-        const double a = luminance(clustered.lighting.solution.indirect[i]), b = luminance(plain.lighting.solution.indirect[i]);
+        const double a = luminance(clustered.lighting.solution.indirect[i]),
+                     b = luminance(plain.lighting.solution.indirect[i]);
         worst = std::max(worst, std::abs(a / b - 1));
         squares += (a / b - 1) * (a / b - 1);
     }
@@ -405,7 +419,8 @@ TEST_CASE("balls on the floor: clustered against unclustered, patch by patch", "
     double squares[3] = {0, 0, 0}, reference[3] = {0, 0, 0}, sum[3][2] = {{0, 0}, {0, 0}, {0, 0}};
     for (size_t i = 0; i < plain.mesh.patches.size(); ++i) {
         const Patch& p = plain.mesh.patches[i];
-        const double a = luminance(clustered.lighting.solution.indirect[i]), b = luminance(plain.lighting.solution.indirect[i]);
+        const double a = luminance(clustered.lighting.solution.indirect[i]),
+                     b = luminance(plain.lighting.solution.indirect[i]);
         if (p.normal.y > 0.9 && p.centroid.y < 0.01) {
             squares[2] += p.area * (a - b) * (a - b);
             reference[2] += p.area * b * b;
@@ -420,8 +435,10 @@ TEST_CASE("balls on the floor: clustered against unclustered, patch by patch", "
     }
     for (int part : {0, 1, 2}) {
         const double l2 = std::sqrt(squares[part] / reference[part]), mean = sum[part][0] / sum[part][1] - 1;
-        INFO((part == 0 ? "room" : part == 1 ? "balls" : "floor") << ": relative L2 difference " << 100 * l2
-                                                                  << " %, mean " << 100 * mean << " %");
+        INFO((part == 0   ? "room"
+              : part == 1 ? "balls"
+                          : "floor")
+             << ": relative L2 difference " << 100 * l2 << " %, mean " << 100 * mean << " %");
         CHECK(l2 < (part == 2 ? 0.06 : 0.05));
         CHECK(std::abs(mean) < 0.005);
     }
@@ -432,7 +449,8 @@ TEST_CASE("clusters that touch along a seam exchange patch to patch: the Cornell
     // indirect illuminance against the exact sum of the same solution at their centroids
     // (every patch its own form factor and ray). Shot cluster→cluster from a cluster one
     // voxel away that touches them, they were up to 15 % short (bench/seam_patches).
-    const test::SolvedScene run = test::solve(test::sourcePath("scenes/cornell/cornell.json"), {{"radiosity.max_edge", "0.05"}});
+    const test::SolvedScene run =
+        test::solve(test::sourcePath("scenes/cornell/cornell.json"), {{"radiosity.max_edge", "0.05"}});
     const auto touching = touchingClusters(run.mesh, run.lighting.clustering, *run.embree, 1e-6 * run.scene.diagonal());
     GatherOptions exact = GatherOptions::plain();
     exact.sharedRays = false;
@@ -442,7 +460,7 @@ TEST_CASE("clusters that touch along a seam exchange patch to patch: the Cornell
     double worst = 0;
     for (size_t i = 0; i < run.mesh.patches.size(); ++i) {
         const Patch& p = run.mesh.patches[i];
-        const bool wall = p.normal.z < -0.99 && 0.5488 - p.centroid.y < 0.02;   // 16.6 mm below the ceiling
+        const bool wall = p.normal.z < -0.99 && 0.5488 - p.centroid.y < 0.02;  // 16.6 mm below the ceiling
         const bool ceiling = p.normal.y < -0.99 && p.centroid.y > 0.54 && 0.5592 - p.centroid.z < 0.02;
         if (!wall && !ceiling) continue;
         ++seamPatches;

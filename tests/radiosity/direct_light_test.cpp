@@ -19,7 +19,8 @@ scene::Scene withLights(const std::string& lights, const std::string& extraObjec
     std::string json = R"({"materials": {"m": {"reflectance": 0.5})" + extraMaterials + R"(},
         "objects": [{"type": "quad", "material": "m", "vertices": [[-50,-50,-10],[50,-50,-10],[50,50,-10],[-50,50,-10]]})" +
                        extraObjects + R"(],
-        "lights": [)" + lights + "]}";
+        "lights": [)" + lights +
+                       "]}";
     return scene::buildScene(scene::parseScene(json, "t.json"));
 }
 
@@ -69,13 +70,15 @@ TEST_CASE("area light: a square emitter above a point gives pi L F (catalogue B-
     Setup s(withLights(R"({"type": "point", "position": [0, 0, -20], "intensity_cd": 1e-9})", emitter, lamp));
     double A = 1.0, B = 1.0;
     double F = (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
-                B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) / (2 * kPi);
+                B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
+               (2 * kPi);
     CHECK(s.at({0, 0, 0}, {0, 0, 1}) == Approx(kPi * 1000 * F).epsilon(1e-9));
     CHECK(s.lights->emittedFlux() == Approx(kPi * 1000 * 1.0 + 4 * kPi * 1e-9));  // Φ = π L A
 }
 
 TEST_CASE("area light: an occluder halfway casts a shadow", "[direct]") {
-    std::string emitter = R"(, {"type": "quad", "material": "lamp", "vertices": [[-0.1,-0.1,2],[-0.1,0.1,2],[0.1,0.1,2],[0.1,-0.1,2]]},
+    std::string emitter =
+        R"(, {"type": "quad", "material": "lamp", "vertices": [[-0.1,-0.1,2],[-0.1,0.1,2],[0.1,0.1,2],[0.1,-0.1,2]]},
                               {"type": "quad", "material": "m", "vertices": [[-1,-1,1],[1,-1,1],[1,1,1],[-1,1,1]]})";
     std::string lamp = R"(, "lamp": {"type": "emissive", "luminance_cd_m2": 1000})";
     Setup s(withLights(R"({"type": "point", "position": [0, 0, -20], "intensity_cd": 1e-9})", emitter, lamp));
@@ -120,8 +123,8 @@ TEST_CASE("adaptive shadow testing: the strong lights tested, the weak ones esti
     // under a 'ceiling' that blocks them at z > 5).
     std::string lights = R"({"type": "point", "position": [0, 0, 2], "intensity_cd": 4000})";
     for (int k = 0; k < 60; ++k)
-        lights += R"(, {"type": "point", "position": [)" + std::to_string(10 + k % 10) + ", " +
-                  std::to_string(k / 10) + ", " + (k % 4 == 0 ? "4" : "6") + R"(], "intensity_cd": 100})";
+        lights += R"(, {"type": "point", "position": [)" + std::to_string(10 + k % 10) + ", " + std::to_string(k / 10) +
+                  ", " + (k % 4 == 0 ? "4" : "6") + R"(], "intensity_cd": 100})";
     Setup s(withLights(lights));
     const Vec3 x(0, 0, 0), n(0, 0, 1);
 
@@ -149,7 +152,9 @@ TEST_CASE("adaptive shadow testing: the strong lights tested, the weak ones esti
     struct CountingBlocked : BlockedAbove {
         mutable size_t rays = 0;
         using BlockedAbove::BlockedAbove;
-        bool visible(const Vec3& from, const Vec3& to) const override { return ++rays, BlockedAbove::visible(from, to); }
+        bool visible(const Vec3& from, const Vec3& to) const override {
+            return ++rays, BlockedAbove::visible(from, to);
+        }
     };
     CountingBlocked alone(1.0), withIndirect(1.0);
     const double dark = luminance(s.lights->illuminanceForDisplay(x, n, alone, 16, nullptr, 0.02));
@@ -166,7 +171,9 @@ TEST_CASE("a pixel's samples on one patch share the far lights' shadow rays", "[
     // A dim emitter just above the point and 24 small bright ones 6–11 m away (far: beyond
     // five of their diameters), all facing down.
     auto square = [](double x, double y, double z, double half) {
-        auto v = [&](double a, double b) { return "[" + std::to_string(a) + "," + std::to_string(b) + "," + std::to_string(z) + "]"; };
+        auto v = [&](double a, double b) {
+            return "[" + std::to_string(a) + "," + std::to_string(b) + "," + std::to_string(z) + "]";
+        };
         return "[" + v(x - half, y - half) + "," + v(x - half, y + half) + "," + v(x + half, y + half) + "," +
                v(x + half, y - half) + "]";
     };
@@ -200,7 +207,8 @@ TEST_CASE("a pixel's samples on one patch share the far lights' shadow rays", "[
     radiosity::PixelLightMemo hidden;
     s.lights->illuminanceForDisplay(x1, n, ceiling, 16, nullptr, 0.02, 0, &hidden, 7);
     const double dimOnly = luminance(s.lights->illuminanceForDisplay(x2, n, ceiling, 16, nullptr, 0.02, 0, &hidden, 7));
-    CHECK(dimOnly == Approx(luminance(s.lights->illuminanceForDisplay(x2, n, ceiling, 16, nullptr, 0.0))).epsilon(0.02));
+    CHECK(dimOnly ==
+          Approx(luminance(s.lights->illuminanceForDisplay(x2, n, ceiling, 16, nullptr, 0.0))).epsilon(0.02));
 
     // Another patch starts the memo afresh.
     CountingVisibility other;

@@ -1,6 +1,6 @@
 // Seam vertices: which vertices take a point gather instead of the reconstruction.
-#include "solved_scene.h"
 #include <radiosity/gather/gather.h>
+#include "solved_scene.h"
 
 #include "test_support.h"
 
@@ -77,7 +77,8 @@ TEST_CASE("seam vertices: a gather's near part and the rest add up to the whole 
     radiosity::GatherOptions options = radiosity::GatherOptions::plain();
     options.gatherLevels = 3;
     options.gatherFarDiameters = 3;
-    radiosity::Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree, options);
+    radiosity::Gatherer gatherer(run.scene, run.mesh, run.lighting.clustering, run.lighting.solution, *run.embree,
+                                 options);
     radiosity::Gatherer::CornerSource corners = [&](size_t patch, int corner, double) {
         return run.lighting.solution.vertexIndirect[run.mesh.patches[patch].v[corner]];
     };
@@ -118,8 +119,9 @@ std::string floorWithTurnedBox() {
         for (double along : {0.25, 0.5, 0.75})
             for (double away : {0.02, 0.05}) {
                 const Vec2 s = a + along * (b - a) + away * out;
-                sensors += fmt::format(R"({}{{"name": "side {} at {}, {} m out", "position": [{},0,{}], "normal": [0,1,0]}})",
-                                       sensors.empty() ? "" : ", ", k, along, away, s.x, s.y);
+                sensors +=
+                    fmt::format(R"({}{{"name": "side {} at {}, {} m out", "position": [{},0,{}], "normal": [0,1,0]}})",
+                                sensors.empty() ? "" : ", ", k, along, away, s.x, s.y);
             }
     }
     objects += fmt::format(R"(, {{"type": "quad", "material": "m", "vertices": [{},{},{},{}]}})", p(c[0], 1),
@@ -198,12 +200,15 @@ TEST_CASE("contact vertices: behind a lone panel standing on the floor the light
         const bool front = s.sensor.name.rfind("front", 0) == 0;
         const double gather = luminance(s.value.indirect), vertex = luminance(*s.value.indirectVertex);
         INFO(s.sensor.name << ": gather " << gather << " lx, vertex " << vertex << " lx");
-        if (front) CHECK(std::abs(vertex - gather) <= 0.25 * gather);
-        else CHECK(vertex <= 0.1 * luminance(run.sensors[0].value.indirect));  // a tenth of the light in front
+        if (front)
+            CHECK(std::abs(vertex - gather) <= 0.25 * gather);
+        else
+            CHECK(vertex <= 0.1 * luminance(run.sensors[0].value.indirect));  // a tenth of the light in front
         (front ? frontGather : backGather) += gather / 6;
         if (!front) backVertex += vertex / 6;
     }
-    INFO("front gather " << frontGather << " lx, back gather " << backGather << " lx, back vertex " << backVertex << " lx");
+    INFO("front gather " << frontGather << " lx, back gather " << backGather << " lx, back vertex " << backVertex
+                         << " lx");
     CHECK(backGather == Approx(0).margin(1e-9));
     CHECK(backVertex < 0.05 * frontGather);
 }
@@ -247,7 +252,7 @@ TEST_CASE("extrapolated vertices: the corners of a block's face two patches wide
     scene["radiosity"]["max_edge"] = 0.1;
     scene.erase("camera");
     scene.erase("sensor_grids");
-    const Vec3 right(0.29, 0, 0.114), left(0.13, 0, 0.065);  // the face's bottom corners
+    const Vec3 right(0.29, 0, 0.114), left(0.13, 0, 0.065);     // the face's bottom corners
     const Vec3 normal = glm::normalize(Vec3(0.049, 0, -0.16));  // toward the camera
     scene["sensors"] = nlohmann::json::array();
     for (double t : {0.05, 0.25, 0.75, 0.95})

@@ -55,9 +55,13 @@ TEST_CASE("the form factor's centroid agrees with a fine subdivision, and a line
         {"floor point 0.3 from a wall", {0.3, 0.4, 0}, up, {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0)}},
         {"floor point 1 cm from a wall", {0.01, 0.4, 0}, up, {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0)}},
         {"floor point 0.1 mm from a wall", {1e-4, 0.2, 0}, up, {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0)}},
-        {"a tilted receiver that sees part of the triangle", {0.2, 0.2, 0.5}, glm::normalize(Vec3(1, 0.3, 0.2)),
+        {"a tilted receiver that sees part of the triangle",
+         {0.2, 0.2, 0.5},
+         glm::normalize(Vec3(1, 0.3, 0.2)),
          {Vec3(0, 0, 1), Vec3(0, 1, 1), Vec3(1, 0, 1)}},
-        {"a point beside a wall's edge, 5 mm off", {0.005, 1.0, 0.3}, glm::normalize(Vec3(1, 0, 0.4)),
+        {"a point beside a wall's edge, 5 mm off",
+         {0.005, 1.0, 0.3},
+         glm::normalize(Vec3(1, 0, 0.4)),
          {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0)}},
     };
     for (const Case& c : cases) {

@@ -21,7 +21,9 @@ double toPolygon(const Vec3& x, const Vec3& n, const std::vector<Vec3>& poly, co
 }
 
 /// Rectangle [0,a]×[0,b] in the plane z = c, facing down (−z), CCW seen from below.
-std::vector<Vec3> ceilingRect(double a, double b, double c) { return {{0, 0, c}, {0, b, c}, {a, b, c}, {a, 0, c}}; }
+std::vector<Vec3> ceilingRect(double a, double b, double c) {
+    return {{0, 0, c}, {0, b, c}, {a, b, c}, {a, 0, c}};
+}
 
 }  // namespace
 
@@ -116,7 +118,8 @@ TEST_CASE("second-order polygon form factor against Lambert's formula", "[form_f
         const double t = -2 * kPi * i / 24;
         disk.push_back({0.4 * std::cos(t), 0.4 * std::sin(t), 0});
     }
-    const std::vector<std::vector<Vec3>> lights = {{{-0.3, -0.3, 0}, {-0.3, 0.3, 0}, {0.3, 0.3, 0}, {0.3, -0.3, 0}}, disk};
+    const std::vector<std::vector<Vec3>> lights = {{{-0.3, -0.3, 0}, {-0.3, 0.3, 0}, {0.3, 0.3, 0}, {0.3, -0.3, 0}},
+                                                   disk};
     const Vec3 down(0, 0, -1);
     Random rng(7);
     auto unit = [&] {
@@ -165,8 +168,7 @@ TEST_CASE("the edge angle agrees with atan2 over the whole half turn", "[form_fa
     // π/4 and π/2, as the unit vectors' cross length s and dot product c.
     std::vector<double> angles = {1e-12, 1e-6, 0.01, kPi / 4, kPi / 2, kPi - 1e-3, kPi - 1e-9};
     for (int k = 0; k <= 16; ++k)
-        for (double d : {-1e-9, 0.0, 1e-9, 0.5 / 32})
-            angles.push_back(std::atan(k / 16.0) + d);
+        for (double d : {-1e-9, 0.0, 1e-9, 0.5 / 32}) angles.push_back(std::atan(k / 16.0) + d);
     Random rng(7);
     for (int i = 0; i < 10000; ++i) angles.push_back(kPi * rng.nextDouble());
     double worst = 0;

@@ -1,9 +1,9 @@
 // Mirrors: the image method (virtual lights and shooters), its analytic references, and
 // the ray tracer's view of a room with a wall mirror.
-#include "solved_scene.h"
-#include <radiosity/mirrors/mirror_images.h>
 #include <core/random.h>
+#include <radiosity/mirrors/mirror_images.h>
 #include <scene/polygon.h>
+#include "solved_scene.h"
 
 #include "scene/scene_test_util.h"
 #include "test_support.h"
@@ -14,7 +14,6 @@
 
 using namespace rayrad;
 
-
 TEST_CASE("closed diffuse sphere: uniform indirect rho/(1-rho) Phi/A for rho 0.3 0.7 0.9", "[solver][mirrors]") {
     double rho = GENERATE(0.3, 0.7, 0.9);
     // A true sphere gives every point E_ind = ρ/(1−ρ) Φ / A. On the tessellation the
@@ -24,8 +23,8 @@ TEST_CASE("closed diffuse sphere: uniform indirect rho/(1-rho) Phi/A for rho 0.3
     REQUIRE(run.lighting.clustering.multiPatchClusters() > 0);
     double expected = rho / (1 - rho) * 4 * kPi * 100 / run.mesh.totalArea();
     for (const auto& s : run.sensors) {
-        INFO("rho " << rho << " sensor " << s.sensor.name << " gathered " << luminance(s.value.indirect)
-                    << " expected " << expected);
+        INFO("rho " << rho << " sensor " << s.sensor.name << " gathered " << luminance(s.value.indirect) << " expected "
+                    << expected);
         CHECK(luminance(s.value.indirect) == Approx(expected).epsilon(0.015));
     }
 }
@@ -33,7 +32,8 @@ TEST_CASE("closed diffuse sphere: uniform indirect rho/(1-rho) Phi/A for rho 0.3
 TEST_CASE("SPH2 and SPH4: total illuminance at the paper's points within the paper's errors", "[solver][mirrors]") {
     // Table 4 references (method.md); the paper's 768-triangle sphere cut to a half and a
     // quarter. Paper errors: SPH2 within 2.3 %, SPH4 within 6.5 %; direct light exact.
-    for (auto [file, bound] : {std::pair{"scenes/sphere/sph2.json", 0.023}, std::pair{"scenes/sphere/sph4.json", 0.065}}) {
+    for (auto [file, bound] :
+         {std::pair{"scenes/sphere/sph2.json", 0.023}, std::pair{"scenes/sphere/sph4.json", 0.065}}) {
         auto run = test::solve(test::sourcePath(file));
         REQUIRE(run.lighting.mirrorImages > 0);
         REQUIRE(!run.sensors.empty());
@@ -49,8 +49,10 @@ TEST_CASE("SPH2 and SPH4: total illuminance at the paper's points within the pap
 TEST_CASE("two facing mirrors: images of images stop at the depth and weight limits", "[mirrors]") {
     auto mirror = [](double x, double nx, double ks) {
         scene::Mirror m;  // CCW seen from the side the normal points to
-        if (nx < 0) m.polygon = {{x, 0, 0}, {x, 0, 1}, {x, 1, 1}, {x, 1, 0}};
-        else m.polygon = {{x, 0, 0}, {x, 1, 0}, {x, 1, 1}, {x, 0, 1}};
+        if (nx < 0)
+            m.polygon = {{x, 0, 0}, {x, 0, 1}, {x, 1, 1}, {x, 1, 0}};
+        else
+            m.polygon = {{x, 0, 0}, {x, 1, 0}, {x, 1, 1}, {x, 0, 1}};
         m.normal = {nx, 0, 0};
         m.offset = nx * x;
         m.specular = Rgb(ks);
@@ -105,10 +107,10 @@ TEST_CASE("a 90-degree mirror corner: light meets each mirror at most once, so t
 TEST_CASE("segment-to-polygon distance: crossings, faces, edges", "[mirrors]") {
     const std::vector<Vec3> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     const Vec3 n(0, 0, 1);
-    CHECK(scene::segmentPolygonDistance({0.5, 0.5, -1}, {0.5, 0.5, 1}, square, n) == 0);        // crosses
+    CHECK(scene::segmentPolygonDistance({0.5, 0.5, -1}, {0.5, 0.5, 1}, square, n) == 0);             // crosses
     CHECK(scene::segmentPolygonDistance({0.5, 0.5, 2}, {0.2, 0.3, 0.5}, square, n) == Approx(0.5));  // over the face
-    CHECK(scene::segmentPolygonDistance({2, 0.5, -1}, {2, 0.5, 1}, square, n) == Approx(1));      // beside an edge
-    CHECK(scene::segmentPolygonDistance({1.3, 1.4, 0}, {1.3, 1.4, 0}, square, n) == Approx(0.5));  // off a corner
+    CHECK(scene::segmentPolygonDistance({2, 0.5, -1}, {2, 0.5, 1}, square, n) == Approx(1));         // beside an edge
+    CHECK(scene::segmentPolygonDistance({1.3, 1.4, 0}, {1.3, 1.4, 0}, square, n) == Approx(0.5));    // off a corner
     CHECK(scene::segmentDistance({0, 0, 0}, {1, 0, 0}, {0.5, -1, 1}, {0.5, 1, 1}) == Approx(1));
 }
 
@@ -146,7 +148,8 @@ TEST_CASE("MirrorImage::mayPass never rejects two balls between which light pass
     CHECK(rejected > 100);
 }
 
-TEST_CASE("MirrorImage::mayPassToPoint never rejects a ball that a receiver point sees through the chain", "[mirrors]") {
+TEST_CASE("MirrorImage::mayPassToPoint never rejects a ball that a receiver point sees through the chain",
+          "[mirrors]") {
     // The 90° corner's chains, and a thin strip (a mirror's bevel, 5 cm wide) with
     // receivers close above it, where the cone from the point culls what the segment's
     // distance cannot. Wherever a sampled point of the image ball is seen from the
@@ -163,7 +166,8 @@ TEST_CASE("MirrorImage::mayPassToPoint never rejects a ball that a receiver poin
         const bool thin = mirrors.size() == 1;
         for (const auto& image : radiosity::enumerateMirrorImages(mirrors, {8, 1e-3})) {
             for (int trial = 0; trial < 600; ++trial) {
-                const Vec3 source(3 * rng.nextDouble() - 0.5, 2 * rng.nextDouble() - (thin ? 1 : 0), 2 * rng.nextDouble());
+                const Vec3 source(3 * rng.nextDouble() - 0.5, 2 * rng.nextDouble() - (thin ? 1 : 0),
+                                  2 * rng.nextDouble());
                 const Vec3 receiver(3 * rng.nextDouble() - 0.5, 2 * rng.nextDouble() - (thin ? 1 : 0),
                                     (thin ? 0.3 : 2) * rng.nextDouble());
                 const double r = 0.5 * rng.nextDouble();
@@ -224,7 +228,8 @@ TEST_CASE("Mirror::facedBy never rejects a surface point that light reaches thro
 }
 
 TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors][stability]") {
-    std::string json = R"({"materials": {"w": {"reflectance": 0.5}, "m": {"type": "mirror", "specular_reflectance": 0.95}},
+    std::string json =
+        R"({"materials": {"w": {"reflectance": 0.5}, "m": {"type": "mirror", "specular_reflectance": 0.95}},
         "objects": [{"type": "box", "min": [0, 0, 0], "max": [3, 2, 2], "facing": "inward", "material": "w"},
                     {"type": "quad", "material": "m", "vertices": [[0.01, 0.5, 0.5], [0.01, 1.5, 0.5], [0.01, 1.5, 1.5], [0.01, 0.5, 1.5]]},
                     {"type": "quad", "material": "m", "vertices": [[2.99, 0.5, 0.5], [2.99, 0.5, 1.5], [2.99, 1.5, 1.5], [2.99, 1.5, 0.5]]}],
@@ -239,4 +244,3 @@ TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors
         CHECK(luminance(s.value.indirect) > 0);
     }
 }
-

@@ -12,7 +12,8 @@ using namespace rayrad;
 namespace {
 scene::Scene sceneWith(const std::string& objects, const std::string& lights) {
     std::string json = R"({"materials": {"m": {"reflectance": 0.5}, "glass": {"type": "glass"}},
-        "objects": [)" + objects + R"(], "lights": [)" + lights + "]}";
+        "objects": [)" +
+                       objects + R"(], "lights": [)" + lights + "]}";
     return scene::buildScene(scene::parseScene(json, "t.json"));
 }
 const std::string kLightAbove = R"({"type": "point", "position": [0.5, 0.5, 3], "intensity_cd": 100})";
@@ -30,8 +31,12 @@ std::string boxQuads(int drop = 0, bool flipTop = false) {
     }
     return out;
 }
-bool all(const std::vector<char>& v) { return !v.empty() && std::all_of(v.begin(), v.end(), [](char c) { return c != 0; }); }
-bool none(const std::vector<char>& v) { return std::none_of(v.begin(), v.end(), [](char c) { return c != 0; }); }
+bool all(const std::vector<char>& v) {
+    return !v.empty() && std::all_of(v.begin(), v.end(), [](char c) { return c != 0; });
+}
+bool none(const std::vector<char>& v) {
+    return std::none_of(v.begin(), v.end(), [](char c) { return c != 0; });
+}
 }  // namespace
 
 TEST_CASE("sealed solids: a closed box with the light outside, and what is not one", "[direct]") {
@@ -39,15 +44,18 @@ TEST_CASE("sealed solids: a closed box with the light outside, and what is not o
     CHECK(all(radiosity::sealedGroups(sceneWith(kBox, kLightAbove))));
     CHECK(all(radiosity::sealedGroups(sceneWith(boxQuads(), kLightAbove))));
     // A lamp inside lights the backs.
-    CHECK(none(radiosity::sealedGroups(sceneWith(kBox, R"({"type": "point", "position": [0.5, 0.5, 0.5], "intensity_cd": 1})"))));
+    CHECK(none(radiosity::sealedGroups(
+        sceneWith(kBox, R"({"type": "point", "position": [0.5, 0.5, 0.5], "intensity_cd": 1})"))));
     // An open box (no lid), a lid wound the wrong way, a glass lid: not sealed.
     CHECK(none(radiosity::sealedGroups(sceneWith(boxQuads(1), kLightAbove))));
     CHECK(none(radiosity::sealedGroups(sceneWith(boxQuads(0, true), kLightAbove))));
-    const std::string glassLid = boxQuads(1) + R"(, {"type": "quad", "material": "glass", "vertices": [[0,0,1],[1,0,1],[1,1,1],[0,1,1]]})";
+    const std::string glassLid =
+        boxQuads(1) + R"(, {"type": "quad", "material": "glass", "vertices": [[0,0,1],[1,0,1],[1,1,1],[0,1,1]]})";
     CHECK(none(radiosity::sealedGroups(sceneWith(glassLid, kLightAbove))));
     // Two boxes: the one with the lamp inside keeps its backs, the other is sealed.
-    const auto two = radiosity::sealedGroups(sceneWith(kBox + R"(, {"type": "box", "material": "m", "min": [3, 0, 0], "max": [4, 1, 1]})",
-                                                      R"({"type": "point", "position": [3.5, 0.5, 0.5], "intensity_cd": 1})"));
+    const auto two = radiosity::sealedGroups(
+        sceneWith(kBox + R"(, {"type": "box", "material": "m", "min": [3, 0, 0], "max": [4, 1, 1]})",
+                  R"({"type": "point", "position": [3.5, 0.5, 0.5], "intensity_cd": 1})"));
     REQUIRE(two.size() == 12);
     CHECK(all(std::vector<char>(two.begin(), two.begin() + 6)));
     CHECK(none(std::vector<char>(two.begin() + 6, two.end())));

@@ -1,7 +1,7 @@
-// Seam profiles (issue 15 item 3): the display values graded toward concave seams.
-#include "solved_scene.h"
+// Seam profiles : the display values graded toward concave seams.
 #include <radiosity/solution/seam_profiles.h>
 #include <radiosity/solution/solution.h>
+#include "solved_scene.h"
 
 #include "test_support.h"
 
@@ -45,7 +45,8 @@ double worstMeshError(const test::SolvedScene& run) {
         REQUIRE(s.value.indirectVertex);
         const double gather = luminance(s.value.indirect), mesh = luminance(*s.value.indirectVertex);
         if (std::abs(mesh / gather - 1) > worst)
-            worst = std::abs(mesh / gather - 1), where = fmt::format("{}: gather {:.4g}, mesh {:.4g} lx", s.sensor.name, gather, mesh);
+            worst = std::abs(mesh / gather - 1),
+            where = fmt::format("{}: gather {:.4g}, mesh {:.4g} lx", s.sensor.name, gather, mesh);
     }
     UNSCOPED_INFO("worst " << where);
     return worst;
@@ -86,8 +87,8 @@ TEST_CASE("seam profiles: the display is continuous across every edge and follow
         for (int k = 0; k < 3; ++k) {
             const uint32_t a = mesh.patches[i].v[k], b = mesh.patches[i].v[(k + 1) % 3];
             const bool ascending = a < b;
-            sides[{std::min(a, b), std::max(a, b)}].push_back({i, ascending ? std::make_pair(k, (k + 1) % 3)
-                                                                            : std::make_pair((k + 1) % 3, k)});
+            sides[{std::min(a, b), std::max(a, b)}].push_back(
+                {i, ascending ? std::make_pair(k, (k + 1) % 3) : std::make_pair((k + 1) % 3, k)});
         }
     size_t shared = 0, nonzero = 0;
     double worst = 0;
@@ -102,8 +103,8 @@ TEST_CASE("seam profiles: the display is continuous across every edge and follow
         }
     }
     CHECK(shared > 1000);
-    CHECK(nonzero > 100);   // the corrections are there
-    CHECK(worst < 1e-9);    // and no edge shows
+    CHECK(nonzero > 100);  // the corrections are there
+    CHECK(worst < 1e-9);   // and no edge shows
     // Nodes: δ at τ_k of every profiled edge, seen from a patch holding the edge.
     const auto& seams = profiles.seamVertices();
     size_t checked = 0;

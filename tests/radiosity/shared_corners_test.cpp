@@ -1,7 +1,7 @@
 // Shared corners: the direct pass evaluates a vertex once for all its patches only where
 // that is one point for all of them.
-#include "solved_scene.h"
 #include <radiosity/direct/shared_corners.h>
+#include "solved_scene.h"
 
 #include "test_support.h"
 
@@ -25,7 +25,7 @@ TEST_CASE("shared corners: inside a flat surface only, never along a wall's foot
 
     auto onFloor = [](const Vec3& v) { return std::abs(v.y) < 1e-9; };
     auto onFoot = [](const Vec3& v) {  // on the outline of the box's foot
-        const bool inX = v.x > 1.3 - 1e-9 && v.x < 2.3 + 1e-9, inZ = v.z > 1.45 - 1e-9 && v.z < 2.45 + 1e-9;
+        const bool inX = v.x > 1.3 - 1e-9 && v.x<2.3 + 1e-9, inZ = v.z> 1.45 - 1e-9 && v.z < 2.45 + 1e-9;
         const bool edgeX = std::abs(v.x - 1.3) < 1e-9 || std::abs(v.x - 2.3) < 1e-9;
         const bool edgeZ = std::abs(v.z - 1.45) < 1e-9 || std::abs(v.z - 2.45) < 1e-9;
         return (edgeX && inZ) || (edgeZ && inX);

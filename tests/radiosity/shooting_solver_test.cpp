@@ -1,7 +1,7 @@
 // The shooting iteration: energy balance, analytic sphere, determinism.
-#include "solved_scene.h"
-#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/solution/energy_balance.h>
+#include "solved_scene.h"
 
 #include "scene/scene_test_util.h"
 #include "test_support.h"
@@ -13,10 +13,7 @@
 
 using namespace rayrad;
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("closed box: emitted = absorbed + unshot within 0.5%", "[solver]") {
     std::string json = test::boxScene(R"({"type": "diffuse", "reflectance": [0.8, 0.5, 0.2]})",
@@ -60,7 +57,9 @@ TEST_CASE("closed sphere: the indirect light is rho/(1-rho) Phi / A", "[solver]"
     auto plain = test::solve(path, {{"clusters.enabled", "false"}});
     double worst = 0;
     for (size_t i = 0; i < run.mesh.patches.size(); ++i)
-        worst = std::max(worst, std::abs(luminance(run.lighting.solution.indirect[i]) / luminance(plain.lighting.solution.indirect[i]) - 1));
+        worst = std::max(worst, std::abs(luminance(run.lighting.solution.indirect[i]) /
+                                             luminance(plain.lighting.solution.indirect[i]) -
+                                         1));
     INFO("worst patch difference clustered vs unclustered: " << 100 * worst << "%");
     CHECK(worst < 0.02);
 }
@@ -96,7 +95,8 @@ TEST_CASE("the solve is deterministic and independent of the thread count", "[so
     }
     REQUIRE(a.lighting.solution.indirect.size() == b->lighting.solution.indirect.size());
     CHECK(a.lighting.solution.shots == b->lighting.solution.shots);
-    for (size_t i = 0; i < a.lighting.solution.indirect.size(); ++i) REQUIRE(a.lighting.solution.indirect[i] == b->lighting.solution.indirect[i]);
+    for (size_t i = 0; i < a.lighting.solution.indirect.size(); ++i)
+        REQUIRE(a.lighting.solution.indirect[i] == b->lighting.solution.indirect[i]);
 }
 
 TEST_CASE("the solve stops at the first shot that leaves less than stop_unshot of the emitted flux unshot",
@@ -114,8 +114,9 @@ TEST_CASE("the solve stops at the first shot that leaves less than stop_unshot o
     CHECK(s.remainingUnshotFlux <= 0.02 * s.emittedFlux);
     CHECK(s.unshotFraction() == Approx(s.remainingUnshotFlux / s.emittedFlux));
     REQUIRE(s.shots > 1);
-    auto before = test::solve(path, {{"radiosity.max_edge", "0.125"}, {"radiosity.stop_unshot", "0.02"},
-                                                {"radiosity.max_shots", std::to_string(s.shots - 1)}});
+    auto before = test::solve(path, {{"radiosity.max_edge", "0.125"},
+                                     {"radiosity.stop_unshot", "0.02"},
+                                     {"radiosity.max_shots", std::to_string(s.shots - 1)}});
     CHECK_FALSE(before.lighting.solution.converged);
     CHECK(before.lighting.solution.remainingUnshotFlux > 0.02 * s.emittedFlux);
 }

@@ -1,4 +1,4 @@
-// Saved solutions (issue 16): the round trip is exact; every truncation and every flipped
+// Saved solutions: the round trip is exact; every truncation and every flipped
 // byte is refused with an InputError, never a crash or a wrong solution.
 #include <core/input_error.h>
 #include <radiosity/solution/solution_file.h>
@@ -68,12 +68,15 @@ TEST_CASE("a saved solution reads back exactly, and any damage is refused", "[so
     }
     // Another scene: each part of the fingerprint is named.
     CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(9, 2, 3, 4), 5, 7), Catch::Contains("the geometry"));
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 9, 3, 4), 5, 7), Catch::Contains("the materials differ"));
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 3, 4, 9), 5, 7), Catch::Contains("the lights differ"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 9, 3, 4), 5, 7),
+                      Catch::Contains("the materials differ"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 3, 4, 9), 5, 7),
+                      Catch::Contains("the lights differ"));
     // Only dimmed (the shapes agree), but the file has no light groups' parts.
     CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 9, 4), 5, 7),
                       Catch::Contains("only dimming whole light groups can be applied"));
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 3, 9), 5, 7), Catch::Contains("settings differ"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", fingerprint(1, 2, 3, 9), 5, 7),
+                      Catch::Contains("settings differ"));
     // A file of another format version (the uint32 after the 10-byte magic "RAYRADSOL\0")
     // says so and what to do.
     std::string older = bytes;
@@ -124,5 +127,6 @@ TEST_CASE("a saved solution with light groups follows the groups' dimming", "[so
     CHECK(mixed.seamProfiles.edges()[1].delta[4].z == Approx(1.5 * -2.0));
     // Another group's name: refused.
     dimmed.groupStrengths[1].first = "window";
-    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", dimmed, 5, 7), Catch::Contains("light groups are not the scene's"));
+    CHECK_THROWS_WITH(decodeSolution(bytes, "s.rrs", dimmed, 5, 7),
+                      Catch::Contains("light groups are not the scene's"));
 }

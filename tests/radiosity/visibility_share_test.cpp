@@ -1,11 +1,11 @@
 // Sampled visibility of far sources: where the rays go, and what the gather reads with
 // them against every patch's own ray.
-#include "solved_scene.h"
 #include <radiosity/clusters/far_field.h>
 #include <radiosity/gather/gather.h>
+#include <radiosity/gather/visibility_share.h>
 #include <radiosity/mesh/mesher.h>
 #include <scene/scene_parser.h>
-#include <radiosity/gather/visibility_share.h>
+#include "solved_scene.h"
 
 #include "test_support.h"
 
@@ -42,8 +42,7 @@ class CountingVisibility final : public Visibility {
 };
 }  // namespace
 
-TEST_CASE("a far cluster's visibility is sampled where its light comes from, not at its brightest member",
-          "[gather]") {
+TEST_CASE("a far cluster's visibility is sampled where its light comes from, not at its brightest member", "[gather]") {
     // Twelve members in tree order: the first the brightest (10 % of the light) and seen,
     // the other eleven (90 %) hidden. One ray toward the brightest read the whole cluster
     // as seen; the stratified samples (offset 0.625: at 5/8, 1/8, 7/8, 3/8 of the light)
@@ -117,7 +116,8 @@ TEST_CASE("a far node's visibility samples are stratified by its members' power"
     auto s = scene::buildScene(scene::parseScene(R"({"materials": {"m": {"reflectance": 0.5}},
         "objects": [{"type": "quad", "material": "m", "vertices": [[0,0,0],[4,0,0],[4,0,1],[0,0,1]]}],
         "lights": [{"type": "point", "position": [2, 1, 0.5], "intensity_cd": 1}],
-        "radiosity": {"max_edge": 0.5}})", "strip.json", {}));
+        "radiosity": {"max_edge": 0.5}})",
+                                                 "strip.json", {}));
     auto mesh = premesh(s, s.meshing);
     Cluster strip;
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) strip.patches.push_back(i);
@@ -141,7 +141,8 @@ TEST_CASE("a far node's visibility samples are stratified by its members' power"
     CHECK(position(root.rayTo[2]) < position(root.rayTo[3]));
     int rays = 0;
     // Offset 0.25: strata 1, 3, 2, 0 — 3/8 (seen) and 7/8 (hidden) disagree, then 5/8 and 1/8.
-    CHECK(visibleShare(root, [&](uint32_t k) { return ++rays, k == bright; }, VisibilityRays::UpToFour, 0.25) == 0.5);
+    CHECK(visibleShare(
+              root, [&](uint32_t k) { return ++rays, k == bright; }, VisibilityRays::UpToFour, 0.25) == 0.5);
     CHECK(rays == 4);
 }
 
@@ -174,7 +175,8 @@ TEST_CASE("ceiling sensors over rows of desks read what every patch's own ray re
     const std::string json = R"({"materials": {"floor": {"reflectance": 0.3}, "ceiling": {"reflectance": 0.8},
         "wall": {"reflectance": 0.6}, "desk": {"reflectance": 0.5},
         "troffer": {"type": "emissive", "luminance_cd_m2": 2653, "reflectance": 0.7}},
-        "objects": [)" + objects + R"(], "radiosity": {"max_edge": 0.5}})";
+        "objects": [)" + objects +
+                             R"(], "radiosity": {"max_edge": 0.5}})";
     auto run = test::solve(test::writeTempScene("desk_rows", json));
     const GatherOptions options = GatherOptions::forSensors(run.scene, run.mesh);
     REQUIRE(options.gatherFarDiameters > 0);

@@ -1,4 +1,4 @@
-// Antialiasing that survives display (issue 15): display images average a pixel's samples
+// Antialiasing that survives display: display images average a pixel's samples
 // after range compression, so a lamp's edge shades off over its pixels; the EXR keeps the
 // plain average.
 #include <app/pipeline.h>

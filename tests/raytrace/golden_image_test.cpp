@@ -47,7 +47,8 @@ void checkAgainstGolden(const HdrImage& image, const std::string& relativePath) 
             if (excess > 0) ++fails;
             if (std::abs(a - b) > worst) worst = std::abs(a - b), worstX = x, worstY = y;
         }
-    INFO("failing pixels " << fails << ", worst difference " << worst << " cd/m² at (" << worstX << ", " << worstY << ")");
+    INFO("failing pixels " << fails << ", worst difference " << worst << " cd/m² at (" << worstX << ", " << worstY
+                           << ")");
     CHECK(fails <= ref.width * ref.height / 200);
 }
 

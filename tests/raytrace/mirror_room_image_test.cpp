@@ -11,8 +11,10 @@ TEST_CASE("mirror room: the block face toward the mirror is brighter with mirror
     // The paper's Fig. 10: the spots aim at the mirror, away from the block; only their
     // images light the block's face toward the mirror. Compare the pixel that sees it.
     auto render = [](const char* mode) {
-        app::PipelineOptions o = test::quiet({{"camera.resolution", "[64, 48]"}, {"render.spp", "4"},
-                                        {"radiosity.max_edge", "0.4"}, {"radiosity.mirrors", mode}});
+        app::PipelineOptions o = test::quiet({{"camera.resolution", "[64, 48]"},
+                                              {"render.spp", "4"},
+                                              {"radiosity.max_edge", "0.4"},
+                                              {"radiosity.mirrors", mode}});
         o.wantImage = true;
         o.wantSensors = false;
         return app::runPipeline(test::sourcePath("scenes/mirror_room/mirror_room.json"), o);

@@ -1,4 +1,4 @@
-// Projections (issue 16): a 180° fisheye at a sensor sees the light that reaches it, so
+// Projections: a 180° fisheye at a sensor sees the light that reaches it, so
 // the image integrated over the hemisphere, Σ L cos θ dω, is the sensor's indirect
 // illuminance (the point light itself is not in the picture); orthographic rays are
 // parallel.

@@ -1,4 +1,4 @@
-// The ray cone's footprint on a surface and its texture-space axes (issue 15: textures
+// The ray cone's footprint on a surface and its texture-space axes (textures
 // filtered over what a pixel sample covers).
 #include <radiosity/mesh/patch_reflectance.h>
 #include <raytrace/ray_cone.h>

@@ -1,4 +1,4 @@
-// Shading normals (issue 15, item 3: no mesh facets in images): a coarse sphere's facets
+// Shading normals (no mesh facets in images): a coarse sphere's facets
 // show in flat shading and not with interpolated normals; a mesh of sharp edges (a
 // tetrahedron, creases of 70.5°) renders exactly as flat shading does; the radiosity
 // (sensors) is the same either way.

@@ -44,7 +44,8 @@ Mismatches mismatches(const std::string& sceneFile, int points) {
             const radiosity::Patch& p = k % 2 ? mesh.patches[patch(rng)] : around;
             const double a = u(rng), b = u(rng) * (1 - a);
             const Vec3 corner[3] = {mesh.vertices[p.v[0]], mesh.vertices[p.v[1]], mesh.vertices[p.v[2]]};
-            targets.push_back(t == 0 ? p.centroid : corner[0] + a * (corner[1] - corner[0]) + b * (corner[2] - corner[0]));
+            targets.push_back(t == 0 ? p.centroid
+                                     : corner[0] + a * (corner[1] - corner[0]) + b * (corner[2] - corner[0]));
         }
         bool together[19];
         embree->visibleFromSurfaceMany(from, at.normal, targets.data(), count, together);

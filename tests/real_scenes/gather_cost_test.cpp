@@ -1,4 +1,4 @@
-// Issue 12, item 4 (part): a sensor's cost is bounded by what its re-gathers can still
+// item 4 (part): a sensor's cost is bounded by what its re-gathers can still
 // change. Inside a finely tessellated sphere every facet near a point faces it (the
 // surface is concave), so a point 1 cm from the wall has hundreds of near patches, each
 // of whose corners would be re-gathered `gather_levels` deep, with hundreds of near
@@ -31,9 +31,10 @@ std::string sphereWithSensorsNearTheWall(int subdivisions) {
 
 }  // namespace
 
-TEST_CASE("sensors 1 cm inside a finely tessellated sphere: within 1 % of the uniform 100 lx, in a bounded "
-          "number of gathers",
-          "[real_scenes]") {
+TEST_CASE(
+    "sensors 1 cm inside a finely tessellated sphere: within 1 % of the uniform 100 lx, in a bounded "
+    "number of gathers",
+    "[real_scenes]") {
     const std::string path = test::writeTempScene("gather_cost_sphere", sphereWithSensorsNearTheWall(24));
     const double expected = 100.0;  // lx, ρ/(1−ρ) Φ/A
     auto bounded = app::runPipeline(path, test::quiet());

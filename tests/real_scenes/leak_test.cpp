@@ -1,9 +1,9 @@
-// Issue 11, "no leaks, by construction": two rooms split by a zero-thickness wall or a
+// "no leaks, by construction": two rooms split by a zero-thickness wall or a
 // box partition, and a light outside a closed room. Every sensor, vertex value and pixel
 // on the dark side must be 0 (to 1e-6 of the lit room's mean), whatever the meshing.
 #include <app/pipeline.h>
-#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/solution/energy_balance.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
@@ -60,7 +60,8 @@ void checkDark(const app::PipelineRun& run, double darkFrom, double litMean) {
     for (size_t i = 0; i < run.mesh.patches.size(); ++i) {
         const auto& p = run.mesh.patches[i];
         if (p.centroid.x <= darkFrom + 1e-9 || p.normal.x < -0.5) continue;  // lit side (and its face of a thin wall)
-        worstPatch = std::max({worstPatch, luminance(run.lighting.solution.directMean[i]), luminance(run.lighting.solution.indirect[i])});
+        worstPatch = std::max(
+            {worstPatch, luminance(run.lighting.solution.directMean[i]), luminance(run.lighting.solution.indirect[i])});
         for (int k = 0; k < 3; ++k)
             worstVertex = std::max({worstVertex, luminance(run.lighting.solution.vertexIndirect[p.v[k]]),
                                     luminance(Rgb(run.lighting.solution.directCorner[3 * i + k]))});
@@ -83,16 +84,18 @@ app::PipelineOptions withImage() {
 
 }  // namespace
 
-TEST_CASE("two rooms split by a zero-thickness wall or a 0.2 m box partition: the dark room stays dark", "[real_scenes]") {
+TEST_CASE("two rooms split by a zero-thickness wall or a 0.2 m box partition: the dark room stays dark",
+          "[real_scenes]") {
     const bool thin = GENERATE(true, false);
     // Three meshings: the default and two grids whose lines miss the wall.
-    const std::string radiosity = GENERATE(std::string(""), std::string(R"("max_edge": 0.37)"),
-                                           std::string(R"("max_edge": 0.61)"));
+    const std::string radiosity =
+        GENERATE(std::string(""), std::string(R"("max_edge": 0.37)"), std::string(R"("max_edge": 0.61)"));
     const bool clusters = GENERATE(true, false);
     std::string json = twoRooms(thin ? kThinWall : kBoxWall, thin ? 4.0 : 4.1, radiosity);
     if (!clusters) json.replace(json.rfind('}'), 1, R"(, "clusters": {"enabled": false}})");
     INFO((thin ? "zero-thickness wall" : "box partition") << ", " << radiosity << (clusters ? "" : ", clusters off"));
-    auto run = app::runPipeline(test::writeTempScene(fmt::format("two_rooms_{}_{}", thin, clusters), json), withImage());
+    auto run =
+        app::runPipeline(test::writeTempScene(fmt::format("two_rooms_{}_{}", thin, clusters), json), withImage());
     const auto& lit = run.sensors.front();
     REQUIRE(lit.sensor.name == "lit");
     double litMean = luminance(lit.value.direct + lit.value.indirect);
@@ -100,7 +103,8 @@ TEST_CASE("two rooms split by a zero-thickness wall or a 0.2 m box partition: th
     checkDark(run, thin ? 4.0 : 4.1, litMean);
     // The closed rooms' account: the back of the dark room's face of a zero-thickness
     // wall is covered by the lit face, so nothing is booked there twice (it was +12 %).
-    auto balance = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    auto balance =
+        radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
     INFO("not accounted " << 100 * balance.relativeError() << " %, on backs " << 100 * balance.backShare() << " %");
     CHECK(std::abs(balance.relativeError()) < 1e-3);
 }
@@ -147,7 +151,8 @@ std::string furnishedRoom(const std::string& objects, const std::string& sensors
         "objects": [{"type": "box", "material": "wall", "min": [0, 0, 0], "max": [5, 3, 4], "facing": "inward"}, )" +
            objects + R"(],
         "lights": [{"type": "point", "position": [2.5, 2.5, 2], "intensity_cd": 500}],
-        "sensors": [)" + sensors + "]}";
+        "sensors": [)" +
+           sensors + "]}";
 }
 
 /// |vertex − gathered| / gathered of a sensor's indirect light.
@@ -164,17 +169,22 @@ TEST_CASE("thin objects against a wall: a poster's and a desk's rendered (vertex
     // A 2 mm panel 1 mm in front of a wall: its cluster must not mix it with the hidden
     // wall behind it (it rendered 31 % dark). A desk top against the same wall (was 36 %).
     auto poster = app::runPipeline(
-        test::writeTempScene("poster", furnishedRoom(R"({"type": "box", "material": "poster", "min": [0.001, 1.0, 1.2], "max": [0.003, 1.8, 2.1]})",
-                                                     R"({"name": "poster", "position": [0.003, 1.43, 1.61], "normal": [1, 0, 0]})")),
+        test::writeTempScene(
+            "poster",
+            furnishedRoom(
+                R"({"type": "box", "material": "poster", "min": [0.001, 1.0, 1.2], "max": [0.003, 1.8, 2.1]})",
+                R"({"name": "poster", "position": [0.003, 1.43, 1.61], "normal": [1, 0, 0]})")),
         test::quiet());
     INFO("poster: vertex " << luminance(*poster.sensors[0].value.indirectVertex) << " lx, gathered "
                            << luminance(poster.sensors[0].value.indirect) << " lx");
     CHECK(vertexVsGather(poster.sensors[0]) < 0.03);
     auto desk = app::runPipeline(
-        test::writeTempScene("desk", furnishedRoom(R"({"type": "box", "material": "wood", "min": [0, 0.72, 1.0], "max": [0.7, 0.75, 2.4]},
+        test::writeTempScene(
+            "desk",
+            furnishedRoom(R"({"type": "box", "material": "wood", "min": [0, 0.72, 1.0], "max": [0.7, 0.75, 2.4]},
                {"type": "box", "material": "wood", "min": [0.6, 0, 1.0], "max": [0.65, 0.72, 1.05]},
                {"type": "box", "material": "wood", "min": [0.6, 0, 2.35], "max": [0.65, 0.72, 2.4]})",
-                                                   R"({"name": "desk top", "position": [0.33, 0.75, 1.73], "normal": [0, 1, 0]})")),
+                          R"({"name": "desk top", "position": [0.33, 0.75, 1.73], "normal": [0, 1, 0]})")),
         test::quiet());
     INFO("desk top: vertex " << luminance(*desk.sensors[0].value.indirectVertex) << " lx, gathered "
                              << luminance(desk.sensors[0].value.indirect) << " lx");
@@ -184,13 +194,15 @@ TEST_CASE("thin objects against a wall: a poster's and a desk's rendered (vertex
 TEST_CASE("furniture on the floor: a carpet 1 cm high and cabinets standing on it, the account closes to 0.1 %",
           "[real_scenes]") {
     auto run = app::runPipeline(
-        test::writeTempScene("cabinets", furnishedRoom(R"({"type": "box", "material": "carpet", "min": [1, 0, 1], "max": [4, 0.01, 3]},
+        test::writeTempScene(
+            "cabinets", furnishedRoom(R"({"type": "box", "material": "carpet", "min": [1, 0, 1], "max": [4, 0.01, 3]},
                {"type": "box", "material": "wood", "min": [0, 0, 3.4], "max": [1.2, 0.9, 4]},
                {"type": "box", "material": "wood", "min": [1.3, 0.01, 1.5], "max": [2.0, 0.8, 2.0]})",
-                                                       R"({"name": "carpet", "position": [2.71, 0.01, 2.3], "normal": [0, 1, 0]})")),
+                                      R"({"name": "carpet", "position": [2.71, 0.01, 2.3], "normal": [0, 1, 0]})")),
         test::quiet());
     auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
-    INFO("not accounted " << 100 * b.relativeError() << " %, shots beyond the bound " << run.lighting.shooting.unbalancedShots);
+    INFO("not accounted " << 100 * b.relativeError() << " %, shots beyond the bound "
+                          << run.lighting.shooting.unbalancedShots);
     CHECK(std::abs(b.relativeError()) < 1e-3);
     CHECK(run.lighting.shooting.unbalancedShots == 0);
 }

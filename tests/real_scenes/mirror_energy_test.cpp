@@ -1,10 +1,10 @@
-// Issue 11, "energy is never created … through any mirror chain": the living room's wall
+// "energy is never created … through any mirror chain": the living room's wall
 // mirror (a mirror quad framed by four bevel strips tilted 5.7°, hanging 2 cm in front of
 // the wall) in a closed box. The account must close whatever lights it and whether light
 // can enter the gap behind it; a mirror wound backwards books what falls on its back.
 #include <app/pipeline.h>
-#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/solution/energy_balance.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
@@ -29,18 +29,24 @@ std::string mirrorRoom(double height, bool areaLight, double gap, const std::str
     const double rim = -gap, inner = -gap - 0.004025;  // the bevel strips fall 4 mm
     const std::string quads[5] = {
         fmt::format("[[2.242764, 0.94999, {0}], [1.513164, 0.94999, {0}], [1.553164, 0.98999, {1}], "
-                    "[2.202764, 0.98999, {1}]]", rim, inner),
+                    "[2.202764, 0.98999, {1}]]",
+                    rim, inner),
         fmt::format("[[2.242764, 2.277397, {0}], [2.242764, 0.94999, {0}], [2.202764, 0.98999, {1}], "
-                    "[2.202764, 2.237397, {1}]]", rim, inner),
+                    "[2.202764, 2.237397, {1}]]",
+                    rim, inner),
         fmt::format("[[1.513164, 2.277397, {0}], [2.242764, 2.277397, {0}], [2.202764, 2.237397, {1}], "
-                    "[1.553164, 2.237397, {1}]]", rim, inner),
+                    "[1.553164, 2.237397, {1}]]",
+                    rim, inner),
         fmt::format("[[1.513164, 0.94999, {0}], [1.513164, 2.277397, {0}], [1.553164, 2.237397, {1}], "
-                    "[1.553164, 0.98999, {1}]]", rim, inner),
+                    "[1.553164, 0.98999, {1}]]",
+                    rim, inner),
         fmt::format("[[1.553164, 2.237397, {1}], [2.202764, 2.237397, {1}], [2.202764, 0.98999, {1}], "
-                    "[1.553164, 0.98999, {1}]]", rim, inner)};
+                    "[1.553164, 0.98999, {1}]]",
+                    rim, inner)};
     std::string objects = fmt::format(
         R"({{"type": "box", "material": "wall", "min": [0, 0, -3], "max": [6, {}, 0], "facing": "inward"}})", height);
-    for (const auto& q : quads) objects += fmt::format(R"(, {{"type": "quad", "material": "mirror", "vertices": {}}})", q);
+    for (const auto& q : quads)
+        objects += fmt::format(R"(, {{"type": "quad", "material": "mirror", "vertices": {}}})", q);
     objects += moreObjects;
     std::string lights = "[]";
     if (areaLight) {
@@ -52,8 +58,8 @@ std::string mirrorRoom(double height, bool areaLight, double gap, const std::str
         }
         objects += fmt::format(R"(, {{"type": "polygon", "material": "lamp", "vertices": [{}]}})", vertices);
     } else {
-        lights = fmt::format(R"([{{"type": "point", "position": [2.66, {}, -1.645], "intensity_cd": 100}}])",
-                             height - 0.1);
+        lights =
+            fmt::format(R"([{{"type": "point", "position": [2.66, {}, -1.645], "intensity_cd": 100}}])", height - 0.1);
     }
     return fmt::format(R"({{"materials": {{"wall": {{"reflectance": 0.5}},
         "lamp": {{"type": "emissive", "luminance_cd_m2": 1000}},
@@ -64,9 +70,10 @@ std::string mirrorRoom(double height, bool areaLight, double gap, const std::str
 
 }  // namespace
 
-TEST_CASE("a wall mirror with tilted bevel strips in a closed box: the account closes within 0.1 % for an area "
-          "or a point light, with or without a gap behind it",
-          "[real_scenes]") {
+TEST_CASE(
+    "a wall mirror with tilted bevel strips in a closed box: the account closes within 0.1 % for an area "
+    "or a point light, with or without a gap behind it",
+    "[real_scenes]") {
     const bool areaLight = GENERATE(true, false);
     const double gap = GENERATE(0.019778, 0.0);
     const double height = GENERATE(2.9, 3.5);
@@ -74,10 +81,9 @@ TEST_CASE("a wall mirror with tilted bevel strips in a closed box: the account c
                                                      mirrorRoom(height, areaLight, gap)),
                                 quiet());
     auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
-    INFO((areaLight ? "24-gon lamp" : "point light") << ", gap " << gap << " m, ceiling " << height << " m: direct "
-                                                     << 100 * b.directError() << " %, secondary "
-                                                     << 100 * b.secondaryError() << " %, mirrors absorbed "
-                                                     << b.mirrorAbsorbed << " lm");
+    INFO((areaLight ? "24-gon lamp" : "point light")
+         << ", gap " << gap << " m, ceiling " << height << " m: direct " << 100 * b.directError() << " %, secondary "
+         << 100 * b.secondaryError() << " %, mirrors absorbed " << b.mirrorAbsorbed << " lm");
     CHECK(run.lighting.mirrorImages == 5);
     CHECK(b.mirrorAbsorbed > 0);
     CHECK(std::abs(b.directError()) < 1e-3);
@@ -117,14 +123,15 @@ TEST_CASE("mirror chains that can carry almost no light are cut by their etendue
         {"name": "ceiling", "position": [4, 2.9, -1], "normal": [0, -1, 0]}],
         "radiosity": {"max_edge": 0.5, "mirror_depth": 3, "mirror_min_share": )";
     auto runWith = [&](double share) {
-        return app::runPipeline(test::writeTempScene(fmt::format("mirror_share_{}", share),
-                                                     mirrorRoom(2.9, false, 0.019778, facing,
-                                                                sensors + fmt::format("{}}}", share))),
-                                quiet());
+        return app::runPipeline(
+            test::writeTempScene(fmt::format("mirror_share_{}", share),
+                                 mirrorRoom(2.9, false, 0.019778, facing, sensors + fmt::format("{}}}", share))),
+            quiet());
     };
     auto all = runWith(0), cut = runWith(1e-5);
     INFO("images: " << all.lighting.mirrorImages << " all, " << cut.lighting.mirrorImages << " with the cut");
-    CHECK(cut.lighting.mirrorImages >= 6);  // the five single mirrors, the facing one and its chains with the big mirror
+    CHECK(cut.lighting.mirrorImages >=
+          6);  // the five single mirrors, the facing one and its chains with the big mirror
     CHECK(cut.lighting.mirrorImages * 3 < all.lighting.mirrorImages * 2);  // 46 -> 22 when written
     REQUIRE(all.sensors.size() == cut.sensors.size());
     for (size_t k = 0; k < all.sensors.size(); ++k) {

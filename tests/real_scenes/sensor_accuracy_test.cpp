@@ -1,4 +1,4 @@
-// Issue 11, item 4: sensors right at any position. The gather on the paper's cube at
+// item 4: sensors right at any position. The gather on the paper's cube at
 // 19 200 triangles against the test's own Monte Carlo reference (cube_path_tracer.h):
 // 1 mm – 0.1 m from an edge or a corner within 0.3 % (default run), and hundreds of
 // random positions on all six walls with RMS ≤ 0.1 %, max ≤ 0.5 % (label `accuracy`,

@@ -1,4 +1,4 @@
-// Issue 11, item 4 (part): the gather never counts the sensor's own surface. At some exact
+// item 4 (part): the gather never counts the sensor's own surface. At some exact
 // positions on a plain wall it read +85…+95 % (the wall's own exitance): a point a hair in
 // front of its own patch saw it fill the hemisphere. The cube is symmetric, so a grid on
 // one wall must read the same at every point and its mirror images.
@@ -17,8 +17,9 @@
 
 using namespace rayrad;
 
-TEST_CASE("cube, 19 200 triangles: a 32 x 32 sensor grid on a wall is symmetric to 0.05 % (no sensor counts its own wall)",
-          "[real_scenes]") {
+TEST_CASE(
+    "cube, 19 200 triangles: a 32 x 32 sensor grid on a wall is symmetric to 0.05 % (no sensor counts its own wall)",
+    "[real_scenes]") {
     std::string json = R"({"materials": {"wall": {"reflectance": 0.6666666666666666}},
         "objects": [{"type": "box", "material": "wall", "min": [0, 0, 0], "max": [10, 10, 10], "facing": "inward"}],
         "lights": [{"type": "point", "position": [5, 5, 5], "intensity_cd": 50000}],
@@ -47,7 +48,7 @@ TEST_CASE("cube, 19 200 triangles: a 32 x 32 sensor grid on a wall is symmetric 
         if (deviation > worst) worst = deviation, at = ij;
     }
     INFO("largest deviation from the symmetric images " << 100 * worst << " % at (" << at.first << ", " << at.second
-                                                          << ")");
+                                                        << ")");
     CHECK(worst < 5e-4);
 }
 
@@ -82,7 +83,8 @@ TEST_CASE("sensors are located through Embree's spatial index exactly as by a sc
     };
     for (const auto& p : mesh.patches) {
         const Vec3 a = mesh.corner(p, 0), b = mesh.corner(p, 1), c = mesh.corner(p, 2);
-        for (const Vec3& x : {a, 0.5 * (a + b), p.centroid, 0.2 * a + 0.3 * b + 0.5 * c, a + 0.3 * tolerance * p.normal})
+        for (const Vec3& x :
+             {a, 0.5 * (a + b), p.centroid, 0.2 * a + 0.3 * b + 0.5 * c, a + 0.3 * tolerance * p.normal})
             check(x, p.normal);
         check(p.centroid + 1e-3 * p.normal, p.normal);  // off the surface: on none
     }

@@ -1,4 +1,4 @@
-// Textures (issue 15): a checker floor and a picture on a wall light the room as the same
+// Textures: a checker floor and a picture on a wall light the room as the same
 // room untextured with each surface at its texture's mean reflectance; the ray tracer shows
 // the texture (light and dark checks) without changing the light it reflects on average;
 // mesh files bring their texture coordinates and images, and a missing image is a warning.

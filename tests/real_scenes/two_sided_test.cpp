@@ -1,8 +1,8 @@
-// Issue 11, item 5: two-sided diffuse surfaces ("two_sided": true, optional
+// item 5: two-sided diffuse surfaces ("two_sided": true, optional
 // "back_reflectance"), in the radiosity and in the ray tracer.
 #include <app/pipeline.h>
-#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/solution/energy_balance.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"

@@ -1,4 +1,4 @@
-// Walkthrough paths (issue 16): frames start and end at the first and last keyframe, pass
+// Walkthrough paths: frames start and end at the first and last keyframe, pass
 // through every keyframe reached at its time, move at an even pace, and bad paths are named.
 #include <scene/camera_path.h>
 #include <scene/scene.h>

@@ -1,4 +1,4 @@
-// Photometric files (issue 14): IES LM-63 and EULUMDAT parsing, symmetry, integration.
+// Photometric files: IES LM-63 and EULUMDAT parsing, symmetry, integration.
 #include <core/input_error.h>
 #include <scene/photometry.h>
 

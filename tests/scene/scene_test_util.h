@@ -28,11 +28,13 @@ inline ParseErrors parseErrors(const std::string& json, const std::vector<scene:
 }
 
 /// A valid minimal scene: a closed box and a point light; `extra` is spliced in.
-inline std::string boxScene(const std::string& material = R"({"type": "diffuse", "reflectance": 0.5})",
-                            const std::string& light = R"({"type": "point", "position": [0.5, 0.5, 0.5], "intensity_cd": 100})") {
+inline std::string boxScene(
+    const std::string& material = R"({"type": "diffuse", "reflectance": 0.5})",
+    const std::string& light = R"({"type": "point", "position": [0.5, 0.5, 0.5], "intensity_cd": 100})") {
     return R"({"materials": {"grey": )" + material + R"(},
                "objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "facing": "inward", "material": "grey"}],
-               "lights": [)" + light + "]}";
+               "lights": [)" +
+           light + "]}";
 }
 
 /// A closed diffuse sphere of radius 1 (reflectance rho, seen from inside) with a point

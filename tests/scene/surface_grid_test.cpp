@@ -1,4 +1,4 @@
-// Grids on surfaces of the scene (issue 14): a material's faces, split into surfaces by
+// Grids on surfaces of the scene: a material's faces, split into surfaces by
 // plane and contact, each with its own grid; boxes and an imported mesh.
 #include <app/pipeline.h>
 #include <core/input_error.h>

@@ -1,4 +1,4 @@
-// Work planes (issue 14): horizontal grids over a room outline with a border and the
+// Work planes: horizontal grids over a room outline with a border and the
 // EN 12464-1 spacing.
 #include <scene/scene_parser.h>
 

@@ -1,9 +1,9 @@
-// Stiff and extreme cases (issue 5, items 1–4): near-white rooms, exact energy
+// Stiff and extreme cases: near-white rooms, exact energy
 // accounting, millimetres and kilometres, lights touching walls, broken geometry,
 // thousands of lights. Run with `ctest -L stability`; also part of the default run.
 #include <app/pipeline.h>
-#include <radiosity/solution/energy_balance.h>
 #include <radiosity/shooting/shooting_solver.h>
+#include <radiosity/solution/energy_balance.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
@@ -27,7 +27,8 @@ bool allFinite(const app::PipelineRun& run) {
 }
 
 double notAccounted(const app::PipelineRun& run) {
-    return radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux()).relativeError();
+    return radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux())
+        .relativeError();
 }
 
 /// A closed box room w × h × d (metres) of reflectance rho with a point light, scaled by s.
@@ -47,7 +48,6 @@ std::string boxRoom(double s, double rho, double intensity, const std::string& e
                        fmt::arg("w2", 2.6 * s), fmt::arg("e", 0.5 * s));
 }
 
-
 }  // namespace
 
 TEST_CASE("stiff closed sphere: rho 0.9 / 0.99 / 0.999 within 1 % at three points, energy to 0.1 %", "[stability]") {
@@ -62,8 +62,8 @@ TEST_CASE("stiff closed sphere: rho 0.9 / 0.99 / 0.999 within 1 % at three point
     CHECK(run.lighting.shooting.conserving);
     double expected = rho / (1 - rho) * 4 * kPi * 100 / run.mesh.totalArea();
     for (const auto& s : run.sensors) {
-        INFO("rho " << rho << " sensor " << s.sensor.name << " gathered " << luminance(s.value.indirect)
-                    << " expected " << expected << " shots " << run.lighting.solution.shots);
+        INFO("rho " << rho << " sensor " << s.sensor.name << " gathered " << luminance(s.value.indirect) << " expected "
+                    << expected << " shots " << run.lighting.solution.shots);
         CHECK(luminance(s.value.indirect) == Approx(expected).epsilon(0.01));
     }
     CHECK(std::abs(notAccounted(run)) < 1e-3);
@@ -78,8 +78,8 @@ TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot withi
         CHECK(std::abs(notAccounted(run)) < 1e-3);
     }
     SECTION("a coloured room with a block, three channels") {
-        std::string json = boxRoom(1, 0.6, 100,
-                                   R"(, {"type": "box", "material": "red", "min": [1, 0, 1], "max": [2, 1, 2]})");
+        std::string json =
+            boxRoom(1, 0.6, 100, R"(, {"type": "box", "material": "red", "min": [1, 0, 1], "max": [2, 1, 2]})");
         json.replace(json.find("\"m\": {"), 0, R"("red": {"reflectance": [0.7, 0.2, 0.1]}, )");
         auto run = app::runPipeline(test::writeTempScene("energy_room", json), quiet());
         REQUIRE_FALSE(run.lighting.singleChannel);
@@ -87,7 +87,8 @@ TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot withi
         // The block's shadow crosses 0.5 m floor patches (the direct pass samples those
         // more densely), and floor patches run under the block (their shots lose half
         // their light into it, and conservation puts it back).
-        auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+        auto b =
+            radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
         INFO("direct pass " << 100 * b.directError() << " %, secondary " << 100 * b.secondaryError() << " %");
         CHECK(std::abs(b.directError()) < 1e-3);
         CHECK(std::abs(b.secondaryError()) < 1e-3);
@@ -112,8 +113,8 @@ TEST_CASE("energy accounting with a mirror: what the mirror absorbs is booked", 
 TEST_CASE("the same room in millimetres and kilometres gives the same illuminance within 0.1 %", "[stability]") {
     auto values = [](double s) {
         // Intensity × s² keeps the illuminance unchanged.
-        auto run = app::runPipeline(test::writeTempScene(fmt::format("scaled_{}", s), boxRoom(s, 0.5, 100 * s * s)),
-                                    quiet());
+        auto run =
+            app::runPipeline(test::writeTempScene(fmt::format("scaled_{}", s), boxRoom(s, 0.5, 100 * s * s)), quiet());
         REQUIRE(allFinite(run));
         std::vector<double> out;
         for (const auto& r : run.sensors) out.push_back(luminance(r.value.direct + r.value.indirect));
@@ -133,7 +134,7 @@ TEST_CASE("a point light 1 mm from a wall: exact direct light at its foot, finit
     json.replace(json.find("[1.3, 2.1, 1.7]"), std::string("[1.3, 2.1, 1.7]").size(), "[0.001, 1.4, 2.6]");
     auto run = app::runPipeline(test::writeTempScene("light_at_wall", json), quiet());
     REQUIRE(allFinite(run));
-    const auto& wall = run.sensors[1];  // at (0, 1.4, 2.6), facing +x
+    const auto& wall = run.sensors[1];                                                  // at (0, 1.4, 2.6), facing +x
     CHECK(luminance(wall.value.direct) == Approx(10 / (0.001 * 0.001)).epsilon(1e-6));  // E = I / d²
     // The patch under the light gets almost half the flux, in a peak 1 mm wide: the
     // direct pass takes its mean from the solid angle, so nothing is lost.
@@ -148,10 +149,10 @@ TEST_CASE("touching, overlapping and broken geometry: no NaN, no crash, degenera
                           "f 1 3 2\nf 2 3 4\nf 1 3 2\nf 1 5 6\n";  // duplicate; zero-area (collinear)
     std::string extra = fmt::format(R"(, {{"type": "mesh", "material": "m", "file": "{}"}},
         {{"type": "quad", "material": "m", "vertices": [[0.5, 0, 0.5], [0.5, 0, 1.5], [1.5, 0, 1.5], [1.5, 0, 0.5]]}},
-        {{"type": "box", "material": "m", "min": [3, 0, 4], "max": [4, 1, 5]}})", obj);
+        {{"type": "box", "material": "m", "min": [3, 0, 4], "max": [4, 1, 5]}})",
+                                    obj);
     std::string json = boxRoom(1, 0.5, 100, extra);
-    json.replace(json.find("\"sensors\": ["),
-                 std::string("\"sensors\": [").size(),
+    json.replace(json.find("\"sensors\": ["), std::string("\"sensors\": [").size(),
                  R"("sensors": [{"name": "grazing", "position": [2, 0, 2], "normal": [0.9999, 0.0141, 0]},
                                 {"name": "edge", "position": [0, 0, 2], "normal": [0.7071, 0.7071, 0]},)");
     auto run = app::runPipeline(test::writeTempScene("broken_geometry", json), quiet());
@@ -167,8 +168,7 @@ TEST_CASE("10 000 point lights, and lights 10^6 apart in one scene", "[stability
             lights += fmt::format(R"(, {{"type": "point", "position": [{}, {}, {}], "intensity_cd": 0.01}})",
                                   0.2 + 3.6 * ((k * 37) % 100) / 100.0, 1.0 + 1.0 * (k % 7) / 7.0,
                                   0.2 + 4.6 * ((k * 13) % 97) / 97.0);
-        auto run = app::runPipeline(test::writeTempScene("many_lights", boxRoom(1, 0.5, 1, "", lights)),
-                                    quiet());
+        auto run = app::runPipeline(test::writeTempScene("many_lights", boxRoom(1, 0.5, 1, "", lights)), quiet());
         REQUIRE(run.scene.lights.size() == 10001);
         REQUIRE(allFinite(run));
         CHECK(std::abs(notAccounted(run)) < 1e-3);

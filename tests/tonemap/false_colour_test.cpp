@@ -1,4 +1,4 @@
-// False colour (issue 14): scale levels, palette, and a picture with a legend in a real font.
+// False colour: scale levels, palette, and a picture with a legend in a real font.
 #include <tonemap/false_colour.h>
 
 #include <catch2/catch.hpp>

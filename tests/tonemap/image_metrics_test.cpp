@@ -1,4 +1,4 @@
-// rayrad compare's figures (issue 15): the exposure and per-channel factors recovered from
+// rayrad compare's figures: the exposure and per-channel factors recovered from
 // a fake photograph, relative errors, log RMS and SSIM.
 #include <core/colour_temperature.h>
 #include <core/random.h>

@@ -1,4 +1,4 @@
-// Tone reproduction and white balance (issue 15): the operators against their published
+// Tone reproduction and white balance: the operators against their published
 // equations, worked by hand; luminance and chroma kept apart; Bradford white balance.
 #include <app/pipeline.h>
 #include <core/colour_temperature.h>

@@ -36,7 +36,8 @@ uint32_t build(const Clustering& clustering, uint32_t begin, uint32_t end, Clust
             const int normalAxis = longestAxis(high - low);
             if (high[normalAxis] - low[normalAxis] > kNormalSpread) {
                 const double cut = 0.5 * (low[normalAxis] + high[normalAxis]);
-                const auto split = std::partition(first, last, [&](uint32_t c) { return clustering.clusters[c].normal[normalAxis] < cut; });
+                const auto split = std::partition(
+                    first, last, [&](uint32_t c) { return clustering.clusters[c].normal[normalAxis] < cut; });
                 return static_cast<uint32_t>(split - tree.order.begin());
             }
             // Then by position: at the median along the centroids' longest extent.
@@ -56,10 +57,14 @@ uint32_t build(const Clustering& clustering, uint32_t begin, uint32_t end, Clust
 }
 
 /// The luminance vector Σ Y(L_j) A_j n_j of a far source (cd), from its channels' fluxes.
-Vec3 fluxY(const FarSource& f) { return luminanceFlux(Vec3(f.flux[0]), Vec3(f.flux[1]), Vec3(f.flux[2])); }
+Vec3 fluxY(const FarSource& f) {
+    return luminanceFlux(Vec3(f.flux[0]), Vec3(f.flux[1]), Vec3(f.flux[2]));
+}
 
 /// Angle (radians) between two unit directions.
-double angleBetween(const Vec3& a, const Vec3& b) { return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)); }
+double angleBetween(const Vec3& a, const Vec3& b) {
+    return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
+}
 
 /// The group of two halves, from their far sources alone (no pass over the patches): the
 /// moments moved to the joint centre of light by the parallel-axis rule,

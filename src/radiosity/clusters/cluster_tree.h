@@ -23,7 +23,7 @@ struct ClusterGroup {
     /// Where its visibility samples go: patch indices (far.rayTo[i] is i for a group, a
     /// sample's own index).
     std::array<uint32_t, 4> rayPatch{};
-    double weight = 0;             ///< Σ |Y(L_j)| A_j of its patches (cd), the power its samples split
+    double weight = 0;  ///< Σ |Y(L_j)| A_j of its patches (cd), the power its samples split
     /// The widest angle (radians) between a member patch's normal and the group's light
     /// direction (far.normal), bounded from its halves': near 0 for a part of one wall,
     /// 90° or more where the group turns a corner. A group of
@@ -37,10 +37,11 @@ struct ClusterGroup {
 };
 
 /// Clusters split by normal where their normals spread by more than about 20°, then at the
-/// median of their centroids along the longest extent, down to one cluster per leaf. groups[0] is the root; children follow their parent.
+/// median of their centroids along the longest extent, down to one cluster per leaf. groups[0] is the root; children
+/// follow their parent.
 struct ClusterTree {
-    std::vector<uint32_t> order;      ///< cluster indices, leaf by leaf
-    std::vector<uint32_t> position;   ///< per cluster, its place in `order`
+    std::vector<uint32_t> order;     ///< cluster indices, leaf by leaf
+    std::vector<uint32_t> position;  ///< per cluster, its place in `order`
     std::vector<ClusterGroup> groups;
 };
 

@@ -31,8 +31,8 @@ ClusterSamples powerSamples(const Cluster& c, const std::vector<double>& power) 
 }
 
 int Clustering::voxelDistance(const Cluster& a, const Cluster& b) const {
-    return std::max({std::abs(a.voxel[0] - b.voxel[0]), std::abs(a.voxel[1] - b.voxel[1]),
-                     std::abs(a.voxel[2] - b.voxel[2])});
+    return std::max(
+        {std::abs(a.voxel[0] - b.voxel[0]), std::abs(a.voxel[1] - b.voxel[1]), std::abs(a.voxel[2] - b.voxel[2])});
 }
 
 VoxelRegions voxelRegions(const Clustering& clustering) {
@@ -52,8 +52,8 @@ VoxelRegions voxelRegions(const Clustering& clustering) {
 }
 
 size_t Clustering::multiPatchClusters() const {
-    return static_cast<size_t>(std::count_if(clusters.begin(), clusters.end(),
-                                             [](const Cluster& c) { return c.patches.size() > 1; }));
+    return static_cast<size_t>(
+        std::count_if(clusters.begin(), clusters.end(), [](const Cluster& c) { return c.patches.size() > 1; }));
 }
 
 std::string Clustering::statistics() const {
@@ -63,11 +63,13 @@ std::string Clustering::statistics() const {
         if (c.patches.size() > 1) inMulti += c.patches.size();
         largest = std::max(largest, c.patches.size());
     }
-    const std::string shrunk = derivedVoxelSize > voxelSize
-                                   ? fmt::format(" (shrunk from {:.4g} m: clusters.max_voxel_crowding)", derivedVoxelSize)
-                                   : "";
+    const std::string shrunk =
+        derivedVoxelSize > voxelSize
+            ? fmt::format(" (shrunk from {:.4g} m: clusters.max_voxel_crowding)", derivedVoxelSize)
+            : "";
     return fmt::format(
-        "clusters: {} of 2+ patches (mean {:.1f}, largest {}), {} patches in no cluster; voxel {:.4g} m{}, grid {}x{}x{}",
+        "clusters: {} of 2+ patches (mean {:.1f}, largest {}), {} patches in no cluster; voxel {:.4g} m{}, grid "
+        "{}x{}x{}",
         multi, multi ? double(inMulti) / multi : 0.0, largest, clusters.size() - multi, voxelSize, shrunk, dims[0],
         dims[1], dims[2]);
 }
@@ -78,8 +80,7 @@ namespace {
 std::array<int, 3> gridDims(const scene::Scene& scene, double edge) {
     const Vec3 extent = scene.boundsMax - scene.boundsMin;
     std::array<int, 3> dims;
-    for (int a = 0; a < 3; ++a)
-        dims[a] = static_cast<int>(std::clamp(std::ceil(extent[a] / edge - 1e-9), 1.0, 1e9));
+    for (int a = 0; a < 3; ++a) dims[a] = static_cast<int>(std::clamp(std::ceil(extent[a] / edge - 1e-9), 1.0, 1e9));
     return dims;
 }
 
@@ -128,8 +129,8 @@ double clusterVoxelSize(const scene::Scene& scene, const PatchMesh& mesh, const 
     double edge = derivedVoxelSize(scene, mesh, o);
     // Shrunk while crowded (see ClusterOptions::maxVoxelCrowding), at most 16 × in edge.
     constexpr int kMaxShrinks = 8;
-    for (int k = 0; k < kMaxShrinks && o.maxVoxelCrowding > 0 && edge > 0 &&
-                    voxelCrowding(mesh, scene, edge) > o.maxVoxelCrowding;
+    for (int k = 0;
+         k < kMaxShrinks && o.maxVoxelCrowding > 0 && edge > 0 && voxelCrowding(mesh, scene, edge) > o.maxVoxelCrowding;
          ++k)
         edge /= std::sqrt(2.0);
     return edge;
@@ -219,8 +220,8 @@ Clustering buildClusters(const scene::Scene& scene, const PatchMesh& mesh, const
     // cluster→cluster light (blotches of the cluster's size on the hall's ceiling).
     // Covered and open patches are never one cluster.
     const std::vector<char> covered = !mesh.covered.empty() ? mesh.covered
-                                      : vis ? coveredPatches(mesh, *vis, kCoverLift * scene.diagonal())
-                                            : std::vector<char>(mesh.patches.size(), 0);
+                                      : vis                 ? coveredPatches(mesh, *vis, kCoverLift * scene.diagonal())
+                                                            : std::vector<char>(mesh.patches.size(), 0);
     std::map<std::array<int, 3>, std::vector<uint32_t>> voxelClusters;  // voxel → cluster ids
     for (uint32_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];

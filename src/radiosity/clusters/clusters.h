@@ -18,29 +18,29 @@ using ClusterSamples = std::array<uint32_t, 4>;
 /// A group of patches that shoots and receives as one far away (the upper of the two
 /// hierarchy levels). Geometry only; the solver keeps the light.
 struct Cluster {
-    std::vector<uint32_t> patches;       ///< indices into PatchMesh::patches
-    std::array<int, 3> voxel{};          ///< the voxel holding every member's centroid
-    double area = 0;                     ///< A_C = Σ A_i, m²
-    Vec3 centroid{0.0};                  ///< area-weighted
-    Vec3 normal{0.0};                    ///< area-weighted mean normal, unit
+    std::vector<uint32_t> patches;  ///< indices into PatchMesh::patches
+    std::array<int, 3> voxel{};     ///< the voxel holding every member's centroid
+    double area = 0;                ///< A_C = Σ A_i, m²
+    Vec3 centroid{0.0};             ///< area-weighted
+    Vec3 normal{0.0};               ///< area-weighted mean normal, unit
     /// |Σ A_i n_i| in m²: the projected area toward directions all members face
     /// (≤ area; equal for a planar cluster). Used by the point approximation.
     double projectedArea = 0;
-    double diameter = 0;                 ///< twice the largest centroid-to-vertex distance, m
-    Rgb meanReflectance{0.0};            ///< area-weighted ρ
-    ClusterSamples samples{};            ///< spread over the members (receiving; see powerSamples)
-    bool planar = false;                 ///< all members in one plane
+    double diameter = 0;       ///< twice the largest centroid-to-vertex distance, m
+    Rgb meanReflectance{0.0};  ///< area-weighted ρ
+    ClusterSamples samples{};  ///< spread over the members (receiving; see powerSamples)
+    bool planar = false;       ///< all members in one plane
 };
 
 /// The voxel grid and its clusters. Every patch belongs to exactly one cluster; a
 /// cluster of one patch is a "patch in no cluster" in the paper's words.
 struct Clustering {
     Vec3 origin{0.0};
-    double voxelSize = 0;                ///< m
-    double derivedVoxelSize = 0;         ///< m, before the crowding bound shrank it (0: given as voxel_size)
+    double voxelSize = 0;         ///< m
+    double derivedVoxelSize = 0;  ///< m, before the crowding bound shrank it (0: given as voxel_size)
     std::array<int, 3> dims{};
     std::vector<Cluster> clusters;
-    std::vector<uint32_t> clusterOf;     ///< patch → cluster
+    std::vector<uint32_t> clusterOf;  ///< patch → cluster
     bool enabled = false;
 
     /// Chebyshev distance between two clusters' voxels: max(|x−i|, |y−j|, |z−k|).

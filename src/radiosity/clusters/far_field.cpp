@@ -107,8 +107,8 @@ Rgb farField(const FarSource& f, const Vec3& x, const Vec3& n, const MirrorImage
     // −tr(J P), J = ∂[(n·u) u / s²]/∂u = (u nᵀ + a I)/s² − 4 a u uᵀ/s³ (P mirrored as M is).
     const glm::dmat3 turning(f.turning);
     const glm::dmat3 P = image ? R * turning * glm::transpose(R) : turning;
-    const double trJP = (glm::dot(n, P * u) + a * (P[0][0] + P[1][1] + P[2][2])) / (s * s) -
-                        4 * a * glm::dot(u, P * u) / (s * s * s);
+    const double trJP =
+        (glm::dot(n, P * u) + a * (P[0][0] + P[1][1] + P[2][2])) / (s * s) - 4 * a * glm::dot(u, P * u) / (s * s * s);
     const Rgb weight = image ? image->weight : Rgb(1.0);
     Rgb e(0.0);
     for (int ch = 0; ch < 3; ++ch) {

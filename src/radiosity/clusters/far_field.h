@@ -21,25 +21,25 @@ namespace rayrad::radiosity {
 /// tree node, a third of the patches: 144 bytes each instead of 248); the expansion's own
 /// error at three diameters is far above float rounding.
 struct FarSource {
-    Vec3 at{0.0};                      ///< luminance-weighted centroid, m
-    double reach = 0;                  ///< twice the largest distance from `at` to a member corner, m
-    std::array<glm::vec3, 3> flux{};   ///< per channel Φ = Σ L_j A_j n_j (cd)
-    glm::vec3 normal{0.0f};            ///< Φ's direction (luminance), unit
-    glm::vec3 share{0.0f};             ///< per channel Σ L_j A_j over the luminance sum W
-    glm::mat3 moment{0.0f};            ///< M = Σ Y(L_j) ∫_{A_j} (y − at)(y − at)ᵀ dA (cd m²)
+    Vec3 at{0.0};                     ///< luminance-weighted centroid, m
+    double reach = 0;                 ///< twice the largest distance from `at` to a member corner, m
+    std::array<glm::vec3, 3> flux{};  ///< per channel Φ = Σ L_j A_j n_j (cd)
+    glm::vec3 normal{0.0f};           ///< Φ's direction (luminance), unit
+    glm::vec3 share{0.0f};            ///< per channel Σ L_j A_j over the luminance sum W
+    glm::mat3 moment{0.0f};           ///< M = Σ Y(L_j) ∫_{A_j} (y − at)(y − at)ᵀ dA (cd m²)
     /// P = Σ Y(L_j) A_j (c_j − at) n_jᵀ (cd m): how the normals turn across a curved node
     /// (0 for a flat one). Its term −tr(J P), J the Jacobian of (n·u) u / |u|⁴, is of the
     /// same order as the moment's; without it a curved node lost light (a closed sphere's
     /// solve at 20° normal tolerance: 0.6 % of the indirect light).
     glm::mat3 turning{0.0f};
-    uint32_t brightest = 0;            ///< member position k with the most power: the shooting's ray goes there
+    uint32_t brightest = 0;  ///< member position k with the most power: the shooting's ray goes there
     /// Where the node's visibility is sampled (visibility_share.h; only with
     /// FarRayTargets::PowerSamples): member positions k stratified by power, sample i
     /// where the running sum of the members' |Y(L_j)| A_j in tree order (which keeps them
     /// spread in space) reaches (i + ½)/4 of it.
     std::array<uint32_t, 4> rayTo{};
-    float sign = 1;                    ///< +1, or −1 for a node of negative light
-    bool mixed = false;                ///< members of both signs: no far field
+    float sign = 1;      ///< +1, or −1 for a node of negative light
+    bool mixed = false;  ///< members of both signs: no far field
 };
 
 /// Φ of the luminance, Σ Y(L_j) A_j n_j (cd): each component Y of the three channels'

@@ -51,7 +51,8 @@ MemberTree memberTree(const PatchMesh& mesh, const Cluster& cluster, size_t leaf
     MemberTree tree;
     tree.order.resize(cluster.patches.size());
     for (uint32_t k = 0; k < tree.order.size(); ++k) tree.order[k] = k;
-    if (!tree.order.empty()) build(mesh, cluster, 0, static_cast<uint32_t>(tree.order.size()), std::max<size_t>(1, leafSize), tree);
+    if (!tree.order.empty())
+        build(mesh, cluster, 0, static_cast<uint32_t>(tree.order.size()), std::max<size_t>(1, leafSize), tree);
     tree.nodes.shrink_to_fit();  // grown by appending: up to twice the nodes' memory otherwise
     return tree;
 }

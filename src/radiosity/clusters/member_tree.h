@@ -13,10 +13,10 @@ namespace rayrad::radiosity {
 
 /// A node of a member tree: the members order[begin, end) of its tree.
 struct MemberNode {
-    uint32_t begin = 0, end = 0;    ///< range in MemberTree::order
-    uint32_t left = 0, right = 0;   ///< child nodes; 0 for a leaf (the root is never a child)
-    Vec3 centroid{0.0};             ///< area-weighted, m
-    double diameter = 0;            ///< twice the largest centroid-to-corner distance, m
+    uint32_t begin = 0, end = 0;   ///< range in MemberTree::order
+    uint32_t left = 0, right = 0;  ///< child nodes; 0 for a leaf (the root is never a child)
+    Vec3 centroid{0.0};            ///< area-weighted, m
+    double diameter = 0;           ///< twice the largest centroid-to-corner distance, m
     bool leaf() const { return left == 0; }
     uint32_t size() const { return end - begin; }
 };
@@ -25,7 +25,7 @@ struct MemberNode {
 /// longest extent until a part has at most the leaf size. nodes[0] is the root (the
 /// whole cluster); children follow their parent, left subtree first.
 struct MemberTree {
-    std::vector<uint32_t> order;    ///< positions k in Cluster::patches, leaf by leaf
+    std::vector<uint32_t> order;  ///< positions k in Cluster::patches, leaf by leaf
     std::vector<MemberNode> nodes;
 };
 

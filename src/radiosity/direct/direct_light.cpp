@@ -41,7 +41,8 @@ double areaLightFormFactor(const AreaLight& light, const Vec3& x, const Vec3& n)
     const Vec3 d = light.centre - x;
     const double far = kFarFormFactorDiameters * 2 * light.radius;  // m
     bool farAndAbove = glm::dot(d, d) > far * far;
-    for (size_t k = 0; k < light.vertices.size() && farAndAbove; ++k) farAndAbove = glm::dot(n, light.vertices[k] - x) > 0;
+    for (size_t k = 0; k < light.vertices.size() && farAndAbove; ++k)
+        farAndAbove = glm::dot(n, light.vertices[k] - x) > 0;
     if (farAndAbove) return formFactorSecondOrder(x, n, light.moments, light.normal, light.area);
     return formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
 }
@@ -291,8 +292,8 @@ Rgb DirectLight::fromImages(const Vec3& x, const Vec3& n, const Visibility& vis,
     return e;
 }
 
-Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
-                               int samples, Random* rng, Rgb* open, double* visible) const {
+Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
+                               Random* rng, Rgb* open, double* visible) const {
     const double f = areaLightFormFactor(light, x, n);
     if (open) *open = light.luminance * (kPi * std::max(0.0, f));
     if (visible) *visible = 0;

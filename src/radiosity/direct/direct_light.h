@@ -5,8 +5,8 @@
 #include <core/random.h>
 #include <core/visibility.h>
 #include <radiosity/form_factors/form_factor.h>
-#include <radiosity/mirrors/mirror_images.h>
 #include <radiosity/mesh/patch_mesh.h>
+#include <radiosity/mirrors/mirror_images.h>
 #include <scene/scene.h>
 
 #include <array>
@@ -19,13 +19,13 @@ namespace rayrad::radiosity {
 struct AreaLight {
     std::vector<Vec3> vertices;
     Vec3 normal{0.0};
-    double area = 0;             ///< m²
-    Rgb luminance{0.0};          ///< cd/m² per channel
+    double area = 0;                             ///< m²
+    Rgb luminance{0.0};                          ///< cd/m² per channel
     std::vector<std::array<Vec3, 3>> triangles;  ///< for sampling
     std::vector<double> triangleAreas;
-    Vec3 centre{0.0};            ///< mean of the vertices
-    double radius = 0;           ///< largest vertex distance from the centre, m
-    PolygonMoments moments;      ///< area centroid and second moment, for far form factors
+    Vec3 centre{0.0};        ///< mean of the vertices
+    double radius = 0;       ///< largest vertex distance from the centre, m
+    PolygonMoments moments;  ///< area centroid and second moment, for far form factors
 };
 
 /// An area light from its outline (CCW seen from its emitting front).
@@ -59,7 +59,7 @@ struct PixelLightMemo {
         uint32_t light;
         double scale;
     };
-    int64_t patch = -1;  ///< the patch of the hit that filled it; −1: empty (a new pixel)
+    int64_t patch = -1;              ///< the patch of the hit that filled it; −1: empty (a new pixel)
     std::vector<uint32_t> retested;  ///< lights tested at every sample: points first, then area lights
     std::vector<Far> far;
     Rgb untested{0.0};  ///< lx: the untested lights' estimate

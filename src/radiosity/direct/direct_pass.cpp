@@ -1,10 +1,10 @@
 #include <radiosity/direct/direct_pass.h>
 
-#include <radiosity/form_factors/form_factor.h>
-#include <radiosity/solution/light_value.h>
-#include <radiosity/mesh/mesher.h>
 #include <radiosity/direct/sealed_solids.h>
 #include <radiosity/direct/shared_corners.h>
+#include <radiosity/form_factors/form_factor.h>
+#include <radiosity/mesh/mesher.h>
+#include <radiosity/solution/light_value.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -123,7 +123,9 @@ double intensityOverSolidAngle(const DirectLight& lights, size_t s, const Vec3& 
     auto coarse = [&](const std::array<Vec3, 3>& u) {
         const Vec3 d = (u[0] + u[1] + u[2]) / 3.0 - source;
         const double r = glm::length(d);
-        return r > 0 ? triangleSolidAngle(source, u[0], u[1], u[2]) * luminance(lights.pointSourceIntensityAlong(s, d / r)) : 0.0;
+        return r > 0 ? triangleSolidAngle(source, u[0], u[1], u[2]) *
+                           luminance(lights.pointSourceIntensityAlong(s, d / r))
+                     : 0.0;
     };
     const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
     const std::array<Vec3, 3> child[4] = {{t[0], m01, m20}, {m01, t[1], m12}, {m20, m12, t[2]}, {m01, m12, m20}};
@@ -194,7 +196,8 @@ Rgb pointSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
     double exactKernel = 0;  // the mean over the sources of (1/A) ∫ I dω over the patch
     for (const Vec3& source : sources)
         exactKernel += (isotropic ? triangleSolidAngle(source, t[0], t[1], t[2])
-                                  : intensityOverSolidAngle(lights, s, source, t, 0)) / p.area;
+                                  : intensityOverSolidAngle(lights, s, source, t, 0)) /
+                       p.area;
     exactKernel /= static_cast<double>(sources.size());
     return ruleKernel > 0 ? value * (exactKernel / ruleKernel) : fourPoint;
 }
@@ -217,8 +220,10 @@ double integrateUnshadowed(const DirectLight& lights, size_t s, const std::array
     const std::array<Vec3, 3> child[4] = {{t[0], m01, m20}, {m01, t[1], m12}, {m20, m12, t[2]}, {m01, m12, m20}};
     const double mid[3] = {F(m01), F(m12), F(m20)};
     const double corner[3] = {F(t[0]), F(t[1]), F(t[2])};
-    const double at[4][3] = {{corner[0], mid[0], mid[2]}, {mid[0], corner[1], mid[1]},
-                             {mid[2], mid[1], corner[2]}, {mid[0], mid[1], mid[2]}};
+    const double at[4][3] = {{corner[0], mid[0], mid[2]},
+                             {mid[0], corner[1], mid[1]},
+                             {mid[2], mid[1], corner[2]},
+                             {mid[0], mid[1], mid[2]}};
     double childRule[4], fine = 0;
     for (int k = 0; k < 4; ++k) {
         childRule[k] = fourPointMean(F((child[k][0] + child[k][1] + child[k][2]) / 3.0), at[k]);
@@ -250,7 +255,8 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
     const double rule = fourPointMean(unshadowed[3], unshadowed);
     const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
     const double exact = integrateUnshadowed(lights, s, t, normal, rule, kAreaRelTolerance * rule + kAreaAbsTolerance,
-                                             0) / p.area;  // mean of Y(π L F) over the patch, lx
+                                             0) /
+                         p.area;  // mean of Y(π L F) over the patch, lx
     if (exact <= 0) return Rgb(0.0);
 
     // Visible fraction: of the four points when each sees all or nothing alike, else sampled.
@@ -325,7 +331,8 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         if (corners && corners->shares(v)) {
             at[k] = &corners->at(mesh, v, glm::dot(normal, p.normal) < 0, normal, lights, vis, areaSamples);
         } else {
-            evaluateAt(own[k], mesh.corner(p, k) + 1e-4 * (p.centroid - mesh.corner(p, k)), normal, lights, vis, areaSamples);
+            evaluateAt(own[k], mesh.corner(p, k) + 1e-4 * (p.centroid - mesh.corner(p, k)), normal, lights, vis,
+                       areaSamples);
             at[k] = &own[k];
         }
     }
@@ -358,14 +365,17 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
             } else {
                 const bool partial = cover == ApertureCover::Partial;
                 if (fourPoint == Rgb(0.0) && !partial) continue;
-                sourceMean = pointSourceMean(mesh, p, normal, lights, s, vis, points, values, fourPoint, refined, partial);
+                sourceMean =
+                    pointSourceMean(mesh, p, normal, lights, s, vis, points, values, fourPoint, refined, partial);
             }
-        } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, refined)) {
+        } else if (auto near =
+                       nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, refined)) {
             sourceMean = *near;
         } else if (!sameVisibleFraction(values, opens)) {
             const double ofStrongest = strongest > 0 ? luminance(fourPointMean(opens[3], opens)) / strongest : 1.0;
-            const auto count = static_cast<size_t>(std::clamp(
-                std::lround(kShadowSamples * ofStrongest), static_cast<long>(kMinAreaShadowSamples), static_cast<long>(kShadowSamples)));
+            const auto count = static_cast<size_t>(std::clamp(std::lround(kShadowSamples * ofStrongest),
+                                                              static_cast<long>(kMinAreaShadowSamples),
+                                                              static_cast<long>(kShadowSamples)));
             sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined, count);
         }
         out.mean += sourceMean - fourPoint;
@@ -388,28 +398,32 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     const std::vector<char> sealed = sealedGroups(scene);  // their backs face a solid's dark inside
     std::atomic<size_t> done{0};
     const size_t n = mesh.patches.size();
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kChunkPatches), [&](const tbb::blocked_range<size_t>& chunk) {
-        thread_local CornerValues corners;
-        corners.start(shared);
-        for (size_t i = chunk.begin(); i != chunk.end(); ++i) {
-            const Patch& p = mesh.patches[i];
-            const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined, &corners);
-            for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = RgbF(front.corner[k]);
-            solution.directMean[i] = front.mean;
-            mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
-            // The back of a one-sided surface is the inside of a solid: light that still
-            // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
-            // booked. A two-sided surface's back is a patch of its own, and a back covered by
-            // another surface's front (back-to-back quads) receives nothing: that surface does;
-            // nor does the inside of a sealed solid (sealed_solids.h).
-            if (!scene.materials[p.material].twoSided && !sealed[p.group] && !vis.backCovered(p.centroid, p.normal)) {
-                const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, &corners);
-                backReceived[i] = luminance(back.mean) * p.area;
-                mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, n, kChunkPatches),
+        [&](const tbb::blocked_range<size_t>& chunk) {
+            thread_local CornerValues corners;
+            corners.start(shared);
+            for (size_t i = chunk.begin(); i != chunk.end(); ++i) {
+                const Patch& p = mesh.patches[i];
+                const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined, &corners);
+                for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = RgbF(front.corner[k]);
+                solution.directMean[i] = front.mean;
+                mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
+                // The back of a one-sided surface is the inside of a solid: light that still
+                // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
+                // booked. A two-sided surface's back is a patch of its own, and a back covered by
+                // another surface's front (back-to-back quads) receives nothing: that surface does;
+                // nor does the inside of a sealed solid (sealed_solids.h).
+                if (!scene.materials[p.material].twoSided && !sealed[p.group] &&
+                    !vis.backCovered(p.centroid, p.normal)) {
+                    const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, &corners);
+                    backReceived[i] = luminance(back.mean) * p.area;
+                    mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
+                }
             }
-        }
-        if (onProgress) onProgress(static_cast<double>(done += chunk.size()) / n);
-    }, tbb::simple_partitioner());
+            if (onProgress) onProgress(static_cast<double>(done += chunk.size()) / n);
+        },
+        tbb::simple_partitioner());
     // Mirrors have no patches (their front passes light on by the image method), but
     // their backs absorb what reaches them, e.g. through the gap between a mirror and
     // the wall it hangs on.
@@ -418,7 +432,8 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     std::vector<double> mirrorBackLoss(mirrorBacks.patches.size(), 0.0);      // lm, per triangle
     tbb::parallel_for(size_t(0), mirrorBacks.patches.size(), [&](size_t i) {
         const Patch& p = mirrorBacks.patches[i];
-        const SideLight back = sideLight(mirrorBacks, p, p.normal, lights, vis, areaSamples, refined, nullptr);  // few: not shared
+        const SideLight back =
+            sideLight(mirrorBacks, p, p.normal, lights, vis, areaSamples, refined, nullptr);  // few: not shared
         mirrorBackReceived[i] = luminance(back.mean) * p.area;
         mirrorBackLoss[i] = luminance(back.mirrorLoss) * p.area;
     });

@@ -23,7 +23,6 @@ namespace rayrad::radiosity {
 /// (solution.backAbsorbedDirect). Deterministic; parallel. `onProgress` gets the
 /// fraction of patches done, from any thread (the caller serialises it).
 void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
-                   int areaSamples, RadiositySolution& solution,
-                   const std::function<void(double)>& onProgress = {});
+                   int areaSamples, RadiositySolution& solution, const std::function<void(double)>& onProgress = {});
 
 }  // namespace rayrad::radiosity

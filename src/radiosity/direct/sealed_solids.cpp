@@ -66,14 +66,15 @@ std::vector<char> sealedGroups(const scene::Scene& scene) {
     }
     // The polygons on one edge are joined; a component is closed when each of its edges is
     // used exactly once each way.
-    std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return std::tie(x.low, x.high) < std::tie(y.low, y.high);
-    });
+    std::sort(halfEdges.begin(), halfEdges.end(),
+              [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.low, x.high) < std::tie(y.low, y.high); });
     Components components(polygons.size());
     std::vector<std::pair<size_t, bool>> edgeClosed;  // per edge: one polygon on it, and whether it closes
     for (size_t i = 0; i < halfEdges.size();) {
         size_t end = i, forward = 0;
-        for (; end < halfEdges.size() && halfEdges[end].low == halfEdges[i].low && halfEdges[end].high == halfEdges[i].high; ++end) {
+        for (; end < halfEdges.size() && halfEdges[end].low == halfEdges[i].low &&
+               halfEdges[end].high == halfEdges[i].high;
+             ++end) {
             forward += halfEdges[end].forward;
             components.join(halfEdges[end].polygon, halfEdges[i].polygon);
         }
@@ -95,12 +96,14 @@ std::vector<char> sealedGroups(const scene::Scene& scene) {
         sources.insert(sources.end(), l.openingPoints.begin(), l.openingPoints.end());
     }
     for (const scene::SurfaceGroup& group : scene.groups)
-        if (scene.materials[group.material].isEmissive()) sources.insert(sources.end(), group.positions.begin(), group.positions.end());
+        if (scene.materials[group.material].isEmissive())
+            sources.insert(sources.end(), group.positions.begin(), group.positions.end());
     const double margin = 1e-6 * scene.diagonal();
     for (size_t root = 0; root < polygons.size(); ++root) {
         if (!closed[root] || components.find(root) != root) continue;
         for (const Vec3& s : sources)
-            if (glm::all(glm::greaterThanEqual(s, lo[root] - margin)) && glm::all(glm::lessThanEqual(s, hi[root] + margin))) {
+            if (glm::all(glm::greaterThanEqual(s, lo[root] - margin)) &&
+                glm::all(glm::lessThanEqual(s, hi[root] + margin))) {
                 closed[root] = 0;
                 break;
             }

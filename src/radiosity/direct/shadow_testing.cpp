@@ -34,7 +34,8 @@ double unshadowedAreaFactor(const AreaLight& light, const Vec3& x, const Vec3& n
     const double far = kRankPointDiameters * 2 * light.radius;
     exact = glm::dot(d, d) <= far * far;
     if (!exact) return pointAreaFactor(light, x, n);
-    const double f = formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
+    const double f =
+        formFactorToPolygon(x, n, light.vertices.data(), static_cast<int>(light.vertices.size()), light.normal);
     return kPi * std::max(0.0, f);  // π F
 }
 }  // namespace
@@ -65,7 +66,8 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
     };
     for (size_t k = 0; k < points; ++k) {
         const double y = luminance(unshadowedFromPointLight(m_pointLights[k], x, n));
-        if (y > 0) candidates.push_back({y, y / luminance(colourOf(k)), static_cast<uint32_t>(k), true}), remaining += y;
+        if (y > 0)
+            candidates.push_back({y, y / luminance(colourOf(k)), static_cast<uint32_t>(k), true}), remaining += y;
     }
     for (size_t k = 0; k < m_areaLights.size(); ++k) {
         bool exact = false;
@@ -101,7 +103,8 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
             Rgb open(0.0);
             v = fromAreaLight(m_areaLights[c.light - points], x, n, vis, samples, rng, &open, &visible);
             // c.factor is its point approximation A cosθ_x cosθ_y / r² = π F_point (> 0: a candidate).
-            if (pixel) pixel->far.push_back({c.light, visible * luminance(open) / (luminance(colourOf(c.light)) * c.factor)});
+            if (pixel)
+                pixel->far.push_back({c.light, visible * luminance(open) / (luminance(colourOf(c.light)) * c.factor)});
         }
         if (pixel && (c.light < points || c.exact)) pixel->retested.push_back(c.light);
         e += v;

@@ -14,8 +14,10 @@ std::vector<char> sharedCorners(const PatchMesh& mesh) {
     std::vector<char> flat(n, 1);
     for (const Patch& p : mesh.patches)
         for (const uint32_t v : p.v) {
-            if (firstNormal[v] == Vec3(0.0)) firstNormal[v] = p.normal;
-            else if (1 - glm::dot(firstNormal[v], p.normal) > kSamePlane) flat[v] = 0;
+            if (firstNormal[v] == Vec3(0.0))
+                firstNormal[v] = p.normal;
+            else if (1 - glm::dot(firstNormal[v], p.normal) > kSamePlane)
+                flat[v] = 0;
         }
     std::vector<char> shared(n, 0);
     for (uint32_t v = 0; v < n; ++v) {

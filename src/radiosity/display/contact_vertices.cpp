@@ -10,8 +10,8 @@
 
 namespace rayrad::radiosity {
 
-std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vector<int64_t>& patchOf,
-                                         double minDiameter, double nudge) {
+std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vector<int64_t>& patchOf, double minDiameter,
+                                         double nudge) {
     // The outlines crossing each patch at least minDiameter across.
     auto crossings = [&](size_t i) {
         const bool counts = !mesh.outlineBegin.empty() && mesh.patches[i].diameter >= minDiameter;

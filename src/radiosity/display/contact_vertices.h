@@ -20,7 +20,7 @@ namespace rayrad::radiosity {
 /// that is visible ends at the light beside the outline. A vertex an outline runs through
 /// is gathered `nudge` m in front of the surfaces through it (its value serves the points
 /// in front: sameSideWeights).
-std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vector<int64_t>& patchOf,
-                                         double minDiameter, double nudge);
+std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vector<int64_t>& patchOf, double minDiameter,
+                                         double nudge);
 
 }  // namespace rayrad::radiosity

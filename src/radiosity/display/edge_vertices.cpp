@@ -1,11 +1,11 @@
 #include <radiosity/display/edge_vertices.h>
 
 #include <radiosity/display/contact_vertices.h>
-#include <radiosity/display/rim_vertices.h>
-#include <radiosity/mesh/covered_patches.h>
 #include <radiosity/display/extrapolated_vertices.h>
+#include <radiosity/display/rim_vertices.h>
 #include <radiosity/form_factors/form_factor.h>
 #include <radiosity/gather/gather.h>
+#include <radiosity/mesh/covered_patches.h>
 
 #include <algorithm>
 #include <atomic>
@@ -48,7 +48,8 @@ std::vector<size_t> seamVertices(const scene::Scene& scene, const PatchMesh& mes
     double smallest = std::numeric_limits<double>::infinity();
     for (const Patch& p : mesh.patches)
         if (p.diameter > 0) smallest = std::min(smallest, p.diameter);
-    const double cell0 = std::max(std::isfinite(smallest) ? 1.5 * smallest : 0.0, 1e-9 * std::max(scene.diagonal(), 1e-300));
+    const double cell0 =
+        std::max(std::isfinite(smallest) ? 1.5 * smallest : 0.0, 1e-9 * std::max(scene.diagonal(), 1e-300));
     auto classOf = [&](double diameter) {
         int k = 0;
         while (1.5 * diameter > std::ldexp(cell0, k)) ++k;
@@ -84,8 +85,8 @@ std::vector<size_t> seamVertices(const scene::Scene& scene, const PatchMesh& mes
             Vec3 tri[3] = {mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
             bool onSeam = false;
             for (int e = 0; e < 3; ++e)
-                onSeam |= glm::length(mesh.vertices[v] - closestOnSegment(mesh.vertices[v], tri[e], tri[(e + 1) % 3])) <=
-                          seamTolerance;
+                onSeam |= glm::length(mesh.vertices[v] -
+                                      closestOnSegment(mesh.vertices[v], tri[e], tri[(e + 1) % 3])) <= seamTolerance;
             return onSeam && formFactorToPolygon(x, own.normal, tri, 3, p.normal) > 0;
         };
         bool isEdge = false;
@@ -129,12 +130,14 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
     // has the open side's centroids only, all on one side. Gathered once, like the contacts,
     // and bounded alike (patches at least half the premesher's edge across: in the living
     // room 7 173 rim vertices without the bound).
-    for (const GatherPoint& g : rimVertices(mesh, vis, patchOf, taken, minDiameter, nudge, kCoverLift * scene.diagonal()))
+    for (const GatherPoint& g :
+         rimVertices(mesh, vis, patchOf, taken, minDiameter, nudge, kCoverLift * scene.diagonal()))
         points.push_back(g), taken[g.vertex] = 1;
     const size_t rims = points.size() - seams - contacts;
     // Where the reconstruction extrapolated far beyond the patches around a vertex (a
     // face a few patches wide): gathered once, too.
-    for (const GatherPoint& g : extrapolatedVertices(mesh, solution, patchOf, taken, minDiameter, nudge)) points.push_back(g);
+    for (const GatherPoint& g : extrapolatedVertices(mesh, solution, patchOf, taken, minDiameter, nudge))
+        points.push_back(g);
 
     // A local fixed-point iteration, bottom-up: each round gathers at every seam vertex
     // with the previous round's values at the corners of near patches (the reconstruction

@@ -24,9 +24,9 @@ constexpr double kContactMinEdges = 0.5;
 
 /// How many vertices gatherEdgeVertices gathered, by kind.
 struct GatheredVertices {
-    size_t seams = 0;     ///< vertices on concave edges and corners
-    size_t contacts = 0;  ///< vertices beside an outline that crosses their patches
-    size_t rims = 0;      ///< vertices on the rim of a covered part (covered_patches.h)
+    size_t seams = 0;         ///< vertices on concave edges and corners
+    size_t contacts = 0;      ///< vertices beside an outline that crosses their patches
+    size_t rims = 0;          ///< vertices on the rim of a covered part (covered_patches.h)
     size_t extrapolated = 0;  ///< vertices whose reconstruction left its patches' range (extrapolated_vertices.h)
     std::vector<uint32_t> seamVertices;  ///< the seam vertices themselves, sorted (seam_profiles.h starts from them)
 };

@@ -29,7 +29,8 @@ std::vector<GatherPoint> extrapolatedVertices(const PatchMesh& mesh, const Radio
     std::vector<GatherPoint> out;
     for (size_t v = 0; v < nv; ++v) {
         if (isInnerVertex(angleSum[v])) continue;  // interpolated, not extrapolated
-        if (taken[v] || patchOf[v] < 0 || mesh.patches[static_cast<size_t>(patchOf[v])].diameter < minDiameter) continue;
+        if (taken[v] || patchOf[v] < 0 || mesh.patches[static_cast<size_t>(patchOf[v])].diameter < minDiameter)
+            continue;
         const Range& r = open[v].count > 0 ? open[v] : covered[v];
         if (r.count == 0) continue;
         const double mean = r.sum / r.count, y = luminance(solution.vertexIndirect[v]);

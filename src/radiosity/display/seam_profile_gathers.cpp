@@ -22,7 +22,9 @@ constexpr int kMaxSplitDepth = 12;
 /// change at the 99th percentile 0.48 % of the light.
 constexpr double kSecondRoundShare = 4.0;
 
-double nodeTau(int k) { return SeamProfiles::nodeTau(k); }
+double nodeTau(int k) {
+    return SeamProfiles::nodeTau(k);
+}
 
 /// An edge from a seam vertex to one off the seams, with a patch it bounds.
 struct Candidate {
@@ -46,19 +48,21 @@ std::vector<Candidate> profileEdges(const PatchMesh& mesh, const std::vector<uin
                     glm::length(mesh.vertices[v[b]] - mesh.vertices[v[a]]) >= minEdge)
                     candidates.push_back({v[a], v[b], i});
     }
-    std::sort(candidates.begin(), candidates.end(),
-              [](const Candidate& x, const Candidate& y) { return std::tie(x.from, x.to, x.patch) < std::tie(y.from, y.to, y.patch); });
-    candidates.erase(std::unique(candidates.begin(), candidates.end(),
-                                 [](const Candidate& x, const Candidate& y) { return x.from == y.from && x.to == y.to; }),
-                     candidates.end());
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+        return std::tie(x.from, x.to, x.patch) < std::tie(y.from, y.to, y.patch);
+    });
+    candidates.erase(
+        std::unique(candidates.begin(), candidates.end(),
+                    [](const Candidate& x, const Candidate& y) { return x.from == y.from && x.to == y.to; }),
+        candidates.end());
     return candidates;
 }
 }  // namespace
 
 SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                 const RadiositySolution& solution, const Visibility& vis,
-                                const std::vector<uint32_t>& seamVertices, double minEdge, int levels,
-                                size_t* gathers, const std::function<void(double)>& onProgress) {
+                                const std::vector<uint32_t>& seamVertices, double minEdge, int levels, size_t* gathers,
+                                const std::function<void(double)>& onProgress) {
     levels = std::clamp(levels, 0, SeamProfiles::kNodes);
     if (levels == 0 || seamVertices.empty() || solution.vertexIndirect.empty()) return {};
     const std::vector<Candidate> candidates = profileEdges(mesh, seamVertices, minEdge);

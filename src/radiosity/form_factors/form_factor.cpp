@@ -144,8 +144,7 @@ double formFactorToTriangle(const Vec3& x, const Vec3& n, const Vec3 vertices[3]
     return lambertFormFactor(x, n, vertices, 3, polyNormal, [&](int i) { return view[i]; });
 }
 
-double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal,
-                             double area) {
+double formFactorPointApprox(const Vec3& x, const Vec3& n, const Vec3& center, const Vec3& sourceNormal, double area) {
     Vec3 d = center - x;
     double r2 = glm::dot(d, d);
     if (r2 <= 0) return 0.0;

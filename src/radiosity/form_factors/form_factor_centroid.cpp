@@ -68,8 +68,8 @@ FormFactorCentroid formFactorCentroid(const Vec3& x, const Vec3& n, const Vec3* 
     const Vec3& normal = polyNormal;
     const double h = glm::dot(x - clipped[0], normal);  // m, > 0 (F > 0)
     const Vec3 foot = x - h * normal;
-    const double nAcross = glm::dot(n, normal);        // n_m
-    const Vec3 nAlong = n - nAcross * normal;          // n∥
+    const double nAcross = glm::dot(n, normal);  // n_m
+    const Vec3 nAlong = n - nAcross * normal;    // n∥
     // Outward in-plane edge normals: ν = τ × m for a polygon counter-clockwise about m.
     Vec3 twiceArea(0.0);
     for (int i = 0; i < m; ++i) twiceArea += glm::cross(clipped[i] - foot, clipped[(i + 1) % m] - foot);

@@ -25,8 +25,8 @@ namespace rayrad::radiosity {
 /// the integrand is smooth. Then c_F = f + V / (π F), π F = h n∥·A₁ − h² n_m A₀ with
 /// A₀ = Σ_e p I₀ / (2 h²) from the same edges.
 struct FormFactorCentroid {
-    double F = 0;       ///< Lambert's form factor (0: nothing of the polygon seen)
-    Vec3 centroid{0.0}; ///< c_F (meaningful when F > 0)
+    double F = 0;        ///< Lambert's form factor (0: nothing of the polygon seen)
+    Vec3 centroid{0.0};  ///< c_F (meaningful when F > 0)
 };
 FormFactorCentroid formFactorCentroid(const Vec3& x, const Vec3& n, const Vec3* vertices, int count,
                                       const Vec3& polyNormal);

@@ -1,6 +1,6 @@
+#include <radiosity/clusters/image_clusters.h>
 #include <radiosity/gather/gather.h>
 #include <radiosity/gather/gather_parts.h>
-#include <radiosity/clusters/image_clusters.h>
 #include <radiosity/mesh/patch_reflectance.h>
 
 #include <radiosity/gather/visibility_share.h>
@@ -40,7 +40,12 @@ GatherOptions GatherOptions::plain() {
 
 Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                    const RadiositySolution& solution, const Visibility& vis, const GatherOptions& options)
-    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_solution(solution), m_vis(vis), m_options(options),
+    : m_scene(scene),
+      m_mesh(mesh),
+      m_clustering(clustering),
+      m_solution(solution),
+      m_vis(vis),
+      m_options(options),
       m_nudge(1e-6 * scene.diagonal()) {
     m_treePosition.resize(mesh.patches.size());
     for (const auto& C : clustering.clusters) {
@@ -50,7 +55,8 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
         MemberTree tree = memberTree(mesh, C, kFarLeafSize);
         for (uint32_t i = 0; i < tree.order.size(); ++i) m_treePosition[C.patches[tree.order[i]]] = i;
         std::vector<Rgb> luminance(C.patches.size());
-        for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = solution.reflectedLuminance(scene, mesh, C.patches[k]);
+        for (size_t k = 0; k < C.patches.size(); ++k)
+            luminance[k] = solution.reflectedLuminance(scene, mesh, C.patches[k]);
         m_far.push_back(farSources(mesh, C, tree, luminance, FarRayTargets::PowerSamples));
         m_rootFar.push_back(m_far.back().front());
         m_trees.push_back(std::move(tree));
@@ -102,8 +108,8 @@ Gatherer::Midpoint Gatherer::midpointIndirect(size_t patch, uint64_t a, uint64_t
                                               int weightClass, GatherMemo& memo) const {
     // Ids above the mesh's vertex indices.
     const uint64_t firstId = uint64_t(1) << 32;
-    auto [idAt, added] = memo.m_midpointIds.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
-                                                    firstId + memo.m_midpointIds.size());
+    auto [idAt, added] =
+        memo.m_midpointIds.emplace(std::make_pair(std::min(a, b), std::max(a, b)), firstId + memo.m_midpointIds.size());
     const uint64_t id = idAt->second;
     const GatherMemo::Key key{id, level};
     if (const Rgb* known = GatherMemo::recall(memo.m_midpoint, key, weightClass)) return {id, *known};

@@ -6,14 +6,13 @@
 #include <radiosity/clusters/cluster_tree.h>
 #include <radiosity/clusters/clusters.h>
 #include <radiosity/clusters/far_field.h>
-#include <radiosity/form_factors/form_factor.h>
 #include <radiosity/clusters/member_tree.h>
+#include <radiosity/form_factors/form_factor.h>
 #include <radiosity/mesh/mesh_location.h>
-#include <radiosity/mirrors/mirror_images.h>
 #include <radiosity/mesh/patch_mesh.h>
+#include <radiosity/mirrors/mirror_images.h>
 #include <radiosity/solution/solution.h>
 #include <scene/scene.h>
-
 
 #include <array>
 #include <cstdint>
@@ -27,7 +26,7 @@ namespace rayrad::radiosity {
 /// How a Gatherer works: the scene's gather settings (scene::GatherOptions, each named
 /// as in the scene file), or a sub-stage's own, and what only the stage sets.
 struct GatherOptions : scene::GatherOptions {
-    int maxSplitDepth = 12;     ///< sub-triangle refinement toward the point
+    int maxSplitDepth = 12;  ///< sub-triangle refinement toward the point
     /// Near patches narrower than this (m; width 2·area / longest edge) are not refined
     /// with gathered midpoints (their corners are re-gathered as any patch's): an imported
     /// mesh's slivers, a molding's strips, each "near" by its length though millimetres
@@ -145,8 +144,7 @@ class Gatherer {
         uint64_t id;
         Rgb indirect;
     };
-    using MidpointSource =
-        std::function<Midpoint(size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share)>;
+    using MidpointSource = std::function<Midpoint(size_t patch, uint64_t a, uint64_t b, const Vec3& y, double share)>;
     /// Which part of the sum a gather returns (see Request::part).
     enum class Part { All, Near, AllButNear };
     /// Serial: for callers that are parallel themselves.
@@ -260,8 +258,8 @@ class Gatherer {
     /// True when the visibility rays from x to the triangle's `lightCentre` (its form
     /// factor's centroid) and to a point toward each corner all pass.
     bool seenWhole(const Vec3& x, const Vec3& n, const Vec3 p[3], const Vec3& lightCentre) const;
-    Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal,
-                        int depth, double knownF = -1) const;
+    Rgb integrateLinear(const Vec3& x, const Vec3& n, const Vec3 p[3], const Rgb L[3], const Vec3& normal, int depth,
+                        double knownF = -1) const;
 
     const scene::Scene& m_scene;
     const PatchMesh& m_mesh;
@@ -270,19 +268,20 @@ class Gatherer {
     const Visibility& m_vis;
     GatherOptions m_options;
     double m_nudge;
-    std::vector<double> m_clusterPatchSize; ///< largest member diameter per cluster
-    std::vector<MemberTree> m_trees;                 ///< per cluster
-    std::vector<std::vector<FarSource>> m_far;       ///< per cluster, per node of its tree
-    std::vector<FarSource> m_rootFar;                ///< per cluster, its root's (m_far[c][0]), contiguous
-    std::vector<uint32_t> m_treePosition;            ///< per patch, its position in its tree's order
-    ClusterTree m_clusterTree;                       ///< groups of clusters, far sources in re-gathers
-    double m_groupCone = 0;  ///< a group is one source only while its normals are this close (radians; ClusterGroup::coneAngle)
+    std::vector<double> m_clusterPatchSize;     ///< largest member diameter per cluster
+    std::vector<MemberTree> m_trees;            ///< per cluster
+    std::vector<std::vector<FarSource>> m_far;  ///< per cluster, per node of its tree
+    std::vector<FarSource> m_rootFar;           ///< per cluster, its root's (m_far[c][0]), contiguous
+    std::vector<uint32_t> m_treePosition;       ///< per patch, its position in its tree's order
+    ClusterTree m_clusterTree;                  ///< groups of clusters, far sources in re-gathers
+    double m_groupCone =
+        0;  ///< a group is one source only while its normals are this close (radians; ClusterGroup::coneAngle)
     std::vector<std::unique_ptr<MirrorView>> m_mirrorViews;
     /// Per image i, per cluster: some member faces the chain's first mirror (clustersFacing);
     /// the others send nothing into the image.
     std::vector<std::vector<char>> m_imageSends;
     std::vector<uint64_t> m_sourceKeys;  ///< per source s (0: the scene, i + 1: image i), for visibilityOffset
-    VoxelRegions m_regions;  ///< a gather through a mirror skips the voxels no light passes from
+    VoxelRegions m_regions;              ///< a gather through a mirror skips the voxels no light passes from
 };
 
 }  // namespace rayrad::radiosity

@@ -34,7 +34,7 @@ struct Gatherer::NearField {
     /// In cluster order; within a cluster sorted by tree position, so a member-tree node's
     /// near patches are a contiguous run.
     std::vector<NearPatch> patches;
-    std::vector<NearPiece> pieces;  ///< every near patch's pieces, one run each
+    std::vector<NearPiece> pieces;      ///< every near patch's pieces, one run each
     std::vector<NearCluster> clusters;  ///< increasing
     using Iterator = std::vector<NearPatch>::const_iterator;
     /// Cluster c's near patches [first, last) (empty when it holds none).

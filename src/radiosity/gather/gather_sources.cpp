@@ -32,8 +32,8 @@ constexpr uint32_t kWholeCluster = (1u << 24) - 1;
 Gatherer::PointSources Gatherer::pointSources(const Request& request, const NearField& near) const {
     PointSources point(request, near);
     const double far = m_options.gatherFarDiameters;
-    point.farDiameters = far > 0 && request.weight < 1 ? std::max(kLeastFarDiameters, far * std::cbrt(request.weight))
-                                                       : far;
+    point.farDiameters =
+        far > 0 && request.weight < 1 ? std::max(kLeastFarDiameters, far * std::cbrt(request.weight)) : far;
     point.weakBelow = kWeakSourceShare * request.expected;
     // Per mirror image, which voxels' clusters may send x light through its chain (most do
     // not: a cluster there adds nothing, so skipping it leaves every sum as it was).
@@ -46,8 +46,8 @@ Gatherer::PointSources Gatherer::pointSources(const Request& request, const Near
         point.sources.push_back(static_cast<uint32_t>(i + 1));
         for (size_t r = 0; r < point.regions; ++r) {
             const VoxelRegions::Region& region = m_regions.regions[r];
-            point.regionOpen[i * point.regions + r] = image.mayPassToPoint(image.point(region.centre), region.radius,
-                                                                           request.x);
+            point.regionOpen[i * point.regions + r] =
+                image.mayPassToPoint(image.point(region.centre), region.radius, request.x);
         }
     }
     return point;
@@ -108,8 +108,8 @@ Rgb Gatherer::clusterContribution(const PointSources& point, size_t s, size_t c)
     const Cluster& C = m_clustering.clusters[c];  // members mirrored as they are used
     const Visibility& vis = real ? m_vis : *m_mirrorViews[s - 1]->path;
     const Rgb mirrorWeight = real ? Rgb(1.0) : image->weight;  // Π Ks of the chain
-    const auto nearRange = real ? point.near.of(static_cast<uint32_t>(c))
-                                : std::pair{point.near.patches.end(), point.near.patches.end()};
+    const auto nearRange =
+        real ? point.near.of(static_cast<uint32_t>(c)) : std::pair{point.near.patches.end(), point.near.patches.end()};
     const NearField::Iterator nearFirst = nearRange.first, nearLast = nearRange.second;
     const bool hasNear = nearFirst != nearLast;
     const Vec3 centroid = real ? C.centroid : image->point(C.centroid);
@@ -130,7 +130,8 @@ Rgb Gatherer::clusterContribution(const PointSources& point, size_t s, size_t c)
     RayBatch<Rgb> rays(vis, x, n, sum);
     // The first near patch at or after tree position k.
     auto nearFrom = [&](uint32_t k) {
-        return std::lower_bound(nearFirst, nearLast, k, [](const NearPatch& e, uint32_t at) { return e.position < at; });
+        return std::lower_bound(nearFirst, nearLast, k,
+                                [](const NearPatch& e, uint32_t at) { return e.position < at; });
     };
     // Patch j's light: a near patch's by its pieces, any other's patch-constant (E = π L F,
     // F analytic within analyticDistance patch diameters), seen along the ray to its
@@ -153,8 +154,10 @@ Rgb Gatherer::clusterContribution(const PointSources& point, size_t s, size_t c)
         }
         if (!(f > 0)) return;
         const Rgb e = L * (kPi * f);
-        if (shared) sharedSum += e, sharedVisibility.addPatch(luminance(e), j);
-        else rays.add(rayTarget(j), e);
+        if (shared)
+            sharedSum += e, sharedVisibility.addPatch(luminance(e), j);
+        else
+            rays.add(rayTarget(j), e);
     };
     // Where a source's samples fall (visibilityOffset): drawn per point, image, cluster
     // and node (`node` of the member tree; the whole cluster's shared rays take kWholeCluster).
@@ -164,10 +167,11 @@ Rgb Gatherer::clusterContribution(const PointSources& point, size_t s, size_t c)
     auto addFar = [&](const FarSource& f, uint32_t node) {
         const Rgb e = farField(f, x, n, image);
         if (e == Rgb(0.0)) return;
-        if (shared) sharedSum += e, sharedVisibility.addNode(luminance(e), f);
+        if (shared)
+            sharedSum += e, sharedVisibility.addNode(luminance(e), f);
         else
-            sum += e * visibleShare(f, [&](uint32_t k) { return visiblePatch(C.patches[k]); }, point.raysFor(e),
-                                    offset(node));
+            sum += e * visibleShare(
+                           f, [&](uint32_t k) { return visiblePatch(C.patches[k]); }, point.raysFor(e), offset(node));
     };
     auto holdsNear = [&](const MemberNode& node) {
         auto it = nearFrom(node.begin);
@@ -187,15 +191,16 @@ Rgb Gatherer::clusterContribution(const PointSources& point, size_t s, size_t c)
     if (rootFar) addFar(m_rootFar[c], 0);
     const MemberTree& tree = m_trees[c];
     const std::vector<FarSource>& farSources = m_far[c];
-    if (!rootFar) descend(tree, [&](uint32_t i, const MemberNode& node) {
-        if (isFar(farSources[i], node.size()) && !holdsNear(node)) {
-            addFar(farSources[i], i);
+    if (!rootFar)
+        descend(tree, [&](uint32_t i, const MemberNode& node) {
+            if (isFar(farSources[i], node.size()) && !holdsNear(node)) {
+                addFar(farSources[i], i);
+                return false;
+            }
+            if (!node.leaf()) return true;
+            for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
             return false;
-        }
-        if (!node.leaf()) return true;
-        for (uint32_t k = node.begin; k < node.end; ++k) addPatch(C.patches[tree.order[k]]);
-        return false;
-    });
+        });
     rays.flush();
     if (shared && sharedSum != Rgb(0.0))
         sum += sharedSum * sharedVisibility.share(visiblePatch, point.raysFor(sharedSum), offset(kWholeCluster));

@@ -9,8 +9,8 @@
 namespace rayrad::radiosity {
 
 SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
-                           const DirectLight& lights, const Visibility& vis, const Gatherer& gatherer,
-                           GatherMemo& memo, const scene::Sensor& sensor) {
+                           const DirectLight& lights, const Visibility& vis, const Gatherer& gatherer, GatherMemo& memo,
+                           const scene::Sensor& sensor) {
     SensorValue out;
     Vec3 directAt = sensor.position, gatherAt = sensor.position;
     auto where = locateOnMesh(mesh, sensor.position, sensor.normal, 1e-6 * scene.diagonal(), &vis);
@@ -35,7 +35,9 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
     return out;
 }
 
-size_t sensorsPerMemo(size_t sensors) { return std::max<size_t>(32, (sensors + 7) / 8); }
+size_t sensorsPerMemo(size_t sensors) {
+    return std::max<size_t>(32, (sensors + 7) / 8);
+}
 
 std::vector<SensorValue> evaluateSensors(const scene::Scene& scene, const PatchMesh& mesh,
                                          const RadiositySolution& solution, const DirectLight& lights,

@@ -25,8 +25,8 @@ struct SensorValue {
 /// Direct (exact, `sensorAreaLightSamples` shadow rays per area light), gathered
 /// indirect, and vertex-interpolated indirect at a sensor; re-gathers in `memo`.
 SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& solution,
-                           const DirectLight& lights, const Visibility& vis, const Gatherer& gatherer,
-                           GatherMemo& memo, const scene::Sensor& sensor);
+                           const DirectLight& lights, const Visibility& vis, const Gatherer& gatherer, GatherMemo& memo,
+                           const scene::Sensor& sensor);
 
 /// Every sensor of the scene, in parallel: in runs of consecutive sensors, each run with
 /// a memo of its own (a grid's neighbouring points share their re-gathers within a run).

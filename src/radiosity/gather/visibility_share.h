@@ -7,10 +7,9 @@
 // (most sources are wholly seen or wholly hidden: two rays). A re-gather (weight < 1)
 // takes the first sample alone.
 //
-// One ray toward the brightest member (before 2026-11-26) is biased where the light
-// and the occluders are correlated: on the hall's ceiling, past rows of desks, the floor's
-// members the troffers light are the ones the ceiling sees, and the sensors read 3-7 %
-// high (docs/validation.md, "Far sources' visibility"). The shooting's far nodes keep
+// One ray toward the brightest member is biased where the light and the occluders are
+// correlated: on the hall's ceiling, past rows of desks, the floor's members the troffers
+// light are the ones the ceiling sees, and the sensors read 3-7 % high. The shooting's far nodes keep
 // that one ray: against every member's own ray (the hall's patches, 95th percentile) it
 // is 0.42 % off, up to four sampled rays 0.42 % at 13 % more shooting CPU, one sample
 // at 3/8 of the power 0.51 %.

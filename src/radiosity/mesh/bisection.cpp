@@ -12,7 +12,9 @@ namespace {
 using Triangle = std::array<uint32_t, 3>;
 using Edge = std::pair<uint32_t, uint32_t>;  ///< sorted vertex indices
 
-Edge edgeKey(uint32_t a, uint32_t b) { return a < b ? Edge{a, b} : Edge{b, a}; }
+Edge edgeKey(uint32_t a, uint32_t b) {
+    return a < b ? Edge{a, b} : Edge{b, a};
+}
 
 /// Index k of the longest edge (t[k], t[k+1]); ties go to the smaller sorted key, so
 /// both triangles sharing an edge rank it alike.
@@ -23,7 +25,8 @@ int longestEdge(const std::vector<Vec3>& positions, const Triangle& t) {
     for (int k = 0; k < 3; ++k) {
         double length = glm::length(positions[t[(k + 1) % 3]] - positions[t[k]]);
         Edge key = edgeKey(t[k], t[(k + 1) % 3]);
-        if (length > bestLength || (length == bestLength && key < bestKey)) best = k, bestLength = length, bestKey = key;
+        if (length > bestLength || (length == bestLength && key < bestKey))
+            best = k, bestLength = length, bestKey = key;
     }
     return best;
 }

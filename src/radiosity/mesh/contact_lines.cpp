@@ -96,7 +96,7 @@ QuadContacts findContacts(const scene::Scene& scene, size_t group, const std::ve
             if (best <= tolerance) continue;  // touches at a point only
             auto a = param(points[ia]), b = param(points[ib]);
             double ds = std::abs(b[0] - a[0]) * lu, dt = std::abs(b[1] - a[1]) * lv;  // metres
-            if (dt <= tolerance) {  // along s: a line t = const
+            if (dt <= tolerance) {                                                    // along s: a line t = const
                 double t = 0.5 * (a[1] + b[1]);
                 double from = std::max(0.0, std::min(a[0], b[0])), to = std::min(1.0, std::max(a[0], b[0]));
                 if (t > tt && t < 1 - tt && to - from > ts) addLine(out.constT, t, from, to, tt);

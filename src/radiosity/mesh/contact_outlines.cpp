@@ -55,8 +55,10 @@ bool crossesInterior(const std::array<Vec3, 3>& p, const Segment& ab) {
             if (s < 0) return false;
             continue;
         }
-        if (e > 0) t0 = std::max(t0, -s / e);
-        else t1 = std::min(t1, -s / e);
+        if (e > 0)
+            t0 = std::max(t0, -s / e);
+        else
+            t1 = std::min(t1, -s / e);
     }
     if (!(t1 - t0 > 1e-9)) return false;
     const Vec3 mid = la + 0.5 * (t0 + t1) * (lb - la);
@@ -103,7 +105,8 @@ void findContactOutlines(PatchMesh& mesh, const Visibility& vis, double toleranc
             if (q.group == p.group || std::abs(glm::dot(q.normal, p.normal)) > 1 - 1e-9) return;
             const std::array<Vec3, 3> other{mesh.corner(q, 0), mesh.corner(q, 1), mesh.corner(q, 2)};
             const std::optional<Segment> outline = meetsPlane(other, tri[0], p.normal, tolerance);
-            if (outline && crossesInterior(tri, *outline)) found[i].push_back({outline->first, outline->second, q.normal});
+            if (outline && crossesInterior(tri, *outline))
+                found[i].push_back({outline->first, outline->second, q.normal});
         };
         forPatchesNear(mesh, &vis, p.centroid, p.diameter, visit);
     });
@@ -141,7 +144,8 @@ void findContactOutlines(PatchMesh& mesh, const Visibility& vis, double toleranc
                 const Vec3& x = mesh.vertices[v];
                 if (glm::length(x - closestOnSegment(x, c.a, c.b)) > tolerance) continue;
                 auto& normals = through[v];
-                if (std::none_of(normals.begin(), normals.end(), [&](const Vec3& m) { return glm::dot(m, c.normal) > 1 - 1e-9; }))
+                if (std::none_of(normals.begin(), normals.end(),
+                                 [&](const Vec3& m) { return glm::dot(m, c.normal) > 1 - 1e-9; }))
                     normals.push_back(c.normal);
             }
     mesh.throughBegin.assign(mesh.vertices.size() + 1, 0);
@@ -156,7 +160,10 @@ std::array<double, 3> sameSideWeights(const PatchMesh& mesh, size_t i, double u,
     const std::array<double, 3> plain{1 - u - v, u, v};
     if (mesh.outlineBegin.empty()) return plain;
     const Patch& p = mesh.patches[i];
-    auto hasThrough = [&](int k) { auto [first, last] = mesh.outlinesThrough(p.v[k]); return first != last; };
+    auto hasThrough = [&](int k) {
+        auto [first, last] = mesh.outlinesThrough(p.v[k]);
+        return first != last;
+    };
     const bool crossed = mesh.outlineBegin[i] != mesh.outlineBegin[i + 1];
     if (!crossed && !hasThrough(0) && !hasThrough(1) && !hasThrough(2)) return plain;
     const Vec3 x = mesh.pointAt(p, u, v);

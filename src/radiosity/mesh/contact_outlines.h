@@ -18,11 +18,10 @@ namespace rayrad::radiosity {
 /// surface groups that meet its plane (within `tolerance` m), rise in front of it, and
 /// cross its interior — not only along its edges or through a corner (an outline the mesh
 /// was cut along is no crossing). And mesh.throughBegin / throughNormals: the vertices
-/// of crossed patches that such an outline runs through (within `tolerance`). Parallel surfaces never cross. And mesh.underSolid: the
-/// crossed patches' vertices behind every outline crossing them (by more than
-/// `tolerance`) from which rays, leaving `lift` m above the surface in eight directions,
-/// meet only back faces (under a box, not behind a lone panel). `vis` should have a
-/// spatial index (patchesNear; else every patch pair is examined) and tell back faces
+/// of crossed patches that such an outline runs through (within `tolerance`). Parallel surfaces never cross. And
+/// mesh.underSolid: the crossed patches' vertices behind every outline crossing them (by more than `tolerance`) from
+/// which rays, leaving `lift` m above the surface in eight directions, meet only back faces (under a box, not behind a
+/// lone panel). `vis` should have a spatial index (patchesNear; else every patch pair is examined) and tell back faces
 /// (hitsBackFace; else no vertex is under a solid).
 void findContactOutlines(PatchMesh& mesh, const Visibility& vis, double tolerance, double lift);
 

@@ -20,7 +20,9 @@ double targetEdge(const scene::Scene& scene, const scene::MeshingOptions& option
 
 namespace {
 
-int cellsFor(double length, double edge) { return std::max(1, static_cast<int>(std::ceil(length / edge - 1e-9))); }
+int cellsFor(double length, double edge) {
+    return std::max(1, static_cast<int>(std::ceil(length / edge - 1e-9)));
+}
 
 /// The longer of each pair of opposite sides of a quad v0 v1 v2 v3, m: (u, v).
 std::pair<double, double> quadSides(const std::vector<Vec3>& q) {
@@ -153,7 +155,8 @@ void meshQuad(PatchMesh& mesh, const std::vector<Vec3>& q, int material, int gro
             const uint32_t v[3] = {a, b, c};
             for (int k = 0; k < 3; ++k) {
                 const double s = st.at(v[k]).x, t = st.at(v[k]).y;
-                uv[k] = (1 - s) * (1 - t) * quadUv[0] + s * (1 - t) * quadUv[1] + s * t * quadUv[2] + (1 - s) * t * quadUv[3];
+                uv[k] = (1 - s) * (1 - t) * quadUv[0] + s * (1 - t) * quadUv[1] + s * t * quadUv[2] +
+                        (1 - s) * t * quadUv[3];
             }
         }
         addPatch(mesh, a, b, c, material, group, &uv);
@@ -222,8 +225,8 @@ std::vector<std::array<uint32_t, 3>> latticeTriangles(std::vector<Vec3>& positio
 /// with `triangles_per_surface`, every triangle into the same k² lattice triangles.
 /// Corners stay as the input indexes them: a mesh that splits its vertices along a
 /// crease keeps the two sides apart, so vertex values never average across it.
-void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris,
-                   int group, const scene::MeshingOptions& options, double edge, bool withUv = false,
+void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris, int group,
+                   const scene::MeshingOptions& options, double edge, bool withUv = false,
                    const std::vector<Uv3>& trisUv = {}) {
     std::vector<Vec3> positions = g.positions;
     const int k = options.trianglesPerSurface > 0 ? latticeFactor(options, tris.size()) : 0;
@@ -233,7 +236,8 @@ void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std
         for (size_t t = 0; t < triangles.size(); ++t) parents.push_back(static_cast<uint32_t>(t / (size_t(k) * k)));
     std::vector<uint32_t> id(positions.size(), UINT32_MAX);  // local → mesh vertex, made when used
     auto meshVertex = [&](uint32_t v) {
-        if (id[v] == UINT32_MAX) id[v] = static_cast<uint32_t>(mesh.vertices.size()), mesh.vertices.push_back(positions[v]);
+        if (id[v] == UINT32_MAX)
+            id[v] = static_cast<uint32_t>(mesh.vertices.size()), mesh.vertices.push_back(positions[v]);
         return id[v];
     };
     for (size_t n = 0; n < triangles.size(); ++n) {
@@ -245,7 +249,8 @@ void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std
         Uv3 uv{};
         if (!trisUv.empty()) {  // each corner located in the input triangle it came from
             const auto& parent = tris[parents[n]];
-            const std::array<Vec3, 3> corners = {g.positions[parent[0]], g.positions[parent[1]], g.positions[parent[2]]};
+            const std::array<Vec3, 3> corners = {g.positions[parent[0]], g.positions[parent[1]],
+                                                 g.positions[parent[2]]};
             for (int c = 0; c < 3; ++c) uv[c] = uvAt(corners, trisUv[parents[n]], positions[t[c]]);
         }
         addPatch(mesh, meshVertex(t[0]), meshVertex(t[1]), meshVertex(t[2]), g.material, group, &uv);
@@ -264,7 +269,8 @@ std::vector<std::array<uint32_t, 3>> groupTriangles(const SurfaceGroup& g, std::
             std::vector<Vec3> v;
             for (uint32_t i : poly) v.push_back(g.positions[i]);
             corners.clear();
-            for (const auto& t : scene::triangulate(v)) corners.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+            for (const auto& t : scene::triangulate(v))
+                corners.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
         }
         for (const auto& c : corners) {
             tris.push_back({poly[c[0]], poly[c[1]], poly[c[2]]});
@@ -295,7 +301,8 @@ double estimatePatchCount(const scene::Scene& scene, const scene::MeshingOptions
             const double k = latticeFactor(options, tris.size());
             count += k * k * static_cast<double>(tris.size());
         } else {
-            for (const auto& t : tris) count += bisectedCount(g.positions[t[0]], g.positions[t[1]], g.positions[t[2]], edge);
+            for (const auto& t : tris)
+                count += bisectedCount(g.positions[t[0]], g.positions[t[1]], g.positions[t[2]], edge);
         }
     }
     return count;

@@ -16,14 +16,17 @@ std::vector<double> vertexAngleSums(const PatchMesh& mesh) {
     std::vector<double> sum(mesh.vertices.size(), 0.0);
     for (const Patch& p : mesh.patches)
         for (int k = 0; k < 3; ++k) {
-            const Vec3 a = mesh.corner(p, (k + 1) % 3) - mesh.corner(p, k), b = mesh.corner(p, (k + 2) % 3) - mesh.corner(p, k);
+            const Vec3 a = mesh.corner(p, (k + 1) % 3) - mesh.corner(p, k),
+                       b = mesh.corner(p, (k + 2) % 3) - mesh.corner(p, k);
             const double la = glm::length(a), lb = glm::length(b);
             if (la > 0 && lb > 0) sum[p.v[k]] += std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
         }
     return sum;
 }
 
-bool isInnerVertex(double angleSum) { return std::abs(angleSum - 2 * kPi) < 1e-6; }
+bool isInnerVertex(double angleSum) {
+    return std::abs(angleSum - 2 * kPi) < 1e-6;
+}
 
 void computeGeometry(const PatchMesh& mesh, Patch& p) {
     computeGeometry({mesh.vertices[p.v[0]], mesh.vertices[p.v[1]], mesh.vertices[p.v[2]]}, p);
@@ -40,8 +43,8 @@ void computeGeometry(const std::array<Vec3, 3>& corners, Patch& p) {
 }
 
 std::string toString(const Patch& p) {
-    return fmt::format("Patch{{v=[{},{},{}], area={:.6g} m², normal={}, material={}}}", p.v[0], p.v[1], p.v[2],
-                       p.area, rayrad::toString(p.normal), p.material);
+    return fmt::format("Patch{{v=[{},{},{}], area={:.6g} m², normal={}, material={}}}", p.v[0], p.v[1], p.v[2], p.area,
+                       rayrad::toString(p.normal), p.material);
 }
 
 void forPatchesNear(const PatchMesh& mesh, const Visibility* spatial, const Vec3& x, double radius,

@@ -19,10 +19,10 @@ struct Patch {
     std::array<uint32_t, 3> v{};  ///< indices into PatchMesh::vertices, CCW seen from the front
     Vec3 normal{0.0};             ///< unit, front side
     Vec3 centroid{0.0};
-    double area = 0;              ///< m²
-    double diameter = 0;          ///< longest edge, m
+    double area = 0;      ///< m²
+    double diameter = 0;  ///< longest edge, m
     int material = 0;
-    int group = 0;                ///< index of the scene's SurfaceGroup
+    int group = 0;  ///< index of the scene's SurfaceGroup
 };
 
 /// Where another surface stands on (or passes through) a patch off the patch's mesh

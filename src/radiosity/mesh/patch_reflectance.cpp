@@ -46,13 +46,14 @@ glm::dvec2 textureChange(const PatchMesh& mesh, size_t i, const Vec3& d) {
     return alpha * t1 + beta * t2;
 }
 
-Rgb reflectanceAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v, const Vec3& footprintA,
-                  const Vec3& footprintB) {
+Rgb reflectanceAt(const scene::Scene& scene, const PatchMesh& mesh, size_t i, double u, double v,
+                  const Vec3& footprintA, const Vec3& footprintB) {
     const scene::Material& m = scene.materials[mesh.patches[i].material];
     if (m.texture < 0 || mesh.cornerUv.empty() || !scene.textureImages) return m.reflectance;
     const glm::dvec2 uv = uvAt(mesh, i, u, v);
-    return clampedProduct(m.reflectance, scene.textureImages->lookup(m.texture, uv.x, uv.y, textureChange(mesh, i, footprintA),
-                                                                     textureChange(mesh, i, footprintB)));
+    return clampedProduct(m.reflectance,
+                          scene.textureImages->lookup(m.texture, uv.x, uv.y, textureChange(mesh, i, footprintA),
+                                                      textureChange(mesh, i, footprintB)));
 }
 
 void computeTexturedReflectance(const scene::Scene& scene, PatchMesh& mesh) {
@@ -70,8 +71,10 @@ void computeTexturedReflectance(const scene::Scene& scene, PatchMesh& mesh) {
         // The longest edge in texels decides the lattice.
         double longest = 0;
         for (int k = 0; k < 3; ++k)
-            longest = std::max(longest, static_cast<double>(glm::length(mesh.cornerUv[3 * i + k] - mesh.cornerUv[3 * i + (k + 1) % 3])));
-        const int n = std::clamp(static_cast<int>(std::ceil(4 * longest * scene.textureImages->resolution(m.texture))), 4, 64);
+            longest = std::max(longest, static_cast<double>(glm::length(mesh.cornerUv[3 * i + k] -
+                                                                        mesh.cornerUv[3 * i + (k + 1) % 3])));
+        const int n =
+            std::clamp(static_cast<int>(std::ceil(4 * longest * scene.textureImages->resolution(m.texture))), 4, 64);
         // Centroids of the n² sub-triangles of the lattice: the up ones (i, j), (i+1, j),
         // (i, j+1) and the down ones (i+1, j), (i+1, j+1), (i, j+1), in units of 1/n.
         Rgb sum(0.0);

@@ -4,8 +4,8 @@
 #include <scene/polygon.h>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 
 namespace rayrad::radiosity {
 
@@ -49,7 +49,8 @@ bool lightCanContinue(const scene::Mirror& a, const scene::Mirror& b, const scen
         return true;
     };
     const Vec3 aImageNormal = scene::polygonNormal(aImage);
-    const std::pair<Vec3, Vec3> planes[] = {{aImageNormal, aImage[0]}, {b.normal, b.polygon[0]}, {c.normal, c.polygon[0]}};
+    const std::pair<Vec3, Vec3> planes[] = {
+        {aImageNormal, aImage[0]}, {b.normal, b.polygon[0]}, {c.normal, c.polygon[0]}};
     for (const auto& [normal, point] : planes)
         for (double orientation : {1.0, -1.0}) {
             Vec3 n = orientation * normal;
@@ -69,8 +70,10 @@ void extend(const std::vector<scene::Mirror>& mirrors, const MirrorLimits& limit
     for (int k = 0; k < static_cast<int>(mirrors.size()); ++k) {
         if (!image.chain.empty()) {
             const scene::Mirror& last = mirrors[image.chain.back()];
-            if (image.chain.back() == k || !partlyInFront(last, mirrors[k]) || !partlyInFront(mirrors[k], last)) continue;
-            if (image.chain.size() >= 2 && !lightCanContinue(mirrors[image.chain[image.chain.size() - 2]], last, mirrors[k]))
+            if (image.chain.back() == k || !partlyInFront(last, mirrors[k]) || !partlyInFront(mirrors[k], last))
+                continue;
+            if (image.chain.size() >= 2 &&
+                !lightCanContinue(mirrors[image.chain[image.chain.size() - 2]], last, mirrors[k]))
                 continue;
         }
         MirrorImage next = image;
@@ -139,7 +142,8 @@ std::vector<MirrorImage> mirrorImagesFor(const scene::Scene& scene, bool* trunca
         if (scene.materials[g.material].isDiffuse())
             for (const auto& polygon : g.polygons) area += scene::polygonArea(g.positions, polygon);
     return enumerateMirrorImages(
-        scene.mirrors, {scene.mirrorImages.mirrorDepth, scene.mirrorImages.mirrorMinWeight, scene.mirrorImages.mirrorMinShare, area},
+        scene.mirrors,
+        {scene.mirrorImages.mirrorDepth, scene.mirrorImages.mirrorMinWeight, scene.mirrorImages.mirrorMinShare, area},
         truncated);
 }
 
@@ -264,10 +268,10 @@ bool MirrorImage::mayPassToPoint(const Vec3& imageCentre, double imageRadius, co
     for (const Aperture& a : apertures) {
         const double dx = glm::dot(a.normal, receiver - a.centre), dc = glm::dot(a.normal, imageCentre - a.centre);
         if ((dx < 0) == (dc < 0) && std::abs(dc) > imageRadius + kMargin) return false;  // the ball on x's side
-        if (a.outward.empty() || (dx < 0) == (dc < 0)) continue;  // the rays decide
+        if (a.outward.empty() || (dx < 0) == (dc < 0)) continue;                         // the rays decide
         const double sinT = std::abs(dx - dc) / length;  // the axis's angle θ with the plane
         const double sinTA = sinT * cosA - std::sqrt(std::max(0.0, 1 - sinT * sinT)) * sinA;  // sin(θ − α)
-        if (!(sinTA > 0)) continue;  // the cone grazes the plane: its section is unbounded
+        if (!(sinTA > 0)) continue;                // the cone grazes the plane: its section is unbounded
         const double s = length * dx / (dx - dc);  // m, from x to the crossing
         const Vec3 crossing = receiver + s * unit;
         double outside = -std::numeric_limits<double>::infinity();  // ≤ the crossing's distance to the outline

@@ -17,14 +17,14 @@ namespace rayrad::radiosity {
 /// has the image transform·p; light from the image reaches a receiver only through the
 /// chain's mirror polygons, last mirror first, carrying the product of their Ks.
 struct MirrorImage {
-    std::vector<int> chain;      ///< indices into Scene::mirrors
+    std::vector<int> chain;  ///< indices into Scene::mirrors
     /// Mirror chain[k] as a receiver sees it, reflected in every later mirror of the
     /// chain (R_{n−1} ∘ … ∘ R_{k+1}), last mirror first: the straight (unfolded) path
     /// from a receiver to an image point crosses each.
     struct Aperture {
         std::vector<Vec3> polygon;
-        Vec3 normal;  ///< unit, the mirror's front
-        Vec3 centre;  ///< of the polygon's vertices
+        Vec3 normal;    ///< unit, the mirror's front
+        Vec3 centre;    ///< of the polygon's vertices
         double radius;  ///< largest distance of a vertex from the centre, m
         /// Per edge i (polygon[i] → polygon[i+1]), the unit normal in the plane pointing
         /// out of the polygon; empty when the polygon is not convex.
@@ -32,8 +32,8 @@ struct MirrorImage {
         Aperture(std::vector<Vec3> polygon, const Vec3& normal);
     };
     std::vector<Aperture> apertures;
-    glm::dmat4 transform{1.0};   ///< world → image (a product of reflections)
-    Rgb weight{1.0};             ///< Π Ks along the chain
+    glm::dmat4 transform{1.0};  ///< world → image (a product of reflections)
+    Rgb weight{1.0};            ///< Π Ks along the chain
     /// An estimate of the chain's étendue, m² sr: ∫∫ cosθ cosθ' / r² over the rays that
     /// cross every aperture, bounded by the smallest étendue of two of its apertures
     /// (π A for a single mirror). Light of luminance L carries at most L·G through it.
@@ -60,13 +60,13 @@ struct MirrorImage {
 
 /// How far images of images go.
 struct MirrorLimits {
-    int maxDepth = 4;          ///< reflections per chain
-    double minWeight = 1e-3;   ///< drop a chain once Y(Π Ks) falls below this
+    int maxDepth = 4;         ///< reflections per chain
+    double minWeight = 1e-3;  ///< drop a chain once Y(Π Ks) falls below this
     /// Drop a chain once Y(Π Ks) G / (π A) falls below this: the share of a uniformly
     /// bright room's light (luminance L̄ everywhere: π L̄ A leaves the surfaces) it can
     /// carry. 0 keeps every chain.
     double minShare = 0;
-    double surfaceArea = 0;    ///< A, m² (the scene's surfaces)
+    double surfaceArea = 0;  ///< A, m² (the scene's surfaces)
 };
 
 /// Every chain up to the limits (depth, weight, étendue share): no mirror twice in a
@@ -138,6 +138,7 @@ class MirrorPath final : public Visibility {
     /// `receiverNormal` (if given): the receiver is a surface point (see Visibility).
     bool trace(const Vec3& imagePoint, const Vec3& receiver, Vec3* leaving = nullptr,
                const Vec3* receiverNormal = nullptr) const;
+
   private:
     const std::vector<scene::Mirror>& m_mirrors;
     const MirrorImage& m_image;

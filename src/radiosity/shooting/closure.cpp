@@ -19,12 +19,14 @@ double escapeFraction(const PatchMesh& mesh, const Visibility& vis, double farAw
     for (int k = 0; k < rays; ++k) {
         // Patch by stratified weight: the one where (k + ½)/rays of the total falls.
         double target = (k + 0.5) / rays * total;
-        while (i + 1 < mesh.patches.size() && passed + std::max(0.0, weight[i]) < target) passed += std::max(0.0, weight[i++]);
+        while (i + 1 < mesh.patches.size() && passed + std::max(0.0, weight[i]) < target)
+            passed += std::max(0.0, weight[i++]);
         const Patch& p = mesh.patches[i];
         // A random point of the triangle, a cosine-distributed direction about its normal.
         double a = rng.nextDouble(), b = rng.nextDouble();
         if (a + b > 1) a = 1 - a, b = 1 - b;
-        Vec3 x = mesh.corner(p, 0) + a * (mesh.corner(p, 1) - mesh.corner(p, 0)) + b * (mesh.corner(p, 2) - mesh.corner(p, 0));
+        Vec3 x = mesh.corner(p, 0) + a * (mesh.corner(p, 1) - mesh.corner(p, 0)) +
+                 b * (mesh.corner(p, 2) - mesh.corner(p, 0));
         double u = rng.nextDouble(), phi = 2 * kPi * rng.nextDouble();
         double r = std::sqrt(u);
         Vec3 t = std::abs(p.normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);

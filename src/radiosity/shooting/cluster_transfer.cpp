@@ -75,8 +75,8 @@ SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, cons
     if (farDiameters <= 0 || tree.nodes.size() < 2) return g;
     g.tree = &tree;
     g.farDiameters = farDiameters;
-    g.unitFar = farSources(mesh, source, tree, std::vector<Rgb>(source.patches.size(), Rgb(1.0)),
-                           FarRayTargets::Brightest);
+    g.unitFar =
+        farSources(mesh, source, tree, std::vector<Rgb>(source.patches.size(), Rgb(1.0)), FarRayTargets::Brightest);
     return g;
 }
 
@@ -123,8 +123,7 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
         if (receiverDetail && !receiver.planar)
             f = sampledFormFactor(sourceMesh, source, geometry, receiverMesh, receiver, analyticDistance);
         if (f < 0)
-            f = memberFormFactorSum(sourceMesh, source, geometry, receiver.centroid, receiver.normal,
-                                    analyticDistance);
+            f = memberFormFactorSum(sourceMesh, source, geometry, receiver.centroid, receiver.normal, analyticDistance);
     }
     if (f <= 0) return 0.0;
     // V from the sample pairs that face each other. On a curved cluster (a ball's cap) a
@@ -142,7 +141,8 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
     for (int k = 0; k < 4 && rays < samples; ++k) {
         // Skip repeated pairs (small clusters list the same member several times).
         bool repeat = false;
-        for (int m = 0; m < k; ++m) repeat |= sourceSamples[m] == sourceSamples[k] && receiver.samples[m] == receiver.samples[k];
+        for (int m = 0; m < k; ++m)
+            repeat |= sourceSamples[m] == sourceSamples[k] && receiver.samples[m] == receiver.samples[k];
         if (repeat || (anyFacing && !faces[k])) continue;
         ++rays;
         const Patch& at = receiverMesh.patches[receiver.samples[k]];
@@ -174,7 +174,8 @@ void memberVisibility(const PatchMesh& sourceMesh, const ClusterSamples& sourceS
         const int rays = std::min(count, kMemberRays);
         int seen = 0;
         for (int m = 0; m < rays; ++m)
-            seen += vis.visibleFromSurface(at.centroid, at.normal, sourceMesh.patches[facing[(k + m) % count]].centroid);
+            seen +=
+                vis.visibleFromSurface(at.centroid, at.normal, sourceMesh.patches[facing[(k + m) % count]].centroid);
         visible[k] = static_cast<double>(seen) / rays;
     }
 }

@@ -26,9 +26,9 @@ namespace rayrad::radiosity {
 /// A mirror image of C (source s) is corrected the same way, with its own geometry,
 /// its path visibility and its weight Π Ks.
 template <class V>
-typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, const Shooter& from, size_t c,
-                                                             size_t d, const ClusterSamples& shotSamples,
-                                                             const Emission& totalOfSource) {
+typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, const Shooter& from, size_t c, size_t d,
+                                                              const ClusterSamples& shotSamples,
+                                                              const Emission& totalOfSource) {
     const Cluster& C = from.cluster();
     const Cluster& D = m_clustering.clusters[d];
     pushPull(d);  // anything C sent earlier and still pending is now on D's patches
@@ -66,7 +66,7 @@ double ShootingCore<V>::correctRing(size_t c, int r, const std::vector<V>& overs
     // shooter and for each of its mirror images.
     const Cluster& C = m_clustering.clusters[c];
     const int old = m_light[c].radius;
-    std::vector<V> total(C.patches.size());  // what member i will have shipped after this shot
+    std::vector<V> total(C.patches.size());           // what member i will have shipped after this shot
     std::vector<double> shotPower(C.patches.size());  // what earlier shots carried, ≈ (L_i − ΔL_i) A_i
     for (size_t k = 0; k < C.patches.size(); ++k) {
         uint32_t i = C.patches[k];
@@ -91,9 +91,8 @@ double ShootingCore<V>::correctRing(size_t c, int r, const std::vector<V>& overs
         std::vector<Correction> moved(ring.size());
         if (!ring.empty()) {
             const Emission totalLight = emission(from, c, total);
-            tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) {
-                moved[k] = correct(s, from, c, ring[k], localShotSamples, totalLight);
-            });
+            tbb::parallel_for(size_t(0), ring.size(),
+                              [&](size_t k) { moved[k] = correct(s, from, c, ring[k], localShotSamples, totalLight); });
         }
         for (const Correction& m : moved) {
             redelivered += lum(atSource(m.removed, s.weight));
@@ -107,10 +106,9 @@ double ShootingCore<V>::correctRing(size_t c, int r, const std::vector<V>& overs
 }
 
 template ShootingCore<double>::Correction ShootingCore<double>::correct(const Source&, const Shooter&, size_t, size_t,
-                                                                       const ClusterSamples&,
-                                                                       const Emission&);
+                                                                        const ClusterSamples&, const Emission&);
 template ShootingCore<Rgb>::Correction ShootingCore<Rgb>::correct(const Source&, const Shooter&, size_t, size_t,
-                                                                 const ClusterSamples&, const Emission&);
+                                                                  const ClusterSamples&, const Emission&);
 
 template double ShootingCore<double>::correctRing(size_t, int, const std::vector<double>&,
                                                   const std::vector<std::optional<Shooter>>&,

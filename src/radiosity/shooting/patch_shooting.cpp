@@ -16,7 +16,7 @@ constexpr double kSharedRayDiameters = 2.0;
 
 template <class V>
 typename ShootingCore<V>::Emission ShootingCore<V>::emission(const Shooter& from, size_t c,
-                                                            const std::vector<V>& amount) const {
+                                                             const std::vector<V>& amount) const {
     Emission e{amount, {}};
     const MemberTree& tree = m_trees[c];
     if (tree.nodes.size() > 1 && m_options.shootFarDiameters > 0) {
@@ -63,7 +63,8 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s
             // whole group through one visibility ray, toward the member that sends it the
             // most; nearer, each member has its own.
             const Vec3 groupAt = s.image ? s.image->point(node.centroid) : node.centroid;
-            if (s.image && !s.image->mayPassToPoint(groupAt, 0.5 * node.diameter, rec.centroid)) return false;  // no light through
+            if (s.image && !s.image->mayPassToPoint(groupAt, 0.5 * node.diameter, rec.centroid))
+                return false;  // no light through
             const Vec3 toGroup = groupAt - rec.centroid;
             const double far = kSharedRayDiameters * node.diameter;
             const bool shared = node.size() > 1 && glm::dot(toGroup, toGroup) > far * far;
@@ -88,8 +89,10 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s
                 groupE += e;
                 if (std::abs(lum(e)) > strongest) strongest = std::abs(lum(e)), strongestSource = &src;
             }
-            if (shared && strongestSource) rays.add(strongestSource->centroid, groupE);
-            else if (shared) deltaE += groupE;  // no member with light of its own to aim at
+            if (shared && strongestSource)
+                rays.add(strongestSource->centroid, groupE);
+            else if (shared)
+                deltaE += groupE;  // no member with light of its own to aim at
             return false;
         });
         rays.flush();
@@ -127,14 +130,15 @@ double ShootingCore<V>::intoMirrorBacks(const Cluster& C, const std::vector<doub
     return flux;
 }
 
-
 template ShootingCore<double>::Emission ShootingCore<double>::emission(const Shooter&, size_t,
-                                                                      const std::vector<double>&) const;
+                                                                       const std::vector<double>&) const;
 template ShootingCore<Rgb>::Emission ShootingCore<Rgb>::emission(const Shooter&, size_t, const std::vector<Rgb>&) const;
-template ShootingCore<double>::Delivery ShootingCore<double>::shootPatches(const Source&, const Shooter&, size_t, const Emission&, size_t,
-                                                   std::vector<double>&, int64_t&);
-template ShootingCore<Rgb>::Delivery ShootingCore<Rgb>::shootPatches(const Source&, const Shooter&, size_t, const Emission&, size_t,
-                                             std::vector<Rgb>&, int64_t&);
+template ShootingCore<double>::Delivery ShootingCore<double>::shootPatches(const Source&, const Shooter&, size_t,
+                                                                           const Emission&, size_t,
+                                                                           std::vector<double>&, int64_t&);
+template ShootingCore<Rgb>::Delivery ShootingCore<Rgb>::shootPatches(const Source&, const Shooter&, size_t,
+                                                                     const Emission&, size_t, std::vector<Rgb>&,
+                                                                     int64_t&);
 template ShootingCore<double>::Shooter ShootingCore<double>::shooter(const Source&, size_t) const;
 template ShootingCore<Rgb>::Shooter ShootingCore<Rgb>::shooter(const Source&, size_t) const;
 template double ShootingCore<double>::intoMirrorBacks(const Cluster&, const std::vector<double>&) const;

@@ -1,11 +1,11 @@
-#include <radiosity/shooting/shooting_core.h>
 #include <core/check.h>
 #include <radiosity/mesh/patch_reflectance.h>
+#include <radiosity/shooting/shooting_core.h>
 
-#include <radiosity/shooting/cluster_transfer.h>
-#include <radiosity/form_factors/form_factor.h>
 #include <radiosity/clusters/member_tree.h>
+#include <radiosity/form_factors/form_factor.h>
 #include <radiosity/form_factors/patch_transfer.h>
+#include <radiosity/shooting/cluster_transfer.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -31,7 +31,11 @@ constexpr size_t kGroupSize = 8;
 template <class V>
 ShootingCore<V>::ShootingCore(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                               const Visibility& vis)
-    : m_scene(scene), m_mesh(mesh), m_clustering(clustering), m_vis(vis), m_options(scene.shooting),
+    : m_scene(scene),
+      m_mesh(mesh),
+      m_clustering(clustering),
+      m_vis(vis),
+      m_options(scene.shooting),
       m_analyticDistance(scene.formFactors.analyticDistance),
       m_mirrorImages(scene.mirrorImages.mirrors == scene::MirrorImageOptions::Mode::Image),
       m_clusterOptions(scene.clusters) {
@@ -89,12 +93,13 @@ void ShootingCore<V>::initialize(RadiositySolution& s) {
     m_stats.escapeFraction = escapeFraction(m_mesh, m_vis, 4 * m_scene.diagonal() + 1.0, firstFlux);
     // With mirrors, every path through them must be modelled (complete chains) for the
     // light shot to be accounted: delivered / Π Ks summed over images.
-    std::string conservationOff = !m_options.conserveEnergy                          ? "radiosity.conserve_energy"
+    std::string conservationOff = !m_options.conserveEnergy                         ? "radiosity.conserve_energy"
                                   : m_stats.escapeFraction >= kClosedEscapeFraction ? "open scene"
                                   : m_scene.mirrors.empty()                         ? ""
-                                  : !m_mirrorImages                         ? "mirrors ignored"
-                                  : m_mirrorChainsTruncated ? "mirror chains cut by mirror_depth, mirror_min_weight or mirror_min_share"
-                                                            : "";
+                                  : !m_mirrorImages                                 ? "mirrors ignored"
+                                  : m_mirrorChainsTruncated
+                                      ? "mirror chains cut by mirror_depth, mirror_min_weight or mirror_min_share"
+                                      : "";
     m_conserve = conservationOff.empty();
     m_light.assign(m_clustering.clusters.size(), Light{});
     for (size_t c = 0; c < m_light.size(); ++c) pull(c);
@@ -164,7 +169,7 @@ int ShootingCore<V>::radiusFor(size_t c) const {
     if (!m_clustering.enabled) return INT_MAX;
     const Cluster& C = m_clustering.clusters[c];
     double power = std::max(0.0, lum(m_light[c].total)) * C.area;  // L_C A_C, cd
-    double R = std::sqrt(power / m_maxStep);                        // m
+    double R = std::sqrt(power / m_maxStep);                       // m
     double rv = std::ceil(R / m_clustering.voxelSize);
     int maxDim = std::max({m_clustering.dims[0], m_clustering.dims[1], m_clustering.dims[2]});
     return static_cast<int>(std::clamp(rv, 1.0, static_cast<double>(maxDim + 1)));
@@ -334,8 +339,7 @@ void ShootingCore<V>::shootClusterToCluster(Shot& shot) {
                 }
                 SplitTransfer parts;
                 double t = clusterTransfer(from.mesh(), Cs, shot.localSamples[si], m_mesh, D, *s.vis,
-                                           m_analyticDistance, m_clusterOptions.receiverDetail, &from.geometry,
-                                           &parts);
+                                           m_analyticDistance, m_clusterOptions.receiverDetail, &from.geometry, &parts);
                 bool carried = false;
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V
                     thread_local std::vector<double> visible;

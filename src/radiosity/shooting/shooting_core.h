@@ -1,21 +1,21 @@
 // The shooting iteration itself, for one grey channel or three (see shooting_solver.h).
 #pragma once
 
-#include <radiosity/solution/light_value.h>
-#include <radiosity/shooting/closure.h>
-#include <radiosity/shooting/cluster_transfer.h>
 #include <radiosity/clusters/far_field.h>
+#include <radiosity/clusters/image_clusters.h>
 #include <radiosity/clusters/member_tree.h>
 #include <radiosity/mirrors/mirror_images.h>
-#include <radiosity/clusters/image_clusters.h>
+#include <radiosity/shooting/closure.h>
+#include <radiosity/shooting/cluster_transfer.h>
 #include <radiosity/shooting/shooting_statistics.h>
+#include <radiosity/solution/light_value.h>
 #include <radiosity/solution/solution.h>
 #include <scene/scene.h>
 #include <scene/settings.h>
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -58,7 +58,9 @@ class ShootingCore final : public ShootingCoreBase {
     void pushPullAll() override;
     void shootCluster(size_t c, int radius) override;
     double unshotFlux() const override;
-    bool pushPullDue() const override { return m_shotSincePushPull > m_clusterOptions.pushPullFraction * m_powerAtPushPull; }
+    bool pushPullDue() const override {
+        return m_shotSincePushPull > m_clusterOptions.pushPullFraction * m_powerAtPushPull;
+    }
     double maxIlluminanceStep() const override { return m_maxStep; }
     std::vector<ClusterLight> clusterLight() const override;
     const ShootingStatistics& statistics() const override { return m_stats; }
@@ -142,7 +144,8 @@ class ShootingCore final : public ShootingCoreBase {
     /// A cluster→cluster shot: adds e · shape_k (see receiverShape), × visible[k] when
     /// given (memberVisibility), to this shot's pending illuminance of the receiver's
     /// members (m_shotPending).
-    Delivery addPending(const Cluster& source, size_t receiver, const V& e, const std::vector<double>* visible = nullptr);
+    Delivery addPending(const Cluster& source, size_t receiver, const V& e,
+                        const std::vector<double>* visible = nullptr);
     void receive(size_t j, const V& deltaE);
     /// Patch→patch from cluster c of source s (as `from` shows it) to the receiver's
     /// patches: adds ΔE_j to into[j]. `terms` counts the source terms evaluated (members
@@ -174,7 +177,7 @@ class ShootingCore final : public ShootingCoreBase {
     /// One shot of cluster c: what its passes share.
     struct Shot {
         size_t c = 0;
-        int r = 0;  ///< r_v in voxels: receivers nearer take patch→patch
+        int r = 0;                                     ///< r_v in voxels: receivers nearer take patch→patch
         std::vector<std::optional<Shooter>> shooters;  ///< per source; none where nothing of c passes its chain
         std::vector<std::vector<char>> corrected;      ///< [source][receiver]: got the source's total in a correction
         std::vector<V> overshoot;                      ///< per member: what it ships beyond its unshot light
@@ -220,8 +223,8 @@ class ShootingCore final : public ShootingCoreBase {
     /// flux (lm, at the source) the corrections took away, to be delivered again.
     /// `overshoot`: what each member ships beyond its unshot light this shot.
     double correctRing(size_t c, int r, const std::vector<V>& overshoot,
-                       const std::vector<std::optional<Shooter>>& shooters,
-                       std::vector<std::vector<char>>& corrected, AtSource& delivered);  // energy_correction.cpp
+                       const std::vector<std::optional<Shooter>>& shooters, std::vector<std::vector<char>>& corrected,
+                       AtSource& delivered);  // energy_correction.cpp
     bool coplanar(const Cluster& a, const Cluster& b) const;
     /// False when no light of cluster c (as source s shows it: Cs) can pass through s's
     /// mirrors to cluster d: c lies behind the chain's first mirror, d behind its last,
@@ -252,8 +255,8 @@ class ShootingCore final : public ShootingCoreBase {
     const Clustering& m_clustering;
     const Visibility& m_vis;
     scene::ShootingOptions m_options;  ///< overshoot is switched off when the residual stalls
-    double m_analyticDistance;          ///< scene.formFactors.analyticDistance
-    bool m_mirrorImages;                ///< scene.mirrorImages: the image method on
+    double m_analyticDistance;         ///< scene.formFactors.analyticDistance
+    bool m_mirrorImages;               ///< scene.mirrorImages: the image method on
     scene::ClusterOptions m_clusterOptions;
     double m_maxStep = 0;
     std::vector<V> m_reflectance, m_direct, m_indirect, m_unshot, m_pending;
@@ -277,17 +280,17 @@ class ShootingCore final : public ShootingCoreBase {
     /// their centroids mirrored.
     std::vector<MemberTree> m_trees;
     bool m_conserve = false;
-    bool m_finished = false;            ///< finish() has run: the per-patch arrays are gone
-    double m_finishedUnshotFlux = 0;    ///< lm, unshotFlux() when finish() ran
+    bool m_finished = false;          ///< finish() has run: the per-patch arrays are gone
+    double m_finishedUnshotFlux = 0;  ///< lm, unshotFlux() when finish() ran
     /// The mirrors' back faces (vertices reversed, normal −n): light shot into them is
     /// absorbed (a mirror's back is not a patch).
     std::vector<std::vector<Vec3>> m_mirrorBacks;
     /// Flux (lm) the members of cluster c send into mirror backs, unoccluded form factors.
     double intoMirrorBacks(const Cluster& C, const std::vector<double>& unshotPower) const;
     bool m_mirrorChainsTruncated = false;  ///< some light reflected beyond the chains is not modelled
-    V m_meanReflectance{0.0};  ///< area-weighted ρ̄
-    double m_area = 0;         ///< Σ A_i, m²
-    V m_signedUnshot{0.0};     ///< Σ_C (ΔL_C + pending) A_C in cd, signed; set by step()
+    V m_meanReflectance{0.0};              ///< area-weighted ρ̄
+    double m_area = 0;                     ///< Σ A_i, m²
+    V m_signedUnshot{0.0};                 ///< Σ_C (ΔL_C + pending) A_C in cd, signed; set by step()
     double m_shotSincePushPull = 0;
     double m_powerAtPushPull = 0;
     ShootingStatistics m_stats;

@@ -1,5 +1,5 @@
-#include <radiosity/shooting/shooting_solver.h>
 #include <radiosity/mesh/patch_reflectance.h>
+#include <radiosity/shooting/shooting_solver.h>
 
 #include <radiosity/shooting/shooting_core.h>
 
@@ -30,8 +30,12 @@ ShootingSolver::ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh,
 
 ShootingSolver::~ShootingSolver() = default;
 
-void ShootingSolver::initialize(RadiositySolution& s) { m_core->initialize(s); }
-bool ShootingSolver::step(RadiositySolution& s) { return m_core->step(s, /*sync=*/true); }
+void ShootingSolver::initialize(RadiositySolution& s) {
+    m_core->initialize(s);
+}
+bool ShootingSolver::step(RadiositySolution& s) {
+    return m_core->step(s, /*sync=*/true);
+}
 void ShootingSolver::pushPullAll(RadiositySolution& s) {
     m_core->pushPullAll();
     m_core->sync(s);
@@ -42,11 +46,19 @@ void ShootingSolver::shootCluster(size_t c, RadiositySolution& s, int radius) {
     m_core->sync(s);
 }
 
-double ShootingSolver::maxIlluminanceStep() const { return m_core->maxIlluminanceStep(); }
-std::vector<ClusterLight> ShootingSolver::clusterLight() const { return m_core->clusterLight(); }
-const ShootingStatistics& ShootingSolver::statistics() const { return m_core->statistics(); }
+double ShootingSolver::maxIlluminanceStep() const {
+    return m_core->maxIlluminanceStep();
+}
+std::vector<ClusterLight> ShootingSolver::clusterLight() const {
+    return m_core->clusterLight();
+}
+const ShootingStatistics& ShootingSolver::statistics() const {
+    return m_core->statistics();
+}
 
-double ShootingSolver::unshotFlux() const { return m_core->unshotFlux(); }
+double ShootingSolver::unshotFlux() const {
+    return m_core->unshotFlux();
+}
 
 void ShootingSolver::solve(RadiositySolution& s, const PushPullHook& onPushPull,
                            const std::function<void(const RadiositySolution&)>& onProgress) {

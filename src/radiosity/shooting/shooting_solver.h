@@ -3,8 +3,8 @@
 
 #include <core/visibility.h>
 #include <radiosity/clusters/clusters.h>
-#include <radiosity/shooting/shooting_statistics.h>
 #include <radiosity/mesh/patch_mesh.h>
+#include <radiosity/shooting/shooting_statistics.h>
 #include <radiosity/solution/solution.h>
 #include <scene/scene.h>
 #include <scene/settings.h>

@@ -1,6 +1,5 @@
 #include <radiosity/solution/seam_profiles.h>
 
-
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -47,7 +46,8 @@ void SeamProfiles::index(const PatchMesh& mesh) {
         Edge key;
         key.from = from, key.to = to;
         auto it = std::lower_bound(m_edges.begin(), m_edges.end(), key, edgeLess);
-        return it != m_edges.end() && it->from == from && it->to == to ? static_cast<int32_t>(it - m_edges.begin()) : -1;
+        return it != m_edges.end() && it->from == from && it->to == to ? static_cast<int32_t>(it - m_edges.begin())
+                                                                       : -1;
     };
     m_patchIndex.assign(mesh.patches.size(), -1);
     for (size_t i = 0; i < mesh.patches.size(); ++i) {

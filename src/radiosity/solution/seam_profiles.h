@@ -63,14 +63,14 @@ class SeamProfiles {
     /// 2 (s and r seams, t not), corner indices 0–2, and the profiles (−1: not gathered).
     struct PatchProfiles {
         int8_t kind = 0;
-        std::array<int8_t, 3> corner{};  ///< kind 1: s, t, u; kind 2: s, r, t
+        std::array<int8_t, 3> corner{};          ///< kind 1: s, t, u; kind 2: s, r, t
         std::array<int32_t, 2> profile{-1, -1};  ///< kind 1: s→t, s→u; kind 2: s→t, r→t
     };
     /// δ along edge `e` at τ ∈ [0, 1].
     Rgb profileAt(int32_t e, double tau) const;
 
-    std::vector<uint32_t> m_seams;  ///< sorted, unique
-    std::vector<Edge> m_edges;      ///< sorted by (from, to), unique
+    std::vector<uint32_t> m_seams;      ///< sorted, unique
+    std::vector<Edge> m_edges;          ///< sorted by (from, to), unique
     std::vector<int32_t> m_patchIndex;  ///< per patch: into m_patches, −1 none (empty before index())
     std::vector<PatchProfiles> m_patches;
 };

@@ -25,9 +25,9 @@ struct RadiositySolution {
 
     // Statistics of the solve.
     int64_t shots = 0;
-    double emittedFlux = 0;           ///< lm the lights emit (set by the direct pass)
-    double initialUnshotFlux = 0;     ///< lm left to distribute after the direct pass
-    double remainingUnshotFlux = 0;   ///< lm still unshot at the end: Σ π |Y(ΔL_i)| A_i
+    double emittedFlux = 0;          ///< lm the lights emit (set by the direct pass)
+    double initialUnshotFlux = 0;    ///< lm left to distribute after the direct pass
+    double remainingUnshotFlux = 0;  ///< lm still unshot at the end: Σ π |Y(ΔL_i)| A_i
     /// The same net of sign, Σ π Y(ΔL_i) A_i (lm; ΔL_i may be negative after corrections
     /// and overshooting): the unshot term of the energy balance. The solve keeps no
     /// per-patch ΔL beyond its own end (24 bytes per patch nothing else reads).

@@ -15,7 +15,8 @@ namespace rayrad::radiosity {
 namespace {
 
 constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
-constexpr uint32_t kVersion = 5;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux; 5: unshot net flux, not ΔL per patch
+constexpr uint32_t kVersion =
+    5;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux; 5: unshot net flux, not ΔL per patch
 constexpr uint32_t kByteOrder = 0x01020304;
 
 /// 64-bit FNV-1a over values' bytes.
@@ -82,7 +83,8 @@ class Reader {
     std::vector<T> getArray(size_t expected, const char* what, bool orNone = false) {
         const auto n = get<uint64_t>(what);
         if (n != expected && !(orNone && n == 0))
-            throw InputError(placeMessage(m_path, "", fmt::format("{}: {} values where {} were expected (a damaged file)", what, n, expected)));
+            throw InputError(placeMessage(
+                m_path, "", fmt::format("{}: {} values where {} were expected (a damaged file)", what, n, expected)));
         need(n * sizeof(T), what);
         std::vector<T> v(n);
         std::memcpy(v.data(), m_in.data() + m_at, n * sizeof(T));
@@ -110,7 +112,8 @@ class Reader {
 
   private:
     void need(size_t n, const char* what) const {
-        if (m_end - m_at < n) throw InputError(placeMessage(m_path, "", std::string("the file ends inside ") + what + " (truncated?)"));
+        if (m_end - m_at < n)
+            throw InputError(placeMessage(m_path, "", std::string("the file ends inside ") + what + " (truncated?)"));
     }
     const std::string& m_in;
     size_t m_at = 0, m_end;
@@ -127,10 +130,12 @@ SeamProfiles getProfiles(Reader& r, size_t vertexCount, const std::string& path)
     auto seams = r.getAnyArray<uint32_t>("the seam vertices");
     auto edges = r.getAnyArray<SeamProfiles::Edge>("the seam profiles");
     for (uint32_t v : seams)
-        if (v >= vertexCount) throw InputError(placeMessage(path, "", "a seam vertex beyond the mesh's (a damaged file)"));
+        if (v >= vertexCount)
+            throw InputError(placeMessage(path, "", "a seam vertex beyond the mesh's (a damaged file)"));
     for (const auto& e : edges)
         if (e.from >= vertexCount || e.to >= vertexCount)
-            throw InputError(placeMessage(path, "", "a seam profile's edge beyond the mesh's vertices (a damaged file)"));
+            throw InputError(
+                placeMessage(path, "", "a seam profile's edge beyond the mesh's vertices (a damaged file)"));
     return SeamProfiles(std::move(seams), std::move(edges));
 }
 
@@ -152,8 +157,8 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
 
     Hash m;
     for (const auto& mat : scene.materials)
-        m << mat.name << static_cast<int>(mat.kind) << Vec3(mat.reflectance) << Vec3(mat.specular)
-          << mat.ior << mat.twoSided << mat.texture;
+        m << mat.name << static_cast<int>(mat.kind) << Vec3(mat.reflectance) << Vec3(mat.specular) << mat.ior
+          << mat.twoSided << mat.texture;
     // A texture changes the solution through the patches' mean reflectances.
     for (const auto& rho : mesh.texturedReflectance) m << Vec3(rho);
     f.materials = m.value();
@@ -162,8 +167,9 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     for (const auto& mat : scene.materials) l << Vec3(mat.emission);  // emitters are lights
     l << scene.lights.size();
     for (const auto& light : scene.lights) {
-        l << light.position << Vec3(light.intensity) << light.isSpot << light.direction << light.cosInner << light.cosOuter
-          << light.nadir << light.c0 << light.photometricScale << light.photometricFlux << light.openingPoints.size();
+        l << light.position << Vec3(light.intensity) << light.isSpot << light.direction << light.cosInner
+          << light.cosOuter << light.nadir << light.c0 << light.photometricScale << light.photometricFlux
+          << light.openingPoints.size();
         for (const auto& p : light.openingPoints) l << p;
         if (light.photometry) {
             const auto& w = *light.photometry;
@@ -181,7 +187,9 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     const auto groups = scene::lightGroups(scene);
     std::map<std::string, double> strength;
     for (const auto& name : groups) strength[name] = 0;
-    auto lightStrength = [](const scene::PointLight& light) { return luminance(light.intensity) * light.photometricScale; };
+    auto lightStrength = [](const scene::PointLight& light) {
+        return luminance(light.intensity) * light.photometricScale;
+    };
     for (const auto& light : scene.lights) strength[light.lightGroup] += lightStrength(light);
     for (const auto& mat : scene.materials) strength[mat.lightGroup] += luminance(mat.emission);
     auto relative = [&](const std::string& group, double value) {
@@ -213,9 +221,9 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     const auto& rec = scene.reconstruction;
     const auto& mirrors = scene.mirrorImages;
     s << shoot.stopUnshot << shoot.maxShots << shoot.maxSeconds << scene.formFactors.analyticDistance
-      << scene.direct.areaLightSamples << gather.gatherLevels << gather.gatherRefineLevels << gather.gatherRefineTolerance
-      << gather.gatherFarDiameters << shoot.shootFarDiameters << gather.gatherMinWeight << rec.linear()
-      << rec.edgeGatherLevels << rec.seamProfileNodes << mirrors.imageMethod() << mirrors.mirrorDepth
+      << scene.direct.areaLightSamples << gather.gatherLevels << gather.gatherRefineLevels
+      << gather.gatherRefineTolerance << gather.gatherFarDiameters << shoot.shootFarDiameters << gather.gatherMinWeight
+      << rec.linear() << rec.edgeGatherLevels << rec.seamProfileNodes << mirrors.imageMethod() << mirrors.mirrorDepth
       << mirrors.mirrorMinWeight << mirrors.mirrorMinShare << shoot.conserveEnergy << shoot.overshoot
       << shoot.oneChannelWhenGrey;
     const auto& c = scene.clusters;
@@ -238,9 +246,11 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
     w.putArray(sol.directCorner);
     w.putArray(sol.indirect);
     w.putArray(sol.vertexIndirect);
-    w.put(sol.shots), w.put(sol.emittedFlux), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux), w.put(sol.unshotNetFlux);
+    w.put(sol.shots), w.put(sol.emittedFlux), w.put(sol.initialUnshotFlux), w.put(sol.remainingUnshotFlux),
+        w.put(sol.unshotNetFlux);
     w.put(static_cast<uint8_t>(sol.converged));
-    w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary), w.put(sol.backAbsorbedDirect);
+    w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary),
+        w.put(sol.backAbsorbedDirect);
     w.putArray(sol.backFlux);
     putProfiles(w, sol.seamProfiles);
     // The light groups' parts (the arrays the renderer reads), with the strengths they had.
@@ -272,9 +282,10 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     r.skip(sizeof kMagic);
     const auto version = r.get<uint32_t>("the version");
     if (version != kVersion)
-        throw fail(fmt::format("a solution of format version {}; this rayrad reads version {}: solve the scene again "
-                               "(rayrad solve SCENE --save FILE)",
-                               version, kVersion));
+        throw fail(
+            fmt::format("a solution of format version {}; this rayrad reads version {}: solve the scene again "
+                        "(rayrad solve SCENE --save FILE)",
+                        version, kVersion));
     if (r.get<uint32_t>("the byte-order mark") != kByteOrder) throw fail("written on a machine of another byte order");
     uint64_t stored;
     std::memcpy(&stored, bytes.data() + end, sizeof stored);
@@ -283,9 +294,9 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     f.geometry = r.get<uint64_t>("the fingerprint"), f.materials = r.get<uint64_t>("the fingerprint");
     f.lights = r.get<uint64_t>("the fingerprint"), f.settings = r.get<uint64_t>("the fingerprint");
     f.lightShapes = r.get<uint64_t>("the fingerprint");
-    const char* differs = f.geometry != expected.geometry   ? "geometry (or its meshing settings)"
-                          : f.materials != expected.materials ? "materials"
-                          : f.settings != expected.settings   ? "radiosity or cluster settings"
+    const char* differs = f.geometry != expected.geometry         ? "geometry (or its meshing settings)"
+                          : f.materials != expected.materials     ? "materials"
+                          : f.settings != expected.settings       ? "radiosity or cluster settings"
                           : f.lightShapes != expected.lightShapes ? "lights"
                                                                   : nullptr;
     if (differs)
@@ -296,7 +307,8 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     const bool dimmed = f.lights != expected.lights;
     const auto patches = r.get<uint64_t>("the patch count"), vertices = r.get<uint64_t>("the vertex count");
     if (patches != patchCount || vertices != vertexCount)
-        throw fail(fmt::format("{} patches and {} vertices where the scene has {} and {}", patches, vertices, patchCount, vertexCount));
+        throw fail(fmt::format("{} patches and {} vertices where the scene has {} and {}", patches, vertices,
+                               patchCount, vertexCount));
     RadiositySolution sol;
     sol.directMean = r.getArray<Rgb>(patchCount, "the direct illuminance");
     sol.directCorner = r.getArray<RgbF>(3 * patchCount, "the corner direct illuminance", true);
@@ -320,8 +332,9 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     const auto groupCount = r.get<uint64_t>("the light groups");
     if (!dimmed) return sol;  // the full solve itself (its seam profiles to be indexed by the caller)
     if (groupCount == 0 || groupCount != expected.groupStrengths.size())
-        throw fail("the lights differ from those the solution was computed for (only dimming whole light groups can be "
-                   "applied to a saved solution, and only to one saved with light groups); solve the scene again");
+        throw fail(
+            "the lights differ from those the solution was computed for (only dimming whole light groups can be "
+            "applied to a saved solution, and only to one saved with light groups); solve the scene again");
     // Σ_g (S'_g / S_g) part_g.
     sol.directMean.assign(patchCount, Rgb(0.0));
     sol.directCorner.assign(3 * patchCount, RgbF(0.0f));
@@ -337,7 +350,8 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
         const double scale = then > 0 ? now / then : 0.0;
         const auto add = [&](auto& total, const auto& part) {
             if (part.size() != total.size()) return;  // corner values not kept for this part
-            for (size_t i = 0; i < total.size(); ++i) total[i] += static_cast<std::decay_t<decltype(total[0][0])>>(scale) * part[i];
+            for (size_t i = 0; i < total.size(); ++i)
+                total[i] += static_cast<std::decay_t<decltype(total[0][0])>>(scale) * part[i];
         };
         add(sol.directMean, r.getArray<Rgb>(patchCount, "a light group's direct illuminance"));
         add(sol.directCorner, r.getArray<RgbF>(3 * patchCount, "a light group's corner direct illuminance", true));

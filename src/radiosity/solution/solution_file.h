@@ -43,8 +43,8 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
 /// The file's bytes: magic "RAYRADSOL", format version, byte-order mark, fingerprint,
 /// counts, the per-patch and per-vertex arrays, the solve's statistics, and a checksum of
 /// all of it.
-std::string encodeSolution(const RadiositySolution& solution, const SolutionFingerprint& fingerprint, size_t vertexCount,
-                           const std::vector<GroupSolution>& groups = {});
+std::string encodeSolution(const RadiositySolution& solution, const SolutionFingerprint& fingerprint,
+                           size_t vertexCount, const std::vector<GroupSolution>& groups = {});
 
 /// The solution in `bytes` (read from `path`, named in messages). Throws InputError when
 /// it is not a rayrad solution, is of another version or byte order, is damaged (the
