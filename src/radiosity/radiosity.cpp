@@ -8,7 +8,6 @@
 #include <radiosity/mesh/contact_outlines.h>
 #include <radiosity/mesh/covered_patches.h>
 #include <radiosity/mesh/mesher.h>
-#include <radiosity/mirrors/mirror_images.h>
 
 #include <fmt/format.h>
 
@@ -54,13 +53,12 @@ void findContacts(PatchMesh& mesh, const scene::Scene& scene, const Visibility& 
 Lighting solveDirect(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis, const StageLog& log) {
     Lighting lighting;
     lighting.lights = std::make_unique<DirectLight>(scene);
-    lighting.mirrorImages = mirrorImagesFor(scene).size();
     if (scene.mirrors.empty())
         log.skip("virtual lights and shooters (no mirrors)");
     else if (!scene.mirrorImages.imageMethod())
         log.skip("virtual lights and shooters (mirrors ignored)");
-    log.begin(lighting.mirrorImages > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
-                                                      lighting.lights->virtualLightCount(), lighting.mirrorImages)
+    log.begin(lighting.mirrorImages() > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
+                                                        lighting.lights->virtualLightCount(), lighting.mirrorImages())
                                         : std::string("direct light"));
     Progress progress("direct light", log.quiet);
     computeDirect(scene, mesh, *lighting.lights, vis, scene.direct.areaLightSamples, lighting.solution,
@@ -111,7 +109,6 @@ Lighting loadSolution(const scene::Scene& scene, const PatchMesh& mesh, const st
     log.begin("load solution");
     Lighting lighting;
     lighting.lights = std::make_unique<DirectLight>(scene);
-    lighting.mirrorImages = mirrorImagesFor(scene).size();
     lighting.solution =
         decodeSolution(bytes, path, fingerprintOf(scene, mesh), mesh.patches.size(), mesh.vertices.size());
     lighting.solution.seamProfiles.index(mesh);

@@ -49,10 +49,11 @@ struct Lighting {
     ShootingStatistics shooting;
     double maxIlluminanceStep = 0;     ///< ΔI_max the shooting used, lx
     bool singleChannel = false;        ///< the scene is grey: one channel was solved
-    size_t mirrorImages = 0;           ///< image chains of the image method
     GatheredVertices displayVertices;  ///< vertices whose display value came from a point gather
     size_t seamProfileGathers = 0;     ///< point gathers the seam profiles took
     size_t sensorGathers = 0;          ///< point gathers the sensors took (their own and every re-gather)
+    /// Image chains of the image method (the lights know them).
+    size_t mirrorImages() const { return lights ? lights->imageCount() : 0; }
 };
 
 // 1. The mesh.

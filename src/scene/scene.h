@@ -139,7 +139,8 @@ struct BuildWarnings {
     std::vector<std::string> missingTextures;  ///< mesh-file materials whose image is missing, one line each
 };
 
-struct Scene {
+/// The validated scene in world space, with its settings (scene.shooting, scene.render …).
+struct Scene : Settings {
     std::string file;
     std::vector<Material> materials;
     std::vector<std::string> textures;  ///< image files of the materials' textures (Material::texture)
@@ -153,15 +154,6 @@ struct Scene {
     std::vector<View> views;         ///< every named view
     std::vector<Camera> pathFrames;  ///< the walkthrough's frames ("camera_path"), in order
     std::vector<Sensor> sensors;
-    MeshingOptions meshing;
-    ClusterOptions clusters;
-    DirectOptions direct;
-    FormFactorOptions formFactors;
-    MirrorImageOptions mirrorImages;
-    ShootingOptions shooting;
-    GatherOptions gather;
-    ReconstructionOptions reconstruction;
-    RenderOptions render;
     BuildWarnings warnings;
 
     /// Axis-aligned bounds of all geometry.

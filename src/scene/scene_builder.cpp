@@ -117,15 +117,7 @@ class Builder {
     Scene build() {
         Scene s;
         s.file = m_desc.file;
-        s.meshing = m_desc.meshing;
-        s.clusters = m_desc.clusters;
-        s.direct = m_desc.direct;
-        s.formFactors = m_desc.formFactors;
-        s.mirrorImages = m_desc.mirrorImages;
-        s.shooting = m_desc.shooting;
-        s.gather = m_desc.gather;
-        s.reconstruction = m_desc.reconstruction;
-        s.render = m_desc.render;
+        static_cast<Settings&>(s) = m_desc;
         std::map<std::string, int> materialIndex;
         for (const auto& m : m_desc.materials) {
             materialIndex[m.name] = static_cast<int>(s.materials.size());

@@ -125,7 +125,8 @@ struct SurfaceGridDesc {
     double minArea = 0.01;          ///< m²: smaller surfaces (a leg's end, a seam) get no grid
 };
 
-struct SceneDesc {
+/// The scene file as plain data, with its settings (desc.meshing, desc.render …).
+struct SceneDesc : Settings {
     std::string file;  ///< the scene file's path, for messages
     std::vector<MaterialDesc> materials;
     std::vector<ObjectDesc> objects;
@@ -136,15 +137,6 @@ struct SceneDesc {
     std::optional<CameraPathDesc> cameraPath;   ///< "camera_path": a walkthrough's frames
     std::vector<SensorDesc> sensors;            ///< points, with grids already expanded
     std::vector<SurfaceGridDesc> surfaceGrids;  ///< expanded into sensors by the builder
-    MeshingOptions meshing;
-    ClusterOptions clusters;
-    DirectOptions direct;
-    FormFactorOptions formFactors;
-    MirrorImageOptions mirrorImages;
-    ShootingOptions shooting;
-    GatherOptions gather;
-    ReconstructionOptions reconstruction;
-    RenderOptions render;
 };
 
 }  // namespace rayrad::scene

@@ -205,4 +205,19 @@ struct RenderOptions {
     bool gatherIndirect = false;
 };
 
+/// Every stage's settings, one struct per stage and sub-stage, in the order of the data
+/// flow: what the scene file's "radiosity", "clusters" and "render" objects set (and --set
+/// overrides). The scene description and the scene carry them (SceneDesc, Scene).
+struct Settings {
+    MeshingOptions meshing;
+    DirectOptions direct;
+    FormFactorOptions formFactors;
+    MirrorImageOptions mirrorImages;
+    ClusterOptions clusters;
+    ShootingOptions shooting;
+    GatherOptions gather;
+    ReconstructionOptions reconstruction;
+    RenderOptions render;
+};
+
 }  // namespace rayrad::scene

@@ -77,6 +77,7 @@ check "compare: unknown metric is exit 2" test $? -eq 2
 # The golden Cornell box (tests/data/cornell_64.exr, as golden_image_test renders it) through
 # rayrad compare, as an image-diff test would use it.
 "$rayrad" render "$src/scenes/cornell/cornell.json" --set camera.resolution=[64,64] --spp 4 --set radiosity.max_edge=0.1 \
+    --set render.area_light_samples=16 \
     -o "$work/cornell64.exr" -q > /dev/null 2>&1
 "$rayrad" compare "$work/cornell64.exr" "$src/tests/data/cornell_64.exr" --calibrate none \
     --fail-above median_abs_rel_pct=0.5 --fail-above ssim_loss=0.005 > "$work/golden.txt" 2>&1

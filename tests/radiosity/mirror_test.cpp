@@ -35,7 +35,7 @@ TEST_CASE("SPH2 and SPH4: total illuminance at the paper's points within the pap
     for (auto [file, bound] :
          {std::pair{"scenes/sphere/sph2.json", 0.023}, std::pair{"scenes/sphere/sph4.json", 0.065}}) {
         auto run = test::solve(test::sourcePath(file));
-        REQUIRE(run.lighting.mirrorImages > 0);
+        REQUIRE(run.lighting.mirrorImages() > 0);
         REQUIRE(!run.sensors.empty());
         for (const auto& s : run.sensors) {
             double total = luminance(s.value.direct + s.value.indirect);
@@ -237,7 +237,7 @@ TEST_CASE("a room between two facing mirrors solves and stays finite", "[mirrors
         "sensors": [{"name": "floor", "position": [1.5, 0, 1], "normal": [0, 1, 0]}],
         "radiosity": {"max_edge": 0.5, "mirror_depth": 6}})";
     auto run = test::solve(test::writeTempScene("facing_mirrors", json));
-    CHECK(run.lighting.mirrorImages == 12);
+    CHECK(run.lighting.mirrorImages() == 12);
     CHECK(run.lighting.solution.converged);
     for (const auto& s : run.sensors) {
         CHECK(std::isfinite(luminance(s.value.indirect)));

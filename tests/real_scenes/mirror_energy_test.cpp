@@ -84,7 +84,7 @@ TEST_CASE(
     INFO((areaLight ? "24-gon lamp" : "point light")
          << ", gap " << gap << " m, ceiling " << height << " m: direct " << 100 * b.directError() << " %, secondary "
          << 100 * b.secondaryError() << " %, mirrors absorbed " << b.mirrorAbsorbed << " lm");
-    CHECK(run.lighting.mirrorImages == 5);
+    CHECK(run.lighting.mirrorImages() == 5);
     CHECK(b.mirrorAbsorbed > 0);
     CHECK(std::abs(b.directError()) < 1e-3);
     CHECK(std::abs(b.relativeError()) < 1e-3);
@@ -129,10 +129,10 @@ TEST_CASE("mirror chains that can carry almost no light are cut by their etendue
             quiet());
     };
     auto all = runWith(0), cut = runWith(1e-5);
-    INFO("images: " << all.lighting.mirrorImages << " all, " << cut.lighting.mirrorImages << " with the cut");
-    CHECK(cut.lighting.mirrorImages >=
+    INFO("images: " << all.lighting.mirrorImages() << " all, " << cut.lighting.mirrorImages() << " with the cut");
+    CHECK(cut.lighting.mirrorImages() >=
           6);  // the five single mirrors, the facing one and its chains with the big mirror
-    CHECK(cut.lighting.mirrorImages * 3 < all.lighting.mirrorImages * 2);  // 46 -> 22 when written
+    CHECK(cut.lighting.mirrorImages() * 3 < all.lighting.mirrorImages() * 2);  // 46 -> 22 when written
     REQUIRE(all.sensors.size() == cut.sensors.size());
     for (size_t k = 0; k < all.sensors.size(); ++k) {
         const double a = luminance(all.sensors[k].value.direct + all.sensors[k].value.indirect);
