@@ -29,7 +29,9 @@ std::vector<std::string> candidates() {
     const auto dir = programDirectory();
     if (!dir.empty()) {
         out.push_back((dir / "librayrad_image.so").string());
-        out.push_back((dir / ".." / "lib" / "rayrad" / "librayrad_image.so").string());
+#ifdef RAYRAD_IMAGE_MODULE_INSTALLED
+        out.push_back((dir / RAYRAD_IMAGE_MODULE_INSTALLED / "librayrad_image.so").string());  // cmake --install
+#endif
     }
 #ifdef RAYRAD_IMAGE_MODULE_BUILD
     out.emplace_back(RAYRAD_IMAGE_MODULE_BUILD);  // tests and benches run from elsewhere in the build tree

@@ -58,7 +58,8 @@ class ImageLibrary {
 };
 
 /// The image libraries, loaded on first use (thread-safe): $RAYRAD_IMAGE_MODULE, else
-/// librayrad_image.so beside the program, in ../lib/rayrad/ from it, or in the build tree.
+/// librayrad_image.so beside the program, where `cmake --install` puts it (lib/rayrad/), or
+/// in the build tree.
 /// Throws std::runtime_error when none loads.
 const ImageLibrary& imageLibrary();
 
