@@ -79,6 +79,52 @@ class Prober {
     double m_diagonal;
 };
 
+/// One line per sensor (empty when it looks fine), in the sensors' order; `inSolid` as
+/// for sceneWarnings.
+std::vector<std::string> sensorWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                                        const raytrace::EmbreeScene& embree, const Prober& prober, double near,
+                                        std::vector<std::string>* inSolid) {
+    const double diagonal = scene.diagonal();
+    auto enclosed = [](const Probe& p) { return p.fraction(p.backFaces) >= kEnclosedFraction; };
+    // Each sensor probed on its own (64 rays: a million sensors took 9 CPU-s), the lines in
+    // the sensors' order.
+    const size_t sensors = scene.sensors.size();
+    std::vector<std::string> sensorLines(sensors);
+    if (inSolid) inSolid->assign(sensors, std::string());
+    tbb::parallel_for(size_t(0), sensors, [&](size_t i) {
+        const scene::Sensor& s = scene.sensors[i];
+        // As the gather sees it: on a surface's rim, from just inside the sensor's patch.
+        Vec3 x = s.position;
+        if (auto at = radiosity::locateOnMesh(mesh, x, s.normal, 1e-6 * diagonal, &embree))
+            if (radiosity::onSurfaceBoundary(mesh, *at, 1e-5 * diagonal, &embree))
+                x = radiosity::nudgeInside(mesh, at->patch, x, 1e-6 * diagonal);
+        Probe p = prober.probe(x, s.normal, near);
+        std::string inside;  // why it is no measurement
+        if (p.fraction(p.mirrorBacks) >= 0.5)
+            sensorLines[i] = fmt::format(
+                "/sensors: sensor \"{}\" at {} is behind a mirror ({} of {} hemisphere rays "
+                "hit its back): it will read about 0",
+                s.name, toString(s.position), p.mirrorBacks, p.rays);
+        else if (p.coveredFraction() >= kEnclosedFraction) {
+            inside = "buried";
+            sensorLines[i] = fmt::format(
+                "/sensors: sensor \"{}\" at {} is buried: {:.0f} % of its view (cosine-weighted) "
+                "meets a surface within {:.3g} m, so it will read about 0 (check its position "
+                "and normal)",
+                s.name, toString(s.position), 100 * p.coveredFraction(), near);
+        } else if (enclosed(p)) {
+            inside = "inside a solid";
+            sensorLines[i] = fmt::format(
+                "/sensors: sensor \"{}\" at {} is inside a solid ({} of {} hemisphere rays hit "
+                "the inside of surfaces): it will read about 0",
+                s.name, toString(s.position), p.backFaces, p.rays);
+        }
+        if (!inside.empty() && !s.grid.empty()) sensorLines[i] += "; left out of its grid's statistics";
+        if (inSolid) (*inSolid)[i] = inside;
+    });
+    return sensorLines;
+}
+
 }  // namespace
 
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
@@ -150,44 +196,10 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
         if (misses == rays)
             out.push_back(fmt::format("/camera: the camera at {} sees no surface at all", toString(cam.position)));
     }
-    // Each sensor probed on its own (64 rays: a million sensors took 9 CPU-s), the lines in
-    // the sensors' order.
-    const size_t sensors = checkSensors ? scene.sensors.size() : 0;
-    std::vector<std::string> sensorLines(sensors);
-    if (inSolid) inSolid->assign(sensors, std::string());
-    tbb::parallel_for(size_t(0), sensors, [&](size_t i) {
-        const scene::Sensor& s = scene.sensors[i];
-        // As the gather sees it: on a surface's rim, from just inside the sensor's patch.
-        Vec3 x = s.position;
-        if (auto at = radiosity::locateOnMesh(mesh, x, s.normal, 1e-6 * diagonal, &embree))
-            if (radiosity::onSurfaceBoundary(mesh, *at, 1e-5 * diagonal, &embree))
-                x = radiosity::nudgeInside(mesh, at->patch, x, 1e-6 * diagonal);
-        Probe p = prober.probe(x, s.normal, near);
-        std::string inside;  // why it is no measurement
-        if (p.fraction(p.mirrorBacks) >= 0.5)
-            sensorLines[i] = fmt::format(
-                "/sensors: sensor \"{}\" at {} is behind a mirror ({} of {} hemisphere rays "
-                "hit its back): it will read about 0",
-                s.name, toString(s.position), p.mirrorBacks, p.rays);
-        else if (p.coveredFraction() >= kEnclosedFraction) {
-            inside = "buried";
-            sensorLines[i] = fmt::format(
-                "/sensors: sensor \"{}\" at {} is buried: {:.0f} % of its view (cosine-weighted) "
-                "meets a surface within {:.3g} m, so it will read about 0 (check its position "
-                "and normal)",
-                s.name, toString(s.position), 100 * p.coveredFraction(), near);
-        } else if (enclosed(p)) {
-            inside = "inside a solid";
-            sensorLines[i] = fmt::format(
-                "/sensors: sensor \"{}\" at {} is inside a solid ({} of {} hemisphere rays hit "
-                "the inside of surfaces): it will read about 0",
-                s.name, toString(s.position), p.backFaces, p.rays);
-        }
-        if (!inside.empty() && !s.grid.empty()) sensorLines[i] += "; left out of its grid's statistics";
-        if (inSolid) (*inSolid)[i] = inside;
-    });
-    for (auto& line : sensorLines)
-        if (!line.empty()) out.push_back(std::move(line));
+    if (checkSensors) {
+        for (auto& line : sensorWarnings(scene, mesh, embree, prober, near, inSolid))
+            if (!line.empty()) out.push_back(std::move(line));
+    }
     for (const auto& m : scene.mirrors) {
         Vec3 c(0.0);
         for (const auto& x : m.polygon) c += x;

@@ -608,18 +608,9 @@ std::string lineColumn(const std::string& text, size_t byte) {
     return fmt::format("line {}, column {}", line, column);
 }
 
-}  // namespace
-
-SceneDesc parseScene(const std::string& text, const std::string& fileName, const std::vector<Override>& overrides,
-                     const ErrorHandler& onError) {
-    ParseContext ctx;
-    ctx.onError = onError ? onError : [&](const std::string& place, const std::string& message) {
-        throw InputError(placeMessage(sourceOf(place, overrides, fileName), place, message));
-    };
-    SceneDesc desc;
-    desc.file = fileName;
-
-    json root;
+/// The scene file's text as a JSON object without duplicate keys; false (and an error
+/// naming the line and column) when it is not one.
+bool readJsonObject(const std::string& text, ParseContext& ctx, json& root) {
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
@@ -628,7 +619,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         auto colon = what.find(": ", what.find("parse error"));
         ctx.error(lineColumn(text, e.byte > 0 ? e.byte - 1 : 0),
                   "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
-        return desc;
+        return false;
     } catch (const json::exception& e) {
         // e.g. out_of_range.406 "number overflow parsing '1e999'": no byte offset is given,
         // so find the quoted token in the text to name the place.
@@ -641,17 +632,33 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         }
         auto bracket = what.find("] ");
         ctx.error(place, "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
-        return desc;
+        return false;
     }
     if (!root.is_object()) {
         ctx.error("/", "the scene must be a JSON object, got " + describe(root));
-        return desc;
+        return false;
     }
     if (std::string duplicate = findDuplicateKey(text); !duplicate.empty()) {
         const auto colon = duplicate.find(": ", duplicate.find("column"));
         ctx.error(duplicate.substr(0, colon), duplicate.substr(colon + 2));
-        return desc;
+        return false;
     }
+    return true;
+}
+
+}  // namespace
+
+SceneDesc parseScene(const std::string& text, const std::string& fileName, const std::vector<Override>& overrides,
+                     const ErrorHandler& onError) {
+    ParseContext ctx;
+    ctx.onError = onError ? onError : [&](const std::string& place, const std::string& message) {
+        throw InputError(placeMessage(sourceOf(place, overrides, fileName), place, message));
+    };
+    SceneDesc desc;
+    desc.file = fileName;
+
+    json root;
+    if (!readJsonObject(text, ctx, root)) return desc;
     for (const auto& o : overrides) applyOverride(root, o, ctx);
 
     std::string sceneDir = std::filesystem::path(fileName).parent_path().string();
