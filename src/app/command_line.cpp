@@ -190,38 +190,43 @@ void addCompare(CLI::App& cli, CompareOptions& a) {
         "p95_delta_e2000, mean_flip)");
 }
 
+/// A validation's output directory and, when `threads` is given, its worker threads per run.
+void addValidationRun(CLI::App* cmd, std::string& outDir, int* threads) {
+    cmd->add_option("--out", outDir, "Output directory")->default_str(outDir);
+    if (threads)
+        cmd->add_option("--threads", *threads, "Worker threads per run (default: all cores)")
+            ->check(CLI::Range(0, kMaxThreads));
+}
+
 void addValidate(CLI::App& cli, CommandLine& args) {
-    args.validateCube.scene = bundledPath(args.validateCube.scene);
     auto* validate = cli.add_subcommand("validate", "Reproduce a validation from the paper on this machine");
+    validate->require_subcommand(1);
+
+    ValidateOptions& cube = args.validateCube;
+    cube.scene = bundledPath(cube.scene);
     auto* validateCube = validate->add_subcommand(
         "cube", "The empty cube: mesh sweep and cluster sweep (paper Tables 2-3), ablations, error-vs-time plots");
-    args.validateSphere.sceneDir = bundledPath(args.validateSphere.sceneDir);
+    validateCube->add_flag("--quick", cube.quick, "A subset at 1 200 and 4 800 triangles (about a minute)");
+    validateCube->add_option("--scene", cube.scene, "The cube scene")->default_str(cube.scene);
+    addValidationRun(validateCube, cube.outDir, &cube.threads);
+
+    ValidateSphereOptions& sphere = args.validateSphere;
+    sphere.sceneDir = bundledPath(sphere.sceneDir);
     auto* validateSphere = validate->add_subcommand(
         "sphere",
         "The sphere with mirrors: SPH2 and SPH4, 768 and 12 288 triangles, clusters on and off (paper Table 4)");
-    validateSphere->add_flag("--quick", args.validateSphere.quick, "The 768-triangle sphere only (seconds)");
-    validateSphere->add_option("--scenes", args.validateSphere.sceneDir, "Directory with sph2.json and sph4.json")
-        ->default_str(args.validateSphere.sceneDir);
-    validateSphere->add_option("--out", args.validateSphere.outDir, "Output directory")
-        ->default_str(args.validateSphere.outDir);
-    validateSphere->add_option("--threads", args.validateSphere.threads, "Worker threads per run (default: all cores)")
-        ->check(CLI::Range(0, kMaxThreads));
-    args.validateLuminaire.dataDir = bundledPath(args.validateLuminaire.dataDir);
+    validateSphere->add_flag("--quick", sphere.quick, "The 768-triangle sphere only (seconds)");
+    validateSphere->add_option("--scenes", sphere.sceneDir, "Directory with sph2.json and sph4.json")
+        ->default_str(sphere.sceneDir);
+    addValidationRun(validateSphere, sphere.outDir, &sphere.threads);
+
+    ValidateLuminaireOptions& luminaire = args.validateLuminaire;
+    luminaire.dataDir = bundledPath(luminaire.dataDir);
     auto* validateLuminaire = validate->add_subcommand(
         "luminaire", "Every bundled photometric file: direct light from its table, a closed sphere's indirect light");
-    validateLuminaire->add_option("--data", args.validateLuminaire.dataDir, "Directory with .ies and .ldt files")
-        ->default_str(args.validateLuminaire.dataDir);
-    validateLuminaire->add_option("--out", args.validateLuminaire.outDir, "Output directory")
-        ->default_str(args.validateLuminaire.outDir);
-    validate->require_subcommand(1);
-    validateCube->add_flag("--quick", args.validateCube.quick,
-                           "A subset at 1 200 and 4 800 triangles (about a minute)");
-    validateCube->add_option("--scene", args.validateCube.scene, "The cube scene")
-        ->default_str(args.validateCube.scene);
-    validateCube->add_option("--out", args.validateCube.outDir, "Output directory")
-        ->default_str(args.validateCube.outDir);
-    validateCube->add_option("--threads", args.validateCube.threads, "Worker threads per run (default: all cores)")
-        ->check(CLI::Range(0, kMaxThreads));
+    validateLuminaire->add_option("--data", luminaire.dataDir, "Directory with .ies and .ldt files")
+        ->default_str(luminaire.dataDir);
+    addValidationRun(validateLuminaire, luminaire.outDir, nullptr);
 }
 
 }  // namespace
