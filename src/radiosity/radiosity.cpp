@@ -23,10 +23,6 @@ void StageLog::skip(const std::string& what) const {
     if (skipped) skipped->push_back(what);
 }
 
-double pointNudge(const scene::Scene& scene) {
-    return 1e-6 * scene.diagonal();
-}
-
 MeshEstimate estimateMesh(const scene::Scene& scene) {
     return {estimatePatchCount(scene, scene.meshing), targetEdge(scene, scene.meshing)};
 }

@@ -122,7 +122,5 @@ std::unique_ptr<Gatherer> sensorGatherer(const scene::Scene& scene, const PatchM
 std::vector<SensorValue> gatherSensors(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,
                                        Lighting& lighting, const StageLog& log);
 
-/// The nudge that puts a point a hair inside its own patch for the gather, m.
-double pointNudge(const scene::Scene& scene);
 
 }  // namespace rayrad::radiosity

@@ -3,7 +3,6 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -12,8 +11,6 @@
 namespace rayrad::tonemap {
 
 namespace {
-
-std::atomic<bool> g_loaded{false};
 
 /// The directory of the running program (/proc/self/exe), or "" when unknown.
 std::filesystem::path programDirectory() {
@@ -55,7 +52,6 @@ const ImageLibrary* load() {
             errors += "; " + path + " has no " + kImageLibraryEntry;
             continue;
         }
-        g_loaded = true;
         return entry();  // never unloaded: objects it made may outlive any caller
     }
     throw std::runtime_error(
@@ -69,10 +65,6 @@ const ImageLibrary* load() {
 const ImageLibrary& imageLibrary() {
     static const ImageLibrary* library = load();
     return *library;
-}
-
-bool imageLibraryLoaded() {
-    return g_loaded;
 }
 
 }  // namespace rayrad::tonemap

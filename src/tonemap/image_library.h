@@ -63,9 +63,6 @@ class ImageLibrary {
 /// Throws std::runtime_error when none loads.
 const ImageLibrary& imageLibrary();
 
-/// Whether the module has been loaded in this process (tests of the start-up).
-bool imageLibraryLoaded();
-
 /// The name of the function the module exports: `const ImageLibrary* rayradImageLibrary()`.
 constexpr const char* kImageLibraryEntry = "rayradImageLibrary";
 

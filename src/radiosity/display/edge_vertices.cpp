@@ -71,7 +71,7 @@ std::vector<size_t> seamVertices(const scene::Scene& scene, const PatchMesh& mes
     }
     const int classes = static_cast<int>(classUsed.size());
 
-    const double nudge = 1e-6 * scene.diagonal();
+    const double nudge = pointNudge(scene);
     const double seamTolerance = 1e-6 * scene.diagonal();
     std::vector<size_t> edge;
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -111,7 +111,7 @@ GatheredVertices gatherEdgeVertices(const scene::Scene& scene, const PatchMesh& 
                                     RadiositySolution& solution, const Visibility& vis, int levels,
                                     const std::function<void(double)>& onProgress) {
     std::vector<int64_t> patchOf;
-    const double nudge = 1e-6 * scene.diagonal();
+    const double nudge = pointNudge(scene);
     // The seams, gathered where they are (nudged into their brightest patch), and the
     // vertices beside an outline crossing their patches that are not seams.
     std::vector<GatherPoint> points;

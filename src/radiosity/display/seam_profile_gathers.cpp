@@ -73,7 +73,7 @@ SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh
     Gatherer::CornerSource corners = [&](size_t patch, int corner, double /*share*/) {
         return solution.vertexIndirect[mesh.patches[patch].v[corner]];
     };
-    const double nudge = 1e-6 * scene.diagonal();
+    const double nudge = pointNudge(scene);
     std::atomic<size_t> done{0}, taken{0};
     const double total = 2.0 * static_cast<double>(candidates.size());
     // δ at a node comes from the near patches alone: with N the patches near the edge (one

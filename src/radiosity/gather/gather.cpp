@@ -46,7 +46,7 @@ Gatherer::Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clust
       m_solution(solution),
       m_vis(vis),
       m_options(options),
-      m_nudge(1e-6 * scene.diagonal()) {
+      m_nudge(pointNudge(scene)) {
     m_treePosition.resize(mesh.patches.size());
     for (const auto& C : clustering.clusters) {
         double size = 0;

@@ -13,7 +13,7 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
                            const scene::Sensor& sensor) {
     SensorValue out;
     Vec3 directAt = sensor.position, gatherAt = sensor.position;
-    auto where = locateOnMesh(mesh, sensor.position, sensor.normal, 1e-6 * scene.diagonal(), &vis);
+    auto where = locateOnMesh(mesh, sensor.position, sensor.normal, pointNudge(scene), &vis);
     if (where) {
         if (!solution.vertexIndirect.empty())
             out.indirectVertex = interpolateIndirect(mesh, solution, where->patch, where->u, where->v);
@@ -22,7 +22,7 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
         // light where the sensor's surface ends (an edge, a corner, the foot of a wall),
         // so its shadow rays do not start in the neighbouring surface or slip past a
         // wall standing there. Elsewhere the exact point: a light 1 mm away is exact.
-        const double nudge = 1e-6 * scene.diagonal();
+        const double nudge = pointNudge(scene);
         gatherAt = nudgeInside(mesh, where->patch, sensor.position, nudge);
         if (onSurfaceBoundary(mesh, *where, 10 * nudge, &vis)) directAt = gatherAt;
     }

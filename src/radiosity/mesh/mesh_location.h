@@ -4,6 +4,7 @@
 
 #include <core/visibility.h>
 #include <radiosity/mesh/patch_mesh.h>
+#include <scene/scene.h>
 
 #include <optional>
 
@@ -30,5 +31,9 @@ bool onSurfaceBoundary(const PatchMesh& mesh, const MeshLocation& at, double tol
 /// Moves a surface point a hair (metres) toward the centroid of its patch, so points on
 /// an edge or corner take the limit from inside their own wall.
 Vec3 nudgeInside(const PatchMesh& mesh, size_t patch, const Vec3& x, double distance);
+
+/// How far a point is nudged into its own patch (nudgeInside), and how close it must lie to
+/// the mesh to be on it (locateOnMesh): 10⁻⁶ of the scene's diagonal, m.
+inline double pointNudge(const scene::Scene& scene) { return 1e-6 * scene.diagonal(); }
 
 }  // namespace rayrad::radiosity

@@ -5,6 +5,7 @@
 
 #include <core/math.h>
 #include <radiosity/mesh/patch_mesh.h>
+#include <scene/settings.h>
 
 #include <array>
 #include <cmath>
@@ -33,7 +34,8 @@ namespace rayrad::radiosity {
 /// edge continuous too. Each group part of a solve has its own profiles; they add.
 class SeamProfiles {
   public:
-    static constexpr int kNodes = 5;  ///< τ = 1/2, 1/4, 1/8, 1/16, 1/32
+    /// τ = 1/2, 1/4, 1/8, 1/16, 1/32: the most radiosity.seam_profile_nodes allows.
+    static constexpr int kNodes = scene::ReconstructionOptions::kMaxSeamProfileNodes;
     /// τ_k = 2^−(k+1) of node k = 0 … kNodes − 1.
     static double nodeTau(int k) { return std::ldexp(1.0, -(k + 1)); }
     /// The correction along the edge from seam vertex `from` to vertex `to`: δ at τ_k (lx).
