@@ -486,6 +486,11 @@ void parseRadiosity(JsonObject r, SceneDesc& d) {
     d.meshing.trianglesPerSurface = r.integer("triangles_per_surface", d.meshing.trianglesPerSurface, 0, 10'000'000);
     d.meshing.maxCellAspect = r.number("max_cell_aspect", d.meshing.maxCellAspect);
     if (d.meshing.maxCellAspect < 1) r.error("max_cell_aspect", "expected a number >= 1");
+    d.meshing.creaseAngleDeg = r.number("crease_angle_deg", d.meshing.creaseAngleDeg);
+    if (!(d.meshing.creaseAngleDeg >= 0 && d.meshing.creaseAngleDeg < 180))
+        r.error("crease_angle_deg",
+                fmt::format("expected an angle in [0, 180) (0: vertices as the file shares them), got {}",
+                            d.meshing.creaseAngleDeg));
     d.meshing.maxPatches = r.positive("max_patches", d.meshing.maxPatches);
     d.shooting.stopUnshot = r.number("stop_unshot", d.shooting.stopUnshot);
     if (!(d.shooting.stopUnshot > 0 && d.shooting.stopUnshot < 1))

@@ -27,6 +27,12 @@ struct MeshingOptions {
     int trianglesPerSurface = 0;
     /// Largest aspect ratio of grid cells; thin quads get more cells across.
     double maxCellAspect = 2.0;
+    /// Mesh files: where two triangles around a shared vertex meet at more than this angle
+    /// (a box's edge), each side gets its own vertex, so the display values on one face are
+    /// never averaged with the light of the other; 0 keeps the vertices as the file shares
+    /// them. Above the 30-36° between the facets of a coarse sphere or a 10-sided column,
+    /// below a 45° chamfer.
+    double creaseAngleDeg = 40;
     /// The most patches a scene may be premeshed into (estimated before premeshing, so a
     /// tiny max_edge is an error rather than an allocation that fails). About 1 KiB each.
     double maxPatches = 4e6;

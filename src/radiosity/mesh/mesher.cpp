@@ -3,6 +3,7 @@
 #include <core/check.h>
 #include <radiosity/mesh/bisection.h>
 #include <radiosity/mesh/contact_lines.h>
+#include <radiosity/mesh/crease_split.h>
 #include <scene/polygon.h>
 
 #include <algorithm>
@@ -223,12 +224,13 @@ std::vector<std::array<uint32_t, 3>> latticeTriangles(std::vector<Vec3>& positio
 /// Premeshing of a triangle group: each triangle by its own size (longest-edge
 /// bisection to `edge` metres, conforming where triangles share vertex indices), or,
 /// with `triangles_per_surface`, every triangle into the same k² lattice triangles.
-/// Corners stay as the input indexes them: a mesh that splits its vertices along a
-/// crease keeps the two sides apart, so vertex values never average across it.
-void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std::array<uint32_t, 3>>& tris, int group,
+/// Corners are shared as the input indexes them, except across creases sharper than
+/// crease_angle_deg (splitAtCreases), so vertex values never average across a crease.
+void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, std::vector<std::array<uint32_t, 3>> tris, int group,
                    const scene::MeshingOptions& options, double edge, bool withUv = false,
                    const std::vector<Uv3>& trisUv = {}) {
     std::vector<Vec3> positions = g.positions;
+    splitAtCreases(positions, tris, options.creaseAngleDeg);
     const int k = options.trianglesPerSurface > 0 ? latticeFactor(options, tris.size()) : 0;
     std::vector<uint32_t> parents;  // the input triangle each output triangle lies in
     const auto triangles = k > 0 ? latticeTriangles(positions, tris, k) : bisectToSize(positions, tris, edge, &parents);
@@ -249,8 +251,7 @@ void meshTriangles(PatchMesh& mesh, const SurfaceGroup& g, const std::vector<std
         Uv3 uv{};
         if (!trisUv.empty()) {  // each corner located in the input triangle it came from
             const auto& parent = tris[parents[n]];
-            const std::array<Vec3, 3> corners = {g.positions[parent[0]], g.positions[parent[1]],
-                                                 g.positions[parent[2]]};
+            const std::array<Vec3, 3> corners = {positions[parent[0]], positions[parent[1]], positions[parent[2]]};
             for (int c = 0; c < 3; ++c) uv[c] = uvAt(corners, trisUv[parents[n]], positions[t[c]]);
         }
         addPatch(mesh, meshVertex(t[0]), meshVertex(t[1]), meshVertex(t[2]), g.material, group, &uv);
@@ -335,16 +336,18 @@ PatchMesh premesh(const scene::Scene& scene, const scene::MeshingOptions& option
             continue;
         }
         std::vector<Uv3> trisUv;
-        const auto tris = groupTriangles(g, withUv ? &trisUv : nullptr);
+        auto tris = groupTriangles(g, withUv ? &trisUv : nullptr);
         if (options.premesh) {
-            meshTriangles(mesh, g, tris, group, options, edge, withUv, trisUv);
+            meshTriangles(mesh, g, std::move(tris), group, options, edge, withUv, trisUv);
             continue;
         }
         // Premeshing off: the input triangles are the patches, shape as given.
+        std::vector<Vec3> positions = g.positions;
+        splitAtCreases(positions, tris, options.creaseAngleDeg);
         std::map<uint32_t, uint32_t> ids;
         auto id = [&](uint32_t a) {
             auto [it, added] = ids.emplace(a, static_cast<uint32_t>(mesh.vertices.size()));
-            if (added) mesh.vertices.push_back(g.positions[a]);
+            if (added) mesh.vertices.push_back(positions[a]);
             return it->second;
         };
         for (size_t n = 0; n < tris.size(); ++n) {

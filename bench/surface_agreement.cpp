@@ -1,0 +1,170 @@
+// Benchmark: does the indirect light an image shows agree with a final gather, anywhere
+// on a scene's surfaces? One solve of SCENE; then random points, spread over the lit
+// reflecting surfaces in proportion to their area, each evaluated as a sensor: the
+// indirect light interpolated from the mesh's vertex values (what the ray tracer shows)
+// against the final gather there. Prints, over the points whose indirect light is at
+// least 10 % of their total (where an image error in the indirect light shows):
+//   - |mesh − gather| / total: median, 95th percentile, max (the image's relative error:
+//     a pixel is ρ (direct + indirect) / π, so the indirect light's difference over the
+//     total is the pixel's);
+//   - |mesh − gather| / gather: the share of points beyond 5 %;
+// the worst points with their place, and the gather's CPU time a point (median, 90th
+// percentile, max: what a sensor costs there), beside the solve's.
+// Usage: build/bench/surface_agreement SCENE [points (400)] [key=value ...]
+//        (key=value: scene settings, as with --set)
+#include <app/pipeline.h>
+#include <core/random.h>
+#include <core/stage_report.h>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
+
+using namespace rayrad;
+
+namespace {
+
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+struct Point {
+    size_t patch = 0;
+    scene::Sensor sensor;
+    radiosity::SensorValue value;
+    double cpu = 0;  ///< s, this point's gather
+};
+
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
+}
+
+/// `count` points, area-weighted over the patches that reflect and do not emit.
+std::vector<Point> samplePoints(const scene::Scene& scene, const radiosity::PatchMesh& mesh, int count) {
+    std::vector<double> cumulative;
+    std::vector<size_t> patches;
+    double total = 0;
+    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+        const scene::Material& m = scene.materials[mesh.patches[i].material];
+        if (luminance(m.reflectance) <= 0 || luminance(m.emission) > 0 || m.kind != scene::SurfaceKind::Diffuse)
+            continue;
+        total += mesh.patches[i].area;
+        cumulative.push_back(total);
+        patches.push_back(i);
+    }
+    std::vector<Point> points;
+    Random rng(12345);
+    for (int k = 0; k < count && total > 0; ++k) {
+        const double a = rng.nextDouble() * total;
+        const size_t j = std::upper_bound(cumulative.begin(), cumulative.end(), a) - cumulative.begin();
+        const radiosity::Patch& p = mesh.patches[patches[std::min(j, patches.size() - 1)]];
+        double u = rng.nextDouble(), v = rng.nextDouble();
+        if (u + v > 1) u = 1 - u, v = 1 - v;
+        Point pt;
+        pt.patch = patches[std::min(j, patches.size() - 1)];
+        pt.sensor.name = fmt::format("p{}", k);
+        pt.sensor.position =
+            mesh.vertices[p.v[0]] * (1 - u - v) + mesh.vertices[p.v[1]] * u + mesh.vertices[p.v[2]] * v;
+        pt.sensor.normal = p.normal;
+        points.push_back(pt);
+    }
+    return points;
+}
+
+/// A point no camera can see: every probe a quarter of the patch size out (along the
+/// normal and tilted 60° four ways) is blocked — a gap under a plate lying on the surface.
+bool covered(const radiosity::PatchMesh& mesh, const Visibility& vis, const Vec3& x, const Vec3& n) {
+    const auto [t1, t2] = tangentFrame(n);
+    const double d = 0.25 * mesh.edgeLength, c = 0.5, s = std::sqrt(0.75);
+    for (const Vec3& dir : {n, c * n + s * t1, c * n - s * t1, c * n + s * t2, c * n - s * t2})
+        if (vis.visibleFromSurface(x, n, x + d * dir)) return false;
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: surface_agreement SCENE [points (400)] [key=value ...]\n");
+        return 2;
+    }
+    const std::string sceneFile = argv[1];
+    const int count = argc > 2 ? std::atoi(argv[2]) : 400;
+    app::PipelineOptions options;
+    options.quiet = true;
+    options.wantSensors = false;
+    for (int i = 3; i < argc; ++i) {
+        const std::string s = argv[i];
+        const size_t eq = s.find('=');
+        if (eq == std::string::npos) {
+            std::fprintf(stderr, "surface_agreement: expected key=value, got \"%s\"\n", argv[i]);
+            return 2;
+        }
+        options.overrides.push_back({s.substr(0, eq), s.substr(eq + 1)});
+    }
+    const double c0 = processCpuSeconds();
+    app::PipelineRun run = app::runPipeline(sceneFile, options);
+    const double solveCpu = processCpuSeconds() - c0;
+    const radiosity::StageLog log;
+    const auto gatherer = radiosity::sensorGatherer(run.scene, run.mesh, *run.embree, run.lighting, log);
+    std::vector<Point> points = samplePoints(run.scene, run.mesh, count);
+    tbb::parallel_for(size_t(0), points.size(), [&](size_t i) {
+        radiosity::GatherMemo memo;  // each point alone: what one sensor costs
+        const double t = threadCpuSeconds();
+        points[i].value = radiosity::evaluateSensor(run.scene, run.mesh, run.lighting.solution, *run.lighting.lights,
+                                                    *run.embree, *gatherer, memo, points[i].sensor);
+        points[i].cpu = threadCpuSeconds() - t;
+    });
+
+    std::vector<double> ofTotal, cpu;
+    int judged = 0, beyond5 = 0, hidden = 0;
+    std::vector<std::pair<double, const Point*>> worst;
+    for (const Point& p : points) {
+        cpu.push_back(p.cpu);
+        if (!p.value.indirectVertex) continue;
+        if (covered(run.mesh, *run.embree, p.sensor.position, p.sensor.normal)) {
+            ++hidden;
+            continue;
+        }
+        const double gather = luminance(p.value.indirect), mesh = luminance(*p.value.indirectVertex);
+        const double total = luminance(p.value.direct) + gather;
+        if (!(total > 0) || gather < 0.1 * total) continue;
+        ++judged;
+        const double e = std::abs(mesh - gather) / total;
+        ofTotal.push_back(e);
+        if (std::abs(mesh - gather) > 0.05 * gather) ++beyond5;
+        worst.push_back({e, &p});
+    }
+    std::sort(worst.begin(), worst.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    fmt::print(
+        "{}: {} patches, solve {:.2f} CPU-s; {} points ({} covered, left out), {} with indirect >= 10 % of total\n",
+        sceneFile, run.mesh.patches.size(), solveCpu, points.size(), hidden, judged);
+    fmt::print("|mesh - gather| / total: median {:.2f} %, 95th percentile {:.2f} %, max {:.1f} %\n",
+               100 * quantile(ofTotal, 0.5), 100 * quantile(ofTotal, 0.95), 100 * quantile(ofTotal, 1.0));
+    fmt::print("points whose mesh value is more than 5 % from its gather: {} of {} ({:.1f} %)\n", beyond5, judged,
+               judged ? 100.0 * beyond5 / judged : 0.0);
+    fmt::print("gather CPU a point: median {:.1f} ms, 90th percentile {:.1f} ms, max {:.1f} ms\n",
+               1e3 * quantile(cpu, 0.5), 1e3 * quantile(cpu, 0.9), 1e3 * quantile(cpu, 1.0));
+    fmt::print("worst points (position, normal, patch area m², longest edge m: mesh lx, gather lx, direct lx)\n");
+    for (size_t k = 0; k < std::min<size_t>(12, worst.size()); ++k) {
+        const Point& p = *worst[k].second;
+        const radiosity::Patch& patch = run.mesh.patches[p.patch];
+        fmt::print(
+            "  {:6.2f} %  ({:.3f}, {:.3f}, {:.3f}) n ({:.2f}, {:.2f}, {:.2f})  {:.2e} {:.3f}:  {:.1f}, {:.1f}, "
+            "{:.1f}\n",
+            100 * worst[k].first, p.sensor.position.x, p.sensor.position.y, p.sensor.position.z, p.sensor.normal.x,
+            p.sensor.normal.y, p.sensor.normal.z, patch.area, patch.diameter, luminance(*p.value.indirectVertex),
+            luminance(p.value.indirect), luminance(p.value.direct));
+    }
+    return 0;
+}
