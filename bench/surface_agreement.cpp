@@ -11,7 +11,7 @@
 // the worst points with their place, and the gather's CPU time a point (median, 90th
 // percentile, max: what a sensor costs there), beside the solve's.
 // Usage: build/bench/surface_agreement SCENE [points (400)] [key=value ...]
-//        (key=value: scene settings, as with --set)
+//        (key=value: scene settings, as with --set, which may precede each)
 #include <app/pipeline.h>
 #include <core/random.h>
 #include <core/stage_report.h>
@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
     options.wantSensors = false;
     for (int i = 3; i < argc; ++i) {
         const std::string s = argv[i];
+        if (s == "--set") continue;  // as rayrad takes them
         const size_t eq = s.find('=');
         if (eq == std::string::npos) {
             std::fprintf(stderr, "surface_agreement: expected key=value, got \"%s\"\n", argv[i]);

@@ -36,7 +36,7 @@ namespace {
 
 /// Where the radiosity stage reports its sub-stages: the run's stage table and skip list.
 radiosity::StageLog stageLog(PipelineRun& run, const PipelineOptions& options) {
-    return {&run.report, &run.skipped, options.quiet};
+    return {&run.report, &run.skipped, options.quiet, &run.warnings};
 }
 
 /// The shading normals, made before the first image (images only: the radiosity and the

@@ -81,8 +81,8 @@ std::vector<std::string> costWarnings(const std::string& file, const scene::Scen
         if (seconds > 600)
             out.push_back(
                 fmt::format("/sensors: {} sensors: the final gather will take at least {:.0f} CPU-minutes "
-                            "(about 1 ms a sensor in an open room, up to a second among furniture and "
-                            "mirrors)",
+                            "(about 1 ms a sensor in an open room, up to seconds among furniture and "
+                            "mirrors: the sensor stage warns again with its measured cost)",
                             scene.sensors.size(), seconds / 60));
     }
     return out;

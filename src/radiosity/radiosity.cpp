@@ -23,6 +23,11 @@ void StageLog::skip(const std::string& what) const {
     if (skipped) skipped->push_back(what);
 }
 
+void StageLog::warn(const std::string& file, const std::string& what) const {
+    if (!quiet) fmt::print(stderr, "warning: {}: {}\n", file, what);
+    if (warnings) warnings->push_back(what);
+}
+
 MeshEstimate estimateMesh(const scene::Scene& scene) {
     return {estimatePatchCount(scene, scene.meshing), targetEdge(scene, scene.meshing)};
 }
@@ -155,10 +160,18 @@ std::vector<SensorValue> gatherSensors(const scene::Scene& scene, const PatchMes
     const auto gatherer = sensorGatherer(scene, mesh, vis, lighting, log);
     log.begin(fmt::format("sensors ({})", scene.sensors.size()));
     Progress progress("sensors", log.quiet);
+    // The cost a sensor is measured, not guessed (called under evaluateSensors' lock).
+    const double start = processCpuSeconds();
+    bool warned = false;
     return evaluateSensors(
         scene, mesh, lighting.solution, *lighting.lights, vis, *gatherer,
         [&](size_t done, size_t count) {
             progress.update(static_cast<double>(done) / count, fmt::format("{} of {}", done, count));
+            if (warned) return;
+            if (auto w = slowSensorsWarning(done, count, processCpuSeconds() - start)) {
+                warned = true;
+                log.warn(scene.file, *w);
+            }
         },
         &lighting.sensorGathers);
 }

@@ -35,8 +35,12 @@ struct StageLog {
     StageReport* report = nullptr;
     std::vector<std::string>* skipped = nullptr;  ///< "stage (reason)"
     bool quiet = true;
+    /// Warnings found while the stage runs (a sensor stage that will take long), without
+    /// the "warning: FILE: " prefix; also printed so when not quiet.
+    std::vector<std::string>* warnings = nullptr;
     void begin(const std::string& stage) const;
     void skip(const std::string& what) const;
+    void warn(const std::string& file, const std::string& what) const;
 };
 
 /// The lighting of a scene as the stage computes it: the lights, the clusters, the solution,
@@ -118,7 +122,8 @@ std::unique_ptr<Gatherer> sensorGatherer(const scene::Scene& scene, const PatchM
                                          Lighting& lighting, const StageLog& log);
 
 /// Every sensor of the scene: direct light exactly, indirect by the final gather (stage
-/// "sensors (N)"; lighting.sensorGathers counts the gathers).
+/// "sensors (N)"; lighting.sensorGathers counts the gathers), with slowSensorsWarning's
+/// warning once the sensors done say that all will take long.
 std::vector<SensorValue> gatherSensors(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,
                                        Lighting& lighting, const StageLog& log);
 

@@ -1,5 +1,6 @@
 #include <radiosity/gather/sensors.h>
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -33,6 +34,16 @@ SensorValue evaluateSensor(const scene::Scene& scene, const PatchMesh& mesh, con
         out.indirect = gatherer.indirectAt(gatherAt, sensor.normal, memo, expected);
     }
     return out;
+}
+
+std::optional<std::string> slowSensorsWarning(size_t done, size_t count, double spentCpu) {
+    if (done == 0 || done >= count || spentCpu < kSensorProbeSeconds) return std::nullopt;
+    const double each = spentCpu / static_cast<double>(done), total = each * static_cast<double>(count);
+    if (total <= kSlowSensorSeconds) return std::nullopt;
+    return fmt::format(
+        "/sensors: the first {} of {} sensors took {:.2g} CPU-s each; all of them will take about {:.0f} "
+        "CPU-minutes (a sensor among furniture, or above a mesh coarse for it, re-gathers hundreds of points)",
+        done, count, each, total / 60);
 }
 
 size_t sensorsPerMemo(size_t sensors) {

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace rayrad::radiosity {
@@ -37,6 +38,16 @@ std::vector<SensorValue> evaluateSensors(const scene::Scene& scene, const PatchM
                                          const RadiositySolution& solution, const DirectLight& lights,
                                          const Visibility& vis, const Gatherer& gatherer,
                                          const std::function<void(size_t, size_t)>& progress, size_t* gathers);
+
+/// The sensor stage measures its cost a sensor once this much CPU time (s) has gone ...
+constexpr double kSensorProbeSeconds = 5;
+/// ... and warns when all the sensors will take more than this (s).
+constexpr double kSlowSensorSeconds = 600;
+
+/// After `done` of `count` sensors took `spentCpu` CPU seconds: a warning with the measured
+/// cost a sensor and the CPU-minutes all will take, when that is more than
+/// kSlowSensorSeconds (asked only once kSensorProbeSeconds have gone, and not at the end).
+std::optional<std::string> slowSensorsWarning(size_t done, size_t count, double spentCpu);
 
 /// Sensors per run of evaluateSensors: about an eighth of them, at least 32. Longer runs
 /// share more (the cube's 32 × 32 grid: 9 601 gathers in one run, 10 602 in runs of 129,
