@@ -10,8 +10,9 @@
 //   - |mesh − gather| / gather: the share of points beyond 5 %;
 // the worst points with their place, and the gather's CPU time a point (median, 90th
 // percentile, max: what a sensor costs there), beside the solve's.
-// Usage: build/bench/surface_agreement SCENE [points (400)] [key=value ...]
-//        (key=value: scene settings, as with --set, which may precede each)
+// Usage: build/bench/surface_agreement SCENE [points (400)] [key=value ...] [--solution=FILE.rrs]
+//        (key=value: scene settings, as with --set, which may precede each; --solution:
+//        a solution saved by rayrad solve --save for the same scene and settings)
 #include <app/pipeline.h>
 #include <core/random.h>
 #include <core/stage_report.h>
@@ -106,6 +107,10 @@ int main(int argc, char** argv) {
     for (int i = 3; i < argc; ++i) {
         const std::string s = argv[i];
         if (s == "--set") continue;  // as rayrad takes them
+        if (s.rfind("--solution=", 0) == 0) {
+            options.solutionFile = s.substr(11);
+            continue;
+        }
         const size_t eq = s.find('=');
         if (eq == std::string::npos) {
             std::fprintf(stderr, "surface_agreement: expected key=value, got \"%s\"\n", argv[i]);
