@@ -124,6 +124,14 @@ int main(int argc, char** argv) {
     const radiosity::StageLog log;
     const auto gatherer = radiosity::sensorGatherer(run.scene, run.mesh, *run.embree, run.lighting, log);
     std::vector<Point> points = samplePoints(run.scene, run.mesh, count);
+    // Points no camera can see are left out before their gathers.
+    const size_t sampled = points.size();
+    points.erase(std::remove_if(points.begin(), points.end(),
+                                [&](const Point& p) {
+                                    return covered(run.mesh, *run.embree, p.sensor.position, p.sensor.normal);
+                                }),
+                 points.end());
+    const size_t hidden = sampled - points.size();
     tbb::parallel_for(size_t(0), points.size(), [&](size_t i) {
         radiosity::GatherMemo memo;  // each point alone: what one sensor costs
         const double t = threadCpuSeconds();
@@ -133,15 +141,11 @@ int main(int argc, char** argv) {
     });
 
     std::vector<double> ofTotal, cpu;
-    int judged = 0, beyond5 = 0, hidden = 0;
+    int judged = 0, beyond5 = 0;
     std::vector<std::pair<double, const Point*>> worst;
     for (const Point& p : points) {
         cpu.push_back(p.cpu);
         if (!p.value.indirectVertex) continue;
-        if (covered(run.mesh, *run.embree, p.sensor.position, p.sensor.normal)) {
-            ++hidden;
-            continue;
-        }
         const double gather = luminance(p.value.indirect), mesh = luminance(*p.value.indirectVertex);
         const double total = luminance(p.value.direct) + gather;
         if (!(total > 0) || gather < 0.1 * total) continue;
@@ -154,7 +158,7 @@ int main(int argc, char** argv) {
     std::sort(worst.begin(), worst.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     fmt::print(
         "{}: {} patches, solve {:.2f} CPU-s; {} points ({} covered, left out), {} with indirect >= 10 % of total\n",
-        sceneFile, run.mesh.patches.size(), solveCpu, points.size(), hidden, judged);
+        sceneFile, run.mesh.patches.size(), solveCpu, sampled, hidden, judged);
     fmt::print("|mesh - gather| / total: median {:.2f} %, 95th percentile {:.2f} %, max {:.1f} %\n",
                100 * quantile(ofTotal, 0.5), 100 * quantile(ofTotal, 0.95), 100 * quantile(ofTotal, 1.0));
     fmt::print("points whose mesh value is more than 5 % from its gather: {} of {} ({:.1f} %)\n", beyond5, judged,

@@ -1,25 +1,13 @@
 #include <radiosity/direct/sealed_solids.h>
 
+#include <core/disjoint_sets.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <tuple>
 
 namespace rayrad::radiosity {
-
-namespace {
-/// Polygons joined through their shared edges (union–find).
-struct Components {
-    std::vector<size_t> parent;
-    explicit Components(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), size_t(0)); }
-    size_t find(size_t a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    void join(size_t a, size_t b) { parent[find(a)] = find(b); }
-};
-}  // namespace
 
 std::vector<char> sealedGroups(const scene::Scene& scene) {
     // Vertices welded by position: a box's faces are groups of their own, with the same
@@ -68,7 +56,7 @@ std::vector<char> sealedGroups(const scene::Scene& scene) {
     // used exactly once each way.
     std::sort(halfEdges.begin(), halfEdges.end(),
               [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.low, x.high) < std::tie(y.low, y.high); });
-    Components components(polygons.size());
+    DisjointSets components(polygons.size());
     std::vector<std::pair<size_t, bool>> edgeClosed;  // per edge: one polygon on it, and whether it closes
     for (size_t i = 0; i < halfEdges.size();) {
         size_t end = i, forward = 0;

@@ -1,23 +1,10 @@
 #include <radiosity/mesh/crease_split.h>
 
-#include <numeric>
+#include <core/disjoint_sets.h>
+
+#include <cmath>
 
 namespace rayrad::radiosity {
-
-namespace {
-
-/// Disjoint sets over a vertex's triangles (by their index in its list).
-struct Sides {
-    std::vector<size_t> parent;
-    explicit Sides(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), size_t(0)); }
-    size_t find(size_t a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    void join(size_t a, size_t b) { parent[find(a)] = find(b); }
-};
-
-}  // namespace
 
 size_t splitAtCreases(std::vector<Vec3>& positions, std::vector<std::array<uint32_t, 3>>& triangles,
                       double creaseAngleDeg) {
@@ -38,7 +25,7 @@ size_t splitAtCreases(std::vector<Vec3>& positions, std::vector<std::array<uint3
     for (size_t v = 0; v < before; ++v) {
         const auto& tris = around[v];
         if (tris.size() < 2) continue;
-        Sides sides(tris.size());
+        DisjointSets sides(tris.size());
         // Triangles a and b share an edge through v when they share a second vertex.
         auto otherCorners = [&](uint32_t t) {
             std::array<uint32_t, 2> o{};
