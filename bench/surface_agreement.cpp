@@ -10,9 +10,10 @@
 //   - |mesh − gather| / gather: the share of points beyond 5 %;
 // the worst points with their place, and the gather's CPU time a point (median, 90th
 // percentile, max: what a sensor costs there), beside the solve's.
-// Usage: build/bench/surface_agreement SCENE [points (400)] [key=value ...] [--solution=FILE.rrs]
+// Usage: build/bench/surface_agreement SCENE [points (400)] [key=value ...] [--solution=FILE.rrs] [--csv=FILE]
 //        (key=value: scene settings, as with --set, which may precede each; --solution:
-//        a solution saved by rayrad solve --save for the same scene and settings)
+//        a solution saved by rayrad solve --save for the same scene and settings; --csv:
+//        every point's place, direct light, mesh and gathered indirect light, CPU and gathers)
 #include <app/pipeline.h>
 #include <core/random.h>
 #include <core/stage_report.h>
@@ -42,6 +43,7 @@ struct Point {
     scene::Sensor sensor;
     radiosity::SensorValue value;
     double cpu = 0;  ///< s, this point's gather
+    size_t gathers = 0;  ///< point gathers it took: its own and the corner and midpoint re-gathers
 };
 
 double quantile(std::vector<double> v, double q) {
@@ -102,11 +104,16 @@ int main(int argc, char** argv) {
     const std::string sceneFile = argv[1];
     const int count = argc > 2 ? std::atoi(argv[2]) : 400;
     app::PipelineOptions options;
+    std::string csvFile;
     options.quiet = true;
     options.wantSensors = false;
     for (int i = 3; i < argc; ++i) {
         const std::string s = argv[i];
         if (s == "--set") continue;  // as rayrad takes them
+        if (s.rfind("--csv=", 0) == 0) {
+            csvFile = s.substr(6);
+            continue;
+        }
         if (s.rfind("--solution=", 0) == 0) {
             options.solutionFile = s.substr(11);
             continue;
@@ -138,13 +145,30 @@ int main(int argc, char** argv) {
         points[i].value = radiosity::evaluateSensor(run.scene, run.mesh, run.lighting.solution, *run.lighting.lights,
                                                     *run.embree, *gatherer, memo, points[i].sensor);
         points[i].cpu = threadCpuSeconds() - t;
+        points[i].gathers = memo.gathers();
     });
 
-    std::vector<double> ofTotal, cpu;
+    if (!csvFile.empty()) {
+        std::FILE* f = std::fopen(csvFile.c_str(), "w");
+        if (!f) {
+            std::fprintf(stderr, "surface_agreement: cannot write %s\n", csvFile.c_str());
+            return 3;
+        }
+        std::fprintf(f, "x,y,z,nx,ny,nz,direct_lx,mesh_indirect_lx,gather_indirect_lx,cpu_s,gathers\n");
+        for (const Point& p : points)
+            std::fprintf(f, "%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.6g,%.6g,%.6g,%.6g,%zu\n", p.sensor.position.x,
+                         p.sensor.position.y, p.sensor.position.z, p.sensor.normal.x, p.sensor.normal.y,
+                         p.sensor.normal.z, luminance(p.value.direct),
+                         p.value.indirectVertex ? luminance(*p.value.indirectVertex) : -1.0,
+                         luminance(p.value.indirect), p.cpu, p.gathers);
+        std::fclose(f);
+    }
+    std::vector<double> ofTotal, cpu, gathers;
     int judged = 0, beyond5 = 0;
     std::vector<std::pair<double, const Point*>> worst;
     for (const Point& p : points) {
         cpu.push_back(p.cpu);
+        gathers.push_back(static_cast<double>(p.gathers));
         if (!p.value.indirectVertex) continue;
         const double gather = luminance(p.value.indirect), mesh = luminance(*p.value.indirectVertex);
         const double total = luminance(p.value.direct) + gather;
@@ -165,6 +189,8 @@ int main(int argc, char** argv) {
                judged ? 100.0 * beyond5 / judged : 0.0);
     fmt::print("gather CPU a point: median {:.1f} ms, 90th percentile {:.1f} ms, max {:.1f} ms\n",
                1e3 * quantile(cpu, 0.5), 1e3 * quantile(cpu, 0.9), 1e3 * quantile(cpu, 1.0));
+    fmt::print("point gathers a point (its own and its re-gathers): median {:.0f}, 90th percentile {:.0f}, max {:.0f}\n",
+               quantile(gathers, 0.5), quantile(gathers, 0.9), quantile(gathers, 1.0));
     fmt::print("worst points (position, normal, patch area m², longest edge m: mesh lx, gather lx, direct lx)\n");
     for (size_t k = 0; k < std::min<size_t>(12, worst.size()); ++k) {
         const Point& p = *worst[k].second;

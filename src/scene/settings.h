@@ -132,9 +132,11 @@ struct ShootingOptions {
 /// The final gather at sensors, and at every hit with `render.indirect` "gather"
 /// (`radiosity.gather_*`).
 struct GatherOptions {
-    /// How many times corner values of near patches are themselves re-gathered (a local
-    /// fixed-point iteration at edges and corners; 0 = patch-constant).
-    int gatherLevels = 8;
+    /// How many levels of gathers there are: the sensor's own, then the corner and midpoint
+    /// values of its near patches re-gathered, and theirs … (a local fixed-point iteration
+    /// at edges and corners); the last level's near patches take the solution's display
+    /// values (vertex values and seam profiles). 0 = patch-constant luminance, no near field.
+    int gatherLevels = 2;
     /// The top this many gather levels refine their near patches toward the point with
     /// gathered (not interpolated) indirect light at sub-triangle corners, where that
     /// differs from linear by more than `gatherRefineTolerance` (relative): the indirect

@@ -37,8 +37,10 @@ TEST_CASE(
     "[real_scenes]") {
     const std::string path = test::writeTempScene("gather_cost_sphere", sphereWithSensorsNearTheWall(24));
     const double expected = 100.0;  // lx, ρ/(1−ρ) Φ/A
-    auto bounded = app::runPipeline(path, test::quiet());
-    auto full = app::runPipeline(path, test::quiet({{"radiosity.gather_min_weight", "0"}}));
+    // Eight levels, so the bound has a deep recursion to cut.
+    auto bounded = app::runPipeline(path, test::quiet({{"radiosity.gather_levels", "8"}}));
+    auto full = app::runPipeline(
+        path, test::quiet({{"radiosity.gather_levels", "8"}, {"radiosity.gather_min_weight", "0"}}));
     REQUIRE(bounded.sensors.size() == 2);
     for (size_t i = 0; i < 2; ++i) {
         const double b = luminance(bounded.sensors[i].value.indirect), f = luminance(full.sensors[i].value.indirect);

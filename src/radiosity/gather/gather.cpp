@@ -94,7 +94,8 @@ const Rgb* GatherMemo::recall(const std::map<Key, Entry>& memo, const Key& key, 
 }
 
 Rgb Gatherer::cornerIndirect(size_t patch, int corner, int level, int weightClass, GatherMemo& memo) const {
-    if (level < 0) return solutionCorner(patch, corner);
+    // Below the re-gathers, the solution's own value there: what its display shows.
+    if (level <= 0) return solutionCorner(patch, corner);
     const uint32_t v = m_mesh.patches[patch].v[corner];
     const GatherMemo::Key key{v, level};
     if (const Rgb* known = GatherMemo::recall(memo.m_vertex, key, weightClass)) return *known;
@@ -111,6 +112,12 @@ Gatherer::Midpoint Gatherer::midpointIndirect(size_t patch, uint64_t a, uint64_t
     auto [idAt, added] =
         memo.m_midpointIds.emplace(std::make_pair(std::min(a, b), std::max(a, b)), firstId + memo.m_midpointIds.size());
     const uint64_t id = idAt->second;
+    if (level <= 0) {  // below the re-gathers: the display's value, seam profiles included
+        if (m_solution.vertexIndirect.empty()) return {id, m_solution.indirect[patch]};
+        const Patch& p = m_mesh.patches[patch];
+        const Vec3 w = barycentric(m_mesh.vertices[p.v[0]], m_mesh.vertices[p.v[1]], m_mesh.vertices[p.v[2]], y);
+        return {id, interpolateIndirect(m_mesh, m_solution, patch, w[1], w[2])};
+    }
     const GatherMemo::Key key{id, level};
     if (const Rgb* known = GatherMemo::recall(memo.m_midpoint, key, weightClass)) return {id, *known};
     Rgb e = gather(nudgeInside(m_mesh, patch, y, m_nudge), m_mesh.patches[patch].normal, level, weightClass, memo);

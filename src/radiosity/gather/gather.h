@@ -80,7 +80,11 @@ class GatherMemo {
 /// form_factor_centroid.h) where x sees a piece whole and over sub-triangles refined
 /// toward x where it is partly hidden. Corner values are exact direct light plus indirect
 /// light gathered at the corner itself, recursively `levels` deep (memoised), which removes the bias of
-/// patch-constant luminance at edges and corners.
+/// patch-constant luminance at edges and corners. The last level's corners and midpoints
+/// take the solution's display values (vertex values, gathered on seams, contacts and
+/// rims, and the seam profiles): the solve's own point gathers end the recursion. On the
+/// cube two levels are as accurate as eight ending in patch-constant gathers were, with
+/// half the re-gathers; one level (no re-gather) is the fast setting.
 /// Near patches of the top `refineLevels` gathers are refined further: a linear
 /// luminance misses the indirect light's fall-off into concave edges and corners (a
 /// singular derivative there), so each near triangle is split toward x and its edge

@@ -42,7 +42,8 @@ std::optional<std::string> slowSensorsWarning(size_t done, size_t count, double 
     if (total <= kSlowSensorSeconds) return std::nullopt;
     return fmt::format(
         "/sensors: the first {} of {} sensors took {:.2g} CPU-s each; all of them will take about {:.0f} "
-        "CPU-minutes (a sensor among furniture, or above a mesh coarse for it, re-gathers hundreds of points)",
+        "CPU-minutes (a sensor among furniture, or above a mesh coarse for it, re-gathers hundreds of points; "
+        "radiosity.gather_levels=1 takes one gather a sensor, with the mesh's values beside it)",
         done, count, each, total / 60);
 }
 

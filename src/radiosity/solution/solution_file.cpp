@@ -214,16 +214,14 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     for (const auto& name : groups) f.groupStrengths.emplace_back(name, strength[name]);
 
     // Every setting the direct pass, the shooting, the reconstruction or the seam vertices
-    // read (a setting added to them must be added here).
+    // read (a setting added to them must be added here). Not the sensor gather's
+    // (radiosity.gather_*): the sensors are gathered after loading, with the scene's.
     Hash s;
     const auto& shoot = scene.shooting;
-    const auto& gather = scene.gather;
     const auto& rec = scene.reconstruction;
     const auto& mirrors = scene.mirrorImages;
     s << shoot.stopUnshot << shoot.maxShots << shoot.maxSeconds << scene.formFactors.analyticDistance
-      << scene.direct.areaLightSamples << gather.gatherLevels << gather.gatherRefineLevels
-      << gather.gatherRefineTolerance << gather.gatherFarDiameters << shoot.shootFarDiameters << gather.gatherMinWeight
-      << rec.linear() << rec.edgeGatherLevels << rec.seamProfileNodes << mirrors.imageMethod() << mirrors.mirrorDepth
+      << scene.direct.areaLightSamples << shoot.shootFarDiameters << rec.linear() << rec.edgeGatherLevels << rec.seamProfileNodes << mirrors.imageMethod() << mirrors.mirrorDepth
       << mirrors.mirrorMinWeight << mirrors.mirrorMinShare << shoot.conserveEnergy << shoot.overshoot
       << shoot.oneChannelWhenGrey;
     const auto& c = scene.clusters;
