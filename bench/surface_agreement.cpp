@@ -189,7 +189,8 @@ int main(int argc, char** argv) {
                judged ? 100.0 * beyond5 / judged : 0.0);
     fmt::print("gather CPU a point: median {:.1f} ms, 90th percentile {:.1f} ms, max {:.1f} ms\n",
                1e3 * quantile(cpu, 0.5), 1e3 * quantile(cpu, 0.9), 1e3 * quantile(cpu, 1.0));
-    fmt::print("point gathers a point (its own and its re-gathers): median {:.0f}, 90th percentile {:.0f}, max {:.0f}\n",
+    fmt::print("point gathers a point (its own and its re-gathers): median {:.0f}, 90th percentile {:.0f}, "
+               "max {:.0f}\n",
                quantile(gathers, 0.5), quantile(gathers, 0.9), quantile(gathers, 1.0));
     fmt::print("worst points (position, normal, patch area m², longest edge m: mesh lx, gather lx, direct lx)\n");
     for (size_t k = 0; k < std::min<size_t>(12, worst.size()); ++k) {

