@@ -149,10 +149,12 @@ expect 2 "scene is a directory" "adir.json" -- solve "$work/adir.json"
 
 # Absurd sizes: an error naming the setting, before anything is allocated.
 scene tiny_edge "{$good_materials, $good_box, $good_light, \"radiosity\": {\"max_edge\": 1e-5}}"
-start=$(date +%s%N)
+# Under a 1 GB address-space limit: a premesher that began the 1.2e11 patches would fail
+# with another message (out of memory) instead of naming the setting.
+within_1gb() { (ulimit -v 1000000 && exec "$unlimited" "$@"); }
+unlimited="$rayrad"; rayrad=within_1gb
 expect 2 "max_edge 1e-5" "tiny_edge.json: /radiosity/max_edge: premeshing to 1e-05 m edges would make about 1.2e+11 patches" -- solve "$work/tiny_edge.json"
-elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
-if [ "$elapsed_ms" -gt 5000 ]; then echo "FAIL max_edge 1e-5 took $elapsed_ms ms"; failures=$((failures + 1)); else passed=$((passed + 1)); fi
+rayrad="$unlimited"
 scene tiny_voxel "{$good_materials, $good_box, $good_light, \"clusters\": {\"voxel_size\": 1e-12}}"
 expect 2 "voxel_size 1e-12" "tiny_voxel.json: /clusters/voxel_size: a cluster voxel of 1e-12 m makes 1e+12 voxels" -- solve "$work/tiny_voxel.json"
 scene small_voxel "{$good_materials, $good_box, $good_light, \"clusters\": {\"voxel_size\": 1e-6}, \"radiosity\": {\"max_edge\": 0.25}}"
@@ -162,14 +164,18 @@ else
     echo "FAIL voxel_size 1e-6: no warning from info"; failures=$((failures + 1))
 fi
 
-# A million sensors: the warning with the gather's estimate comes before any work (within
-# a second on an idle machine; 5 s leaves room for a loaded one); the solve is stopped then.
+# A million sensors: the warning with the gather's estimate comes before any work — it is
+# the first line the solve writes (its summary follows the solve) — and the solve is
+# stopped once it has appeared.
 scene million_sensors "{$good_materials, $good_box, $good_light, \"sensor_grids\": [{\"name\": \"g\", \"origin\": [0.01,0.01,0.5], \"u\": [0.98,0,0], \"v\": [0,0.98,0], \"counts\": [1000, 1000]}]}"
-timeout 5 "$rayrad" solve "$work/million_sensors.json" > /dev/null 2> "$work/million.txt"
-if grep -q "/sensors: 1000000 sensors: the final gather will take at least 17 CPU-minutes" "$work/million.txt"; then
+"$rayrad" solve "$work/million_sensors.json" > /dev/null 2> "$work/million.txt" &
+million=$!
+while kill -0 "$million" 2> /dev/null && ! grep -q "^warning" "$work/million.txt"; do sleep 0.1; done
+kill "$million" 2> /dev/null; wait "$million" 2> /dev/null
+if head -n 1 "$work/million.txt" | grep -q "/sensors: 1000000 sensors: the final gather will take at least 17 CPU-minutes"; then
     passed=$((passed + 1))
 else
-    echo "FAIL a million sensors: no estimate within 5 s"; head -n 3 "$work/million.txt"; failures=$((failures + 1))
+    echo "FAIL a million sensors: the estimate is not the first line"; head -n 3 "$work/million.txt"; failures=$((failures + 1))
 fi
 
 # Walkthroughs, export, sweeps and textures.
