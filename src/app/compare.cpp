@@ -4,6 +4,7 @@
 #include <core/input_file.h>
 #include <core/output_file.h>
 #include <core/text.h>
+#include <scene/json_reader.h>
 #include <tonemap/display_transform.h>
 #include <tonemap/false_colour.h>
 #include <tonemap/image_alignment.h>
@@ -41,6 +42,10 @@ HdrImage readLinear(const std::string& path, const std::string& space, const cha
 
 nlohmann::json readJson(const std::string& path, const char* what) {
     const std::string text = readInputFile(path, what, size_t(1) << 20);
+    if (const size_t at = scene::tooDeepAt(text); at != std::string::npos)
+        throw InputError(placeMessage(path, fmt::format("byte {}", at),
+                                      fmt::format("arrays and objects nested more than {} levels deep",
+                                                  scene::kMaxJsonDepth)));
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {

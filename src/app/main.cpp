@@ -331,6 +331,9 @@ int main(int argc, char** argv) {
     // A file size limit (ulimit -f) then fails a write with EFBIG, which is reported,
     // instead of killing the process half-way through a file.
     std::signal(SIGXFSZ, SIG_IGN);
+    // A reader that closed its end of the pipe (`rayrad solve … | head -1`): the write to
+    // standard output fails, and that is reported (below) instead of killing the process.
+    std::signal(SIGPIPE, SIG_IGN);
     CLI::App cli{
         "rayrad — physically based lighting simulation: progressive hierarchical radiosity for the\n"
         "indirect light, a Whitted-style ray tracer for images, illuminance at sensors.\n"
@@ -356,7 +359,14 @@ int main(int argc, char** argv) {
         if (const app::CommonArgs* common = args.common(); common && common->threads > 0)
             threads =
                 std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, common->threads);
-        return runCommand(args);
+        const int code = runCommand(args);
+        std::cout.flush();
+        if (!std::cout && code == 0) {
+            std::cerr << "rayrad: standard output: cannot write (the reading end of the pipe was closed?); "
+                         "what it did not take is lost\n";
+            return kExitOutputError;
+        }
+        return code;
     } catch (const InputError& e) {
         std::cerr << "rayrad: " << e.what() << "\n";
         return kExitInputError;

@@ -1,6 +1,9 @@
 // Vector and colour types shared by every stage (double precision; Embree gets floats).
 #pragma once
 
+#include <algorithm>
+#include <optional>
+
 #include <glm/glm.hpp>
 
 #include <cmath>
@@ -40,6 +43,14 @@ inline bool isFinite(const Vec3& v) {
 }
 
 /// The point of the segment ab nearest to x.
+/// v scaled to unit length, or nothing when it is zero. Divided by its largest component
+/// first, so neither a denormal (1e-320) nor a huge vector over- or underflows on the way.
+inline std::optional<Vec3> unitDirection(const Vec3& v) {
+    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(largest > 0) || !std::isfinite(largest)) return std::nullopt;
+    return glm::normalize(v / largest);
+}
+
 inline Vec3 closestOnSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
     const Vec3 ab = b - a;
     const double t = glm::clamp(glm::dot(x - a, ab) / glm::max(glm::dot(ab, ab), 1e-300), 0.0, 1.0);

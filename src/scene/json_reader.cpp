@@ -11,21 +11,75 @@ namespace rayrad::scene {
 
 using nlohmann::json;
 
+namespace {
+/// `value` as compact JSON (as json::dump writes it), but at most `budget` characters (more means "too long to
+/// show"): arrays and objects are written element by element, so a huge or deeply nested
+/// value is never serialised whole. Recursion stops with the budget, two characters a
+/// level at least.
+void writeBounded(const json& value, std::string& out, size_t budget) {
+    if (out.size() > budget) return;
+    if (value.is_array()) {
+        out += '[';
+        bool first = true;
+        for (const json& v : value) {
+            if (out.size() > budget) return;
+            if (!first) out += ',';
+            first = false;
+            writeBounded(v, out, budget);
+        }
+        out += ']';
+    } else if (value.is_object()) {
+        out += '{';
+        bool first = true;
+        for (auto it = value.begin(); it != value.end(); ++it) {
+            if (out.size() > budget) return;
+            if (!first) out += ',';
+            first = false;
+            out += json(it.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ':';
+            writeBounded(it.value(), out, budget);
+        }
+        out += '}';
+    } else {
+        std::string s = value.dump(-1, ' ', false, json::error_handler_t::replace);  // invalid UTF-8 from --set
+        out += s.size() > budget + 1 ? s.substr(0, budget + 1) : s;
+    }
+}
+}  // namespace
+
 std::string describe(const json& value) {
+    constexpr size_t kShown = 40;
+    std::string s;
+    writeBounded(value, s, kShown);
     switch (value.type()) {
         case json::value_t::array:
-        case json::value_t::object: {
-            // Short ones in full ("[1280, 720.5]"), long ones by their size.
-            std::string s = value.dump(-1, ' ', false, json::error_handler_t::replace);  // invalid UTF-8 from --set
-            if (s.size() <= 40) return s;
+        case json::value_t::object:
+            // Short ones in full ("[1280,720.5]"), long ones by their size.
+            if (s.size() <= kShown) return s;
             return value.is_array() ? fmt::format("an array of {} values", value.size()) : "an object";
-        }
         case json::value_t::null: return "null";
-        default: {
-            std::string s = value.dump(-1, ' ', false, json::error_handler_t::replace);  // invalid UTF-8 from --set
-            return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+        default: return s.size() > kShown ? s.substr(0, kShown - 3) + "..." : s;
+    }
+}
+
+size_t tooDeepAt(const std::string& text, int limit) {
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > limit) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
         }
     }
+    return std::string::npos;
 }
 
 static size_t editDistance(const std::string& a, const std::string& b) {
@@ -195,7 +249,12 @@ std::optional<Vec3> JsonObject::vec3(const std::string& key) {
     const json* v = get(key);
     if (!v) return std::nullopt;
     auto r = toVec3(*v);
-    if (!r) error(key, fmt::format("expected three finite numbers [x, y, z], got {}", describe(*v)));
+    if (!r) {
+        error(key, fmt::format("expected three finite numbers [x, y, z], got {}", describe(*v)));
+    } else if (std::max({std::abs(r->x), std::abs(r->y), std::abs(r->z)}) > kMaxCoordinate) {
+        error(key, fmt::format("expected numbers within ±1e9 (m), got {}", describe(*v)));
+        return std::nullopt;
+    }
     return r;
 }
 

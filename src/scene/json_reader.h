@@ -47,6 +47,7 @@ class JsonObject {
     int integer(const std::string& key, int fallback, int minValue, int maxValue);
     std::optional<std::string> string(const std::string& key);
     std::optional<bool> boolean(const std::string& key);
+    /// Three finite numbers within ±kMaxCoordinate: a point, an extent or a direction.
     std::optional<Vec3> vec3(const std::string& key);
     /// A grey value or an [r, g, b] triple, each component in [lo, hi) (or [lo, hi]).
     std::optional<Rgb> rgb(const std::string& key, double lo, double hi, bool hiInclusive);
@@ -78,6 +79,20 @@ std::string describe(const nlohmann::json& value);
 /// The closest of `candidates` to `word`: one that differs only in case, else the
 /// nearest by edit distance (≤ 3), or "".
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+/// The largest coordinate (m) a scene file's [x, y, z] may hold: a million kilometres. The
+/// ray tracer works in single precision, in which a camera at 1e20 m or a light at 1e300 m
+/// is no longer a point it can trace from; georeferenced models (UTM, 1e7 m) fit.
+constexpr double kMaxCoordinate = 1e9;
+
+/// How deep arrays and objects may nest in a scene file or a --set value: a scene needs
+/// about six levels. Deeper text is refused before it is parsed, so nothing that walks
+/// a value recursively (copying, printing) meets thousands of levels.
+constexpr int kMaxJsonDepth = 64;
+
+/// The byte offset in `text` (JSON, possibly malformed) where arrays and objects first
+/// nest deeper than `limit`, skipping strings; npos if they never do.
+size_t tooDeepAt(const std::string& text, int limit = kMaxJsonDepth);
 
 /// For JSON text that parses: "line L, column C: the key "k" appears twice in one
 /// object (first at line L', column C') ..." for the first duplicate key, or "".

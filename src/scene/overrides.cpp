@@ -1,6 +1,7 @@
 #include <scene/overrides.h>
 
 #include <core/input_error.h>
+#include <scene/json_reader.h>
 
 #include <fmt/format.h>
 
@@ -39,6 +40,11 @@ void applyOverride(json& root, const Override& o, ParseContext& ctx) {
             if (!last && !node->contains(k)) (*node)[k] = json::object();
             node = &(*node)[k];
         }
+    }
+    if (tooDeepAt(o.value) != std::string::npos) {
+        ctx.error("--set " + o.path, fmt::format("the value nests arrays and objects more than {} levels deep",
+                                                 kMaxJsonDepth));
+        return;
     }
     json value = json::parse(o.value, nullptr, /*allow_exceptions=*/false);
     *node = value.is_discarded() ? json(o.value) : value;

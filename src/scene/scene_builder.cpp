@@ -4,6 +4,7 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <scene/camera_path.h>
+#include <scene/json_reader.h>
 #include <scene/mesh_import.h>
 #include <scene/polygon.h>
 #include <scene/sensor_names.h>
@@ -545,10 +546,23 @@ class Builder {
              fmt::format("sensor name \"{}\" is used twice", s.sensors[again.front()].name));
     }
 
-    static void computeBounds(Scene& s) {
+    /// The scene's bounding box; every surface (as placed by its transform) and every
+    /// mesh file's light must lie within ±kMaxCoordinate, as the scene file's points must.
+    void computeBounds(Scene& s) const {
+        auto beyond = [](const Vec3& p) {
+            return !(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxCoordinate);
+        };
         Vec3 lo(1e300), hi(-1e300);
         for (const auto& g : s.groups)
-            for (const auto& p : g.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+            for (const auto& p : g.positions) {
+                if (beyond(p))
+                    fail(g.where, fmt::format("the surface reaches ({:.3g}, {:.3g}, {:.3g}) m, beyond ±1e9 m "
+                                              "(is its transform's scale or the file's unit wrong?)",
+                                              p.x, p.y, p.z));
+                lo = glm::min(lo, p), hi = glm::max(hi, p);
+            }
+        for (const auto& l : m_fileLights)
+            if (beyond(l.position)) fail(l.where, "the light lies beyond ±1e9 m");
         s.boundsMin = lo;
         s.boundsMax = hi;
     }

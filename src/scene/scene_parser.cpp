@@ -133,7 +133,9 @@ glm::dmat4 parseTransform(JsonObject t) {
     }
     Vec3 axis = t.vec3("rotate_axis").value_or(Vec3(0, 0, 1));
     double angle = t.number("rotate_deg", 0.0);
-    if (glm::length(axis) == 0) {
+    if (auto unit = unitDirection(axis)) {
+        axis = *unit;
+    } else {
         t.error("rotate_axis", "the rotation axis must not be zero");
         axis = Vec3(0, 0, 1);
     }
@@ -261,12 +263,13 @@ void parseLuminaireAim(JsonObject& l, LightDesc& d) {
         l.error("nadir", "give either \"aim\" (a point) or \"nadir\" (a direction), not both");
     Vec3 nadir = l.has("aim") ? l.vec3("aim").value_or(d.position - Vec3(0, 1, 0)) - d.position
                               : l.vec3("nadir").value_or(Vec3(0, -1, 0));
-    if (glm::length(nadir) == 0) {
+    if (auto unit = unitDirection(nadir)) {
+        d.nadir = *unit;
+    } else {
         l.error(l.has("aim") ? "aim" : "nadir",
                 "the luminaire's axis must not be zero (aim at a point other than its position)");
-        nadir = Vec3(0, -1, 0);
+        d.nadir = Vec3(0, -1, 0);
     }
-    d.nadir = glm::normalize(nadir);
     // C0: the given direction with its part along the axis removed.
     const Vec3 toward = l.vec3("c0_toward").value_or(std::abs(d.nadir.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1));
     const Vec3 c0 = toward - glm::dot(toward, d.nadir) * d.nadir;
@@ -360,11 +363,12 @@ LightDesc parseLight(JsonObject l, const std::string& sceneDir) {
         } else {
             d.direction = l.vec3("direction").value_or(Vec3(0, 0, -1));
         }
-        if (glm::length(d.direction) == 0) {
+        if (auto unit = unitDirection(d.direction)) {
+            d.direction = *unit;
+        } else {
             l.error(l.has("look_at") ? "look_at" : "direction", "the spot direction must not be zero");
             d.direction = Vec3(0, 0, -1);
         }
-        d.direction = glm::normalize(d.direction);
         d.innerAngleDeg = l.number("inner_angle_deg", 30.0);
         d.outerAngleDeg = l.number("outer_angle_deg", 45.0);
         if (!(d.outerAngleDeg > 0 && d.outerAngleDeg <= 180))
@@ -392,13 +396,19 @@ void readResolution(JsonObject& c, CameraDesc& d) {
     }
 }
 
-/// look_at away from position, up not along the viewing direction.
-void checkViewingDirection(JsonObject& c, const CameraDesc& d) {
-    Vec3 forward = d.lookAt - d.position;
-    if (glm::length(forward) == 0)
+/// look_at away from position, up neither zero nor along the viewing direction; up is
+/// made a unit vector (a denormal one would overflow when the camera normalises it).
+void checkViewingDirection(JsonObject& c, CameraDesc& d) {
+    const std::optional<Vec3> forward = unitDirection(d.lookAt - d.position);
+    const std::optional<Vec3> up = unitDirection(d.up);
+    if (!forward)
         c.error("look_at", "look_at must differ from position");
-    else if (glm::length(glm::cross(forward, d.up)) < 1e-9 * glm::length(forward) * glm::length(d.up))
+    else if (!up)
+        c.error("up", "up must not be zero");
+    else if (glm::length(glm::cross(*forward, *up)) < 1e-9)
         c.error("up", "up must not be parallel to the viewing direction");
+    else
+        d.up = *up;
 }
 
 CameraDesc parseCamera(JsonObject c) {
@@ -616,6 +626,11 @@ std::string lineColumn(const std::string& text, size_t byte) {
 /// The scene file's text as a JSON object without duplicate keys; false (and an error
 /// naming the line and column) when it is not one.
 bool readJsonObject(const std::string& text, ParseContext& ctx, json& root) {
+    if (const size_t at = tooDeepAt(text); at != std::string::npos) {
+        ctx.error(lineColumn(text, at), fmt::format("arrays and objects nested more than {} levels deep (a scene "
+                                                    "needs about six)", kMaxJsonDepth));
+        return false;
+    }
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {

@@ -32,8 +32,8 @@ SensorDesc parseSensor(JsonObject s, int index) {
     d.position = s.vec3("position").value_or(Vec3(0.0));
     s.required("normal");
     d.normal = s.vec3("normal").value_or(Vec3(0, 0, 1));
-    if (glm::length(d.normal) == 0) s.error("normal", "the normal must not be zero");
-    else d.normal = glm::normalize(d.normal);
+    if (auto unit = unitDirection(d.normal)) d.normal = *unit;
+    else s.error("normal", "the normal must not be zero");
     if (auto r = s.object("reference")) parseReference(*r, d);
     s.finish();
     return d;
@@ -57,11 +57,12 @@ void parseSensorGrid(JsonObject g, int index, std::vector<SensorDesc>& out) {
     }
     Vec3 n = glm::cross(u, v);
     if (g.has("normal")) n = g.vec3("normal").value_or(n);
-    if (glm::length(n) == 0) {
+    if (auto unit = unitDirection(n)) {
+        n = *unit;
+    } else {
         g.error(g.has("normal") ? "normal" : "v", "the grid's normal is zero (u and v parallel?)");
         n = Vec3(0, 0, 1);
     }
-    n = glm::normalize(n);
     g.finish();
     // Points at the centres of the nu × nv cells of the parallelogram (origin, u, v).
     out.reserve(out.size() + static_cast<size_t>(nu) * nv);
@@ -151,8 +152,10 @@ SurfaceGridDesc parseSurfaceGrid(JsonObject g, int index) {
     d.material = g.string("material").value_or("");
     if (g.has("facing")) {
         d.facing = g.vec3("facing");
-        if (d.facing && glm::length(*d.facing) == 0) g.error("facing", "the direction must not be zero");
-        else if (d.facing) d.facing = glm::normalize(*d.facing);
+        if (d.facing) {
+            if (auto unit = unitDirection(*d.facing)) d.facing = *unit;
+            else g.error("facing", "the direction must not be zero");
+        }
     }
     if (g.has("spacing")) d.spacing = g.positive("spacing", 1.0);
     d.offset = g.nonNegative("offset", 0.0);
