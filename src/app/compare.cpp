@@ -3,6 +3,7 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <core/output_file.h>
+#include <core/result_error.h>
 #include <core/text.h>
 #include <scene/json_reader.h>
 #include <tonemap/display_transform.h>
@@ -246,6 +247,29 @@ tonemap::Picture differenceMap(const HdrImage& a, const HdrImage& b, const Error
 
 }  // namespace
 
+namespace {
+/// Of b's pixels, the share the aligned a must cover for a comparison to mean anything.
+constexpr double kMinOverlap = 0.1;
+
+/// An image a comparison can be made with: every value finite, not every pixel black.
+/// Throws ResultError naming `path` (exit 4): figures over NaN are read as 0 over 0 pixels,
+/// and a bound would pass them.
+void checkComparable(const HdrImage& image, const std::string& path) {
+    size_t nonFinite = 0, lit = 0;
+    for (const Rgb& p : image.pixels) {
+        if (!std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b))
+            ++nonFinite;
+        else if (p.r != 0 || p.g != 0 || p.b != 0)
+            ++lit;
+    }
+    if (nonFinite > 0)
+        throw ResultError(placeMessage(path, "", fmt::format("{} of its {} pixels are not finite (NaN or Inf): "
+                                                             "no figure over it can be trusted",
+                                                             nonFinite, image.pixels.size())));
+    if (lit == 0) throw ResultError(placeMessage(path, "", "every pixel is black: there is nothing to compare"));
+}
+}  // namespace
+
 int compareImages(const CompareOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpuStart = std::clock();
@@ -272,6 +296,8 @@ int compareImages(const CompareOptions& o) {
 
     HdrImage a = readLinear(o.a, o.aSpace, "--a-space");
     const HdrImage b = readLinear(o.b, o.bSpace, "--b-space");
+    checkComparable(a, o.a);
+    checkComparable(b, o.b);
     // Alignment: a resampled onto b's grid through the homography (NaN outside a).
     double residual = 0;  // px in a: how far the fitted map misses the given points
     if (!pairs.empty()) {
@@ -280,6 +306,15 @@ int compareImages(const CompareOptions& o) {
             residual = std::max(residual, std::hypot(m[0] - p.ax, m[1] - p.ay));
         }
         a = tonemap::warpOnto(a, homography, b.width, b.height);
+        size_t covered = 0;
+        for (const Rgb& p : a.pixels) covered += std::isfinite(p.r);
+        const double share = static_cast<double>(covered) / static_cast<double>(a.pixels.size());
+        if (share < kMinOverlap)
+            throw ResultError(placeMessage(o.alignFile, "",
+                                           fmt::format("the alignment maps {} onto {:.1f} % of {}, less than the "
+                                                       "{:.0f} % a comparison needs (are the points' a and b "
+                                                       "swapped, or in another image's pixels?)",
+                                                       o.a, 100 * share, o.b, 100 * kMinOverlap)));
     } else if (a.width != b.width || a.height != b.height) {
         throw InputError(placeMessage(o.a, "",
                                       fmt::format("is {}×{} but {} is {}×{}: give --align with four or more "

@@ -240,7 +240,7 @@ int runRender(const app::RenderArgs& args) {
     const std::string firstView = description + (views.size() > 1 ? ", view " + views.front() : "");
     if (tile.count > 0) {
         for (const auto& path : outputs.viewImages.front())
-            files.set(path, app::encodeTile(path, *run.image, tile, firstView));
+            files.set(path, app::encodeTile(path, *run.image, tile, firstView, app::renderFingerprint(run)));
     } else {
         app::stageImages(outputs.viewImages.front(), *run.image, run.displayImage ? *run.displayImage : *run.image,
                          display, firstView, files);

@@ -1,5 +1,7 @@
 #include <app/pipeline.h>
 
+#include <app/result_checks.h>
+
 #include <app/grid_statistics.h>
 #include <app/image_output.h>
 #include <app/problem_size.h>
@@ -250,6 +252,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
         const std::string bytes = readInputFile(options.solutionFile, "solution file", size_t(1) << 40);
         run.lighting = radiosity::loadSolution(run.scene, run.mesh, bytes, options.solutionFile, log);
     }
+    checkSolution(run.lighting.solution, options.solutionFile);
 
     if (options.wantSensors && !run.scene.sensors.empty()) {
         const auto values = radiosity::gatherSensors(run.scene, run.mesh, *run.embree, run.lighting, log);

@@ -23,7 +23,8 @@ void checkRenderedImage(const HdrImage& image, bool allowBlack) {
             continue;
         }
         brightest = std::max(brightest, std::max({p.r, p.g, p.b}));
-        lit += p != Rgb(0.0);
+        // Black as written: an EXR holds floats, in which 1e-300 cd/m² is 0.
+        lit += static_cast<float>(p.r) != 0 || static_cast<float>(p.g) != 0 || static_cast<float>(p.b) != 0;
     }
     if (bad > 0) {
         const Rgb& p = image.pixels[firstBad];
@@ -33,11 +34,35 @@ void checkRenderedImage(const HdrImage& image, bool allowBlack) {
             "Nothing was written",
             bad, firstBad % image.width, firstBad / image.width, p.r, p.g, p.b));
     }
+    if (lit == 0 && brightest > 0 && !allowBlack)
+        throw ResultError(fmt::format(
+            "every pixel of the image is black as an EXR float holds it (the brightest is {:.3g} cd/m², below "
+            "1.4e-45): is a light's intensity or a group's dimming absurdly small? Nothing was written",
+            brightest));
     if (lit == 0 && !allowBlack)
         throw ResultError(
             "every pixel of the image is black: no light reaches the camera (is it behind a mirror or a one-sided "
             "surface, inside a closed object, or looking away from every lit surface?). Nothing was written; "
             "--allow-black writes it anyway");
+}
+
+void checkSolution(const radiosity::RadiositySolution& solution, const std::string& solutionFile) {
+    auto finite = [](const Rgb& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); };
+    auto fail = [&](const std::string& what, size_t index, size_t count) {
+        const std::string source = solutionFile.empty() ? "the solution" : solutionFile;
+        throw ResultError(fmt::format("{} holds {} non-finite {} value(s), the first at index {}: is a light's "
+                                      "intensity or luminance absurdly large? Nothing was written",
+                                      source, count, what, index));
+    };
+    auto scan = [&](const std::vector<Rgb>& values, const std::string& what) {
+        size_t bad = 0, first = 0;
+        for (size_t i = 0; i < values.size(); ++i)
+            if (!finite(values[i]) && bad++ == 0) first = i;
+        if (bad > 0) fail(what, first, bad);
+    };
+    scan(solution.directMean, "direct patch");
+    scan(solution.indirect, "indirect patch");
+    scan(solution.vertexIndirect, "vertex");
 }
 
 void checkDisplayImage(const std::string& path, const std::vector<uint8_t>& rgb8, const std::string& exposure) {

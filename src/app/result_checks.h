@@ -4,6 +4,7 @@
 
 #include <app/sensor_table.h>
 #include <core/hdr_image.h>
+#include <radiosity/solution/solution.h>
 
 #include <cstdint>
 #include <string>
@@ -15,6 +16,12 @@ namespace rayrad::app {
 /// (3.4e38), and not every pixel black unless `allowBlack` (a camera behind a mirror's
 /// back, inside a closed object, or looking away from every lit surface).
 void checkRenderedImage(const HdrImage& image, bool allowBlack);
+
+/// The radiosity solution (solved, or read from `solutionFile` when not empty): every
+/// patch's direct and indirect illuminance and every vertex value finite, else
+/// ResultError naming the first (a NaN texel or an absurd light makes a NaN solution that
+/// would otherwise be saved or exported).
+void checkSolution(const radiosity::RadiositySolution& solution, const std::string& solutionFile);
 
 /// The display image of a rendering that has light: not every pixel black and not
 /// every pixel white, which only an exposure far off can do. `exposure` describes it

@@ -5,6 +5,7 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <core/output_file.h>
+#include <radiosity/solution/solution_file.h>
 #include <tonemap/image_io.h>
 
 #include <fmt/format.h>
@@ -24,7 +25,33 @@ std::string attribute(const std::vector<std::pair<std::string, std::string>>& at
     throw InputError(placeMessage(path, "", "not a tile of a rayrad rendering (no " + name + "; render --tile writes tiles)"));
 }
 
+/// 64-bit FNV-1a over the bytes of plain values.
+struct Fnv {
+    uint64_t h = 1469598103934665603ull;
+    template <class T>
+    Fnv& operator<<(const T& value) {
+        const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
+        for (size_t i = 0; i < sizeof(T); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+        return *this;
+    }
+};
+
 }  // namespace
+
+std::string renderFingerprint(const PipelineRun& run) {
+    const radiosity::SolutionFingerprint f = radiosity::fingerprintOf(run.scene, run.mesh);
+    Fnv h;
+    h << f.geometry << f.materials << f.lights << f.settings;
+    if (run.scene.camera) {
+        const scene::Camera& c = *run.scene.camera;
+        h << c.position << c.lookAt << c.up << c.verticalFovDeg << c.width << c.height << static_cast<int>(c.projection)
+          << c.orthoHeight;
+    }
+    const scene::RenderOptions& r = run.scene.render;
+    h << r.samplesPerPixel << r.seed << r.areaLightSamples << r.directThreshold << r.shareFarShadows << r.maxDepth
+      << r.displayRangeCompression << r.smoothingAngleDeg << r.gatherIndirect;
+    return fmt::format("{:016x}", h.h);
+}
 
 Tile parseTile(const std::string& text) {
     Tile t;
@@ -41,7 +68,8 @@ std::pair<int, int> tileRows(const Tile& t, int height) {
     return {static_cast<int>((t.index - 1) * h / t.count), static_cast<int>(t.index * h / t.count)};
 }
 
-std::string encodeTile(const std::string& path, const HdrImage& image, const Tile& t, const std::string& description) {
+std::string encodeTile(const std::string& path, const HdrImage& image, const Tile& t, const std::string& description,
+                       const std::string& fingerprint) {
     const auto [first, last] = tileRows(t, image.height);
     HdrImage band(image.width, last - first);
     for (int y = first; y < last; ++y)
@@ -49,7 +77,8 @@ std::string encodeTile(const std::string& path, const HdrImage& image, const Til
     return tonemap::encodeExr(path, band, fmt::format("tile {}/{} of: {}", t.index, t.count, description),
                               {{"rayrad:tile", fmt::format("{}/{}", t.index, t.count)},
                                {"rayrad:image_size", fmt::format("{}x{}", image.width, image.height)},
-                               {"rayrad:description", description}});
+                               {"rayrad:description", description},
+                               {"rayrad:fingerprint", fingerprint}});
 }
 
 int mergeTiles(const std::vector<std::string>& outputs, const std::vector<std::string>& tiles) {
@@ -57,7 +86,7 @@ int mergeTiles(const std::vector<std::string>& outputs, const std::vector<std::s
     for (const auto& t : tiles) files.addInput(t);
     addImageOutputs(outputs, files);
     HdrImage full;
-    std::string description;
+    std::string description, fingerprint;
     int count = 0;
     std::map<int, std::string> seen;  // index → tile file
     for (const auto& path : tiles) {
@@ -71,13 +100,20 @@ int mergeTiles(const std::vector<std::string>& outputs, const std::vector<std::s
         if (std::sscanf(size.c_str(), "%dx%d%c", &width, &height, &end) != 2 || width < 1 || height < 1)
             throw InputError(placeMessage(path, "", "a damaged tile (image size \"" + size + "\")"));
         const std::string d = attribute(attributes, "rayrad:description", path);
+        const std::string print = attribute(attributes, "rayrad:fingerprint", path);
         if (seen.empty()) {
             full = HdrImage(width, height);
             description = d;
+            fingerprint = print;
             count = t.count;
         } else if (width != full.width || height != full.height || t.count != count || d != description) {
             throw InputError(placeMessage(path, "", fmt::format("is a tile of another rendering than {} (size, tile count or "
                                                                 "scene differ)", seen.begin()->second)));
+        } else if (print != fingerprint) {
+            throw InputError(placeMessage(path, "", fmt::format("is a tile of another rendering than {}: the scene's "
+                                                                "geometry, materials, lights, settings or camera "
+                                                                "differ (render fingerprint {} against {})",
+                                                                seen.begin()->second, print, fingerprint)));
         }
         if (!seen.emplace(t.index, path).second)
             throw InputError(placeMessage(path, "", fmt::format("tile {}/{} is given twice (also {})", t.index, t.count, seen[t.index])));

@@ -81,6 +81,18 @@ TextureImages::TextureImages(const std::vector<std::string>& files) : m_impl(std
         image.resolution = std::max(spec.width, spec.height);
         const std::string space = spec.get_string_attribute("oiio:ColorSpace");
         const bool encoded = !(spec.format.is_floating_point() || space == "Linear" || space == "linear");
+        if (!encoded) {
+            // A float image can hold NaN and Inf, which would make a NaN reflectance and
+            // a NaN solution: refused here, where the file can be named.
+            OIIO::ImageBuf buffer(file);
+            const auto stats = OIIO::ImageBufAlgo::computePixelStats(buffer);
+            size_t bad = 0;
+            for (size_t c = 0; c < stats.nancount.size(); ++c) bad += stats.nancount[c] + stats.infcount[c];
+            if (bad > 0)
+                throw InputError(fmt::format("{}: {} texel value(s) are not finite (NaN or Inf): a texture gives "
+                                             "reflectances, numbers from 0 to 1",
+                                             file, bad));
+        }
         if (encoded) {
             // 8- and 16-bit images are sRGB-encoded: looked up through a linear copy.
             if (m_impl->linearDirectory.empty()) m_impl->linearDirectory = makeTemporaryDirectory();

@@ -61,4 +61,52 @@ fi
 rc=${PIPESTATUS[0]}
 if [ "$rc" -eq 0 ] || [ "$rc" -eq 3 ]; then passed=$((passed + 1)); else echo "FAIL solve into a closed pipe: exit $rc"; failures=$((failures + 1)); fi
 
+# Broken results: exit 4, nothing written.
+# 4×4 PFM images (linear floats): every pixel v (bytes of a little-endian float).
+pfm() {  # pfm NAME PIXELS... (each "1", "1.1", "0" or "nan"): 16 pixels, grey
+    printf 'PF\n4 4\n-1.0\n' > "$work/$1.pfm"
+    local name="$1" v
+    shift
+    for v in "$@"; do
+        case "$v" in
+            1) printf '\x00\x00\x80\x3f\x00\x00\x80\x3f\x00\x00\x80\x3f' ;;
+            1.1) printf '\xcd\xcc\x8c\x3f\xcd\xcc\x8c\x3f\xcd\xcc\x8c\x3f' ;;
+            0) printf '\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00' ;;
+            nan) printf '\x00\x00\xc0\x7f\x00\x00\xc0\x7f\x00\x00\xc0\x7f' ;;
+        esac >> "$work/$name.pfm"
+    done
+}
+sixteen() { for _ in $(seq 16); do printf '%s ' "$1"; done; }
+pfm one $(sixteen 1)
+pfm other $(sixteen 1.1)
+pfm black $(sixteen 0)
+pfm nan $(sixteen nan)
+pfm halfnan $(sixteen nan | cut -d' ' -f1-8) $(sixteen 1 | cut -d' ' -f1-8)
+linear=(--a-space linear --b-space linear --fail-above mean_abs_rel_pct=50)
+check "compare of two images" quietly "$rayrad" compare "$work/one.pfm" "$work/other.pfm" "${linear[@]}"
+expect 4 "compare with an all-black reference" "black.pfm: every pixel is black: there is nothing to compare" -- compare "$work/one.pfm" "$work/black.pfm" "${linear[@]}"
+expect 4 "compare with an all-NaN image" "nan.pfm: 16 of its 16 pixels are not finite" -- compare "$work/nan.pfm" "$work/one.pfm" "${linear[@]}"
+expect 4 "compare with a half-NaN image" "halfnan.pfm: 8 of its 16 pixels are not finite" -- compare "$work/one.pfm" "$work/halfnan.pfm" "${linear[@]}"
+printf '%s\n' '[{"a":[100,100],"b":[0,0]},{"a":[104,100],"b":[4,0]},{"a":[104,104],"b":[4,4]},{"a":[100,104],"b":[0,4]}]' > "$work/away.json"
+expect 4 "an alignment that maps outside the image" "away.json: the alignment maps $work/one.pfm onto 0.0 % of $work/other.pfm, less than the 10 %" -- compare "$work/one.pfm" "$work/other.pfm" "${linear[@]}" --align "$work/away.json"
+
+# A NaN texel: refused where the texture is read (it made a NaN solution that solve
+# --save and export wrote).
+printf 'PF\n1 1\n-1.0\n\x00\x00\xc0\x7f\x00\x00\x00\x3f\x00\x00\x00\x3f' > "$work/nantexel.pfm"
+scene nan_texel "{\"materials\": {\"t\": {\"texture\": \"nantexel.pfm\"}}, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,1,1], \"facing\": \"inward\", \"material\": \"t\"}], $light}"
+expect 2 "a NaN texel, solve --save" "nantexel.pfm: 1 texel value(s) are not finite" -- solve "$work/nan_texel.json" --save "$work/out.rrs"
+expect 2 "a NaN texel, export" "nantexel.pfm: 1 texel value(s) are not finite" -- export "$work/nan_texel.json" -o "$work/out.glb"
+
+# A light of 1e-300 cd: black as the EXR's floats hold it.
+scene faint "{$materials, $box, \"lights\": [{\"type\": \"point\", \"position\": [0.5,0.5,0.5], \"intensity_cd\": 1e-300}], $(camera '[0.5,0.5,0.1]' '[0,1,0]')}"
+expect 4 "a light of 1e-300 cd" "every pixel of the image is black as an EXR float holds it" -- render "$work/faint.json" -o "$work/out.exr"
+
+# Tiles of two renderings of one file (a light changed between them) are not one image.
+mkdir -p "$work/tiles"
+scene tiles/s "{$materials, $box, $light, $(camera '[0.5,0.5,0.1]' '[0,1,0]')}"
+quietly "$rayrad" render "$work/tiles/s.json" --tile 1/2 -o "$work/tiles/t1.exr" -q
+sed -i 's/"intensity_cd": 10/"intensity_cd": 20/' "$work/tiles/s.json"
+quietly "$rayrad" render "$work/tiles/s.json" --tile 2/2 -o "$work/tiles/t2.exr" -q
+expect 2 "merge of tiles of two renderings" "t2.exr: is a tile of another rendering than $work/tiles/t1.exr: the scene's geometry, materials, lights, settings or camera differ" -- merge -o "$work/out.exr" "$work/tiles/t1.exr" "$work/tiles/t2.exr"
+
 finish "hostile inputs"
