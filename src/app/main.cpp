@@ -20,6 +20,7 @@
 #include <app/walkthrough.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
+#include <core/termination.h>
 #include <core/result_error.h>
 #include <core/text.h>
 #include <radiosity/radiosity.h>
@@ -334,6 +335,9 @@ int main(int argc, char** argv) {
     // A reader that closed its end of the pipe (`rayrad solve … | head -1`): the write to
     // standard output fails, and that is reported (below) instead of killing the process.
     std::signal(SIGPIPE, SIG_IGN);
+    // SIGTERM (a batch system's time limit), SIGINT, SIGHUP: temporaries removed, old
+    // outputs left as they were.
+    installTerminationCleanup();
     CLI::App cli{
         "rayrad — physically based lighting simulation: progressive hierarchical radiosity for the\n"
         "indirect light, a Whitted-style ray tracer for images, illuminance at sensors.\n"

@@ -1,15 +1,19 @@
 #include <core/output_file.h>
 
 #include <core/input_error.h>
+#include <core/termination.h>
 
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <csignal>
+#include <cstdlib>
 #include <climits>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <set>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -101,9 +105,11 @@ FileId identify(const fs::path& p) {
     return id;
 }
 
-/// A temporary name beside `target`, short enough for any file system: ".rayrad-PID-K.tmp".
-fs::path temporaryBeside(const fs::path& target, int k) {
-    return directoryOf(target) / fmt::format(".rayrad-{}-{}.tmp", getpid(), k);
+/// A temporary name beside `target`, short enough for any file system:
+/// ".rayrad-PID-K.tmp" (the new file) or ".rayrad-PID-K.old" (the old one, kept while the
+/// outputs are replaced).
+fs::path temporaryBeside(const fs::path& target, int k, const char* suffix) {
+    return directoryOf(target) / fmt::format(".rayrad-{}-{}.{}", getpid(), k, suffix);
 }
 
 /// Writes `bytes` to a new file `tmp` (its mode that of `modeFrom` if that exists),
@@ -153,8 +159,32 @@ void OutputFiles::addInput(const std::string& path) {
     m_inputs.push_back(path);
 }
 
+namespace {
+/// Removes the temporary files (".rayrad-PID-K.tmp" / ".old") that processes no longer
+/// running left in `dir` (killed with SIGKILL, or a machine that went down); each
+/// directory once a process.
+void removeStaleTemporaries(const fs::path& dir) {
+    static std::set<std::string> done;
+    std::error_code ec;
+    const std::string key = fs::weakly_canonical(fs::absolute(dir, ec), ec).string();
+    if (!done.insert(key).second) return;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        long pid = 0;
+        int k = 0, used = 0;
+        char suffix[4] = {};
+        if (std::sscanf(name.c_str(), ".rayrad-%ld-%d.%3[a-z]%n", &pid, &k, suffix, &used) != 3 ||
+            used != static_cast<int>(name.size()) || (std::strcmp(suffix, "tmp") != 0 && std::strcmp(suffix, "old") != 0))
+            continue;
+        if (pid <= 0 || pid == getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        std::remove(it->path().c_str());
+    }
+}
+}  // namespace
+
 void OutputFiles::add(const std::string& path) {
     const fs::path target = checkOutput(path);
+    removeStaleTemporaries(directoryOf(target));
     const FileId id = identify(target);
     for (const auto& in : m_inputs)
         if (identify(in) == id) fail(path, "it is an input of this run ('" + in + "')");
@@ -176,35 +206,116 @@ void OutputFiles::set(const std::string& path, std::string bytes) {
     o.pending = true;
 }
 
+namespace {
+/// A fault injected into commit() for the tests (environment variable
+/// RAYRAD_TEST_COMMIT_FAULT): "rename:K" — the K-th rename fails (EIO); "signal:write:K" or
+/// "signal:rename:K" — SIGTERM is raised after the K-th temporary file is written or the
+/// K-th output renamed into place.
+struct InjectedFault {
+    enum class Kind { None, RenameFails, SignalAfterWrite, SignalAfterRename } kind = Kind::None;
+    size_t at = 0;  ///< 1-based
+    static InjectedFault fromEnvironment() {
+        InjectedFault f;
+        const char* text = std::getenv("RAYRAD_TEST_COMMIT_FAULT");
+        if (!text) return f;
+        const std::string t = text;
+        auto number = [&](const std::string& prefix) {
+            return t.rfind(prefix, 0) == 0 ? std::strtoul(t.c_str() + prefix.size(), nullptr, 10) : 0ul;
+        };
+        if (size_t k = number("rename:")) f.kind = Kind::RenameFails, f.at = k;
+        if (size_t k = number("signal:write:")) f.kind = Kind::SignalAfterWrite, f.at = k;
+        if (size_t k = number("signal:rename:")) f.kind = Kind::SignalAfterRename, f.at = k;
+        return f;
+    }
+    bool is(Kind k, size_t index) const { return kind == k && at == index + 1; }
+};
+
+/// Keeps the file at `target` (if there is one) under the name `backup` too: a hard link,
+/// or a copy where the file system has none. False when there is no file to keep.
+bool keepOld(const std::string& path, const fs::path& target, const fs::path& backup) {
+    struct stat st {};
+    if (stat(target.c_str(), &st) != 0) return false;
+    if (::link(target.c_str(), backup.c_str()) == 0) return true;
+    std::error_code ec;
+    if (!fs::copy_file(target, backup, ec))
+        fail(path, "cannot keep the old file while the outputs are replaced: " + ec.message());
+    return true;
+}
+}  // namespace
+
 void OutputFiles::commit() {
     std::vector<Output*> pending;
     for (auto& o : m_outputs)
         if (o.pending) pending.push_back(&o);
-    std::vector<fs::path> temporaries;
-    auto removeTemporaries = [&] {
-        for (const auto& t : temporaries) std::remove(t.c_str());
+    if (pending.empty()) return;
+    // Every name first, so a termination signal can remove whatever of them exists.
+    std::vector<std::string> temporaries, backups, cleanup;
+    for (size_t i = 0; i < pending.size(); ++i) {
+        temporaries.push_back(temporaryBeside(pending[i]->target, static_cast<int>(i), "tmp").string());
+        backups.push_back(temporaryBeside(pending[i]->target, static_cast<int>(i), "old").string());
+    }
+    cleanup.insert(cleanup.end(), temporaries.begin(), temporaries.end());
+    cleanup.insert(cleanup.end(), backups.begin(), backups.end());
+    TerminationCleanup onSignal(cleanup);
+    const InjectedFault fault = InjectedFault::fromEnvironment();
+    auto removeAll = [](const std::vector<std::string>& files) {
+        for (const auto& f : files) std::remove(f.c_str());
     };
     try {
-        for (Output* o : pending) {
-            temporaries.push_back(temporaryBeside(o->target, static_cast<int>(temporaries.size())));
-            writeNewFile(o->path, temporaries.back(), o->target, o->bytes);
+        for (size_t i = 0; i < pending.size(); ++i) {
+            writeNewFile(pending[i]->path, temporaries[i], pending[i]->target, pending[i]->bytes);
+            if (fault.is(InjectedFault::Kind::SignalAfterWrite, i)) std::raise(SIGTERM);
         }
     } catch (...) {
-        removeTemporaries();
+        removeAll(temporaries);
         throw;
     }
-    // Every file is written and synced: now replace the targets.
-    for (size_t i = 0; i < pending.size(); ++i) {
-        if (std::rename(temporaries[i].c_str(), pending[i]->target.c_str()) != 0) {
-            const std::string why = std::strerror(errno);
-            for (size_t j = i; j < pending.size(); ++j) std::remove(temporaries[j].c_str());
-            fail(pending[i]->path, why + (i > 0 ? fmt::format(" ({} other output(s) were already written)", i) : ""));
+    // Every file is written and synced: now replace the targets, each old file kept until
+    // all are in place. A failed rename, or a termination signal (held back meanwhile),
+    // puts every old file back: all outputs or none.
+    onSignal.holdSignals();
+    std::vector<char> hadOld(pending.size(), 0);
+    size_t placed = 0;
+    auto undo = [&] {
+        for (size_t j = 0; j < placed; ++j) {
+            const std::string& target = pending[j]->target;
+            if (hadOld[j])
+                std::rename(backups[j].c_str(), target.c_str());
+            else
+                std::remove(target.c_str());
         }
-        syncDirectory(directoryOf(pending[i]->target));
-        pending[i]->pending = false;
-        pending[i]->bytes.clear();
-        pending[i]->bytes.shrink_to_fit();
+        removeAll(temporaries);
+        removeAll(backups);
+    };
+    for (size_t i = 0; i < pending.size(); ++i) {
+        try {
+            hadOld[i] = keepOld(pending[i]->path, pending[i]->target, backups[i]);
+        } catch (...) {
+            undo();
+            throw;
+        }
+        const bool injected = fault.is(InjectedFault::Kind::RenameFails, i);
+        if (injected || std::rename(temporaries[i].c_str(), pending[i]->target.c_str()) != 0) {
+            const std::string why = injected ? std::strerror(EIO) : std::strerror(errno);
+            if (hadOld[i]) std::remove(backups[i].c_str());
+            undo();
+            fail(pending[i]->path,
+                 why + (i > 0 ? fmt::format(" (the {} other output(s) already replaced were put back)", i) : ""));
+        }
+        ++placed;
+        if (fault.is(InjectedFault::Kind::SignalAfterRename, i)) std::raise(SIGTERM);
+        if (onSignal.heldSignal() != 0) {
+            undo();
+            onSignal.releaseSignals();  // ends the process
+        }
     }
+    for (Output* o : pending) {
+        syncDirectory(directoryOf(o->target));
+        o->pending = false;
+        o->bytes.clear();
+        o->bytes.shrink_to_fit();
+    }
+    removeAll(backups);
 }
 
 void writeFileAtomically(const std::string& path, const std::string& bytes) {

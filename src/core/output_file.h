@@ -1,7 +1,8 @@
 // Writing outputs safely. Every output path is checked before any work; at the end all
 // of a run's outputs are written together, each to a temporary file beside its target,
-// every write checked and fsynced, then renamed over the target. A failure removes the
-// temporary files and leaves every existing file as it was.
+// every write checked and fsynced, then renamed over the target while the old file is
+// kept beside it until every rename has succeeded. A failure, or a termination signal,
+// removes the temporary files and puts every old file back: all outputs or none.
 #pragma once
 
 #include <stdexcept>
@@ -23,7 +24,8 @@ class OutputFiles {
     /// Inputs of the run (scene file, mesh files): no output may be one of them.
     void addInput(const std::string& path);
 
-    /// Checks `path` as an output of this run, now, before any work; throws OutputError
+    /// Checks `path` as an output of this run, now, before any work (and removes temporary
+    /// files that processes no longer running left beside it); throws OutputError
     /// when it cannot be written: its directory is missing or not writable, it is a
     /// directory, a device or another non-regular file, it is read-only, its name is
     /// longer than the file system allows, or it is an input or another output of the
@@ -34,7 +36,11 @@ class OutputFiles {
     void set(const std::string& path, std::string bytes);
 
     /// Writes every output given since the last commit: all temporary files first, then
-    /// the renames. Throws OutputError naming the file; no temporary file is left.
+    /// the renames. Throws OutputError naming the file; no temporary file is left and
+    /// every output already replaced is put back. A termination signal meanwhile does the
+    /// same, then ends the process (termination.h). For the tests, the environment
+    /// variable RAYRAD_TEST_COMMIT_FAULT injects a fault: "rename:K" (the K-th rename
+    /// fails), "signal:write:K" or "signal:rename:K" (SIGTERM after the K-th write or rename).
     void commit();
 
   private:

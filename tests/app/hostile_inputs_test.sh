@@ -109,4 +109,57 @@ sed -i 's/"intensity_cd": 10/"intensity_cd": 20/' "$work/tiles/s.json"
 quietly "$rayrad" render "$work/tiles/s.json" --tile 2/2 -o "$work/tiles/t2.exr" -q
 expect 2 "merge of tiles of two renderings" "t2.exr: is a tile of another rendering than $work/tiles/t1.exr: the scene's geometry, materials, lights, settings or camera differ" -- merge -o "$work/out.exr" "$work/tiles/t1.exr" "$work/tiles/t2.exr"
 
+# All outputs or none: a rename that fails, or SIGTERM while the temporaries are written
+# or the outputs renamed, leaves every old output byte-identical and no temporary.
+mkdir -p "$work/commit"
+scene commit/s "{$materials, $box, $light, $(camera '[0.5,0.5,0.1]' '[0,1,0]'), \"sensors\": [{\"name\": \"s\", \"position\": [0.5,0.5,0], \"normal\": [0,0,1]}]}"
+old_outputs() { echo old-image > "$work/commit/a.png"; echo old-table > "$work/commit/a.csv"; echo old-report > "$work/commit/r.json"; }
+outputs_are_old() {
+    [ "$(cat "$work/commit/a.png" "$work/commit/a.csv" "$work/commit/r.json")" = "$(printf 'old-image\nold-table\nold-report')" ] &&
+        ! ls -a "$work/commit" | grep -q '^\.rayrad-'
+}
+commit_run() { "$rayrad" render "$work/commit/s.json" -o "$work/commit/a.png" --sensors "$work/commit/a.csv" --report "$work/commit/r.json" -q > /dev/null 2> "$work/commit/err.txt"; }
+for fault in rename:1 rename:2 rename:3 signal:write:1 signal:write:3 signal:rename:1 signal:rename:2 signal:rename:3; do
+    old_outputs
+    RAYRAD_TEST_COMMIT_FAULT=$fault commit_run
+    rc=$?
+    case $fault in rename:*) want=3 ;; *) want=143 ;; esac  # 128 + SIGTERM
+    if [ "$rc" -eq "$want" ] && outputs_are_old; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL commit fault $fault: exit $rc (wanted $want): $(ls -a "$work/commit" | tr '\n' ' ') $(head -c 300 "$work/commit/err.txt")"
+        failures=$((failures + 1))
+    fi
+done
+# A real SIGTERM at a moment the test does not choose: either the run had finished (exit 0,
+# every output new) or every output is old; never a mix, never a temporary.
+old_outputs
+commit_run &
+pid=$!
+sleep 0.2
+kill -TERM "$pid" 2> /dev/null
+wait "$pid"
+rc=$?
+if { [ "$rc" -eq 143 ] && outputs_are_old; } ||
+   { [ "$rc" -eq 0 ] && ! grep -q old "$work/commit/a.png" "$work/commit/a.csv" "$work/commit/r.json" && ! ls -a "$work/commit" | grep -q '^\.rayrad-'; }; then
+    passed=$((passed + 1))
+else
+    echo "FAIL SIGTERM during a run: exit $rc: $(ls -a "$work/commit" | tr '\n' ' ')"; failures=$((failures + 1))
+fi
+# Temporaries a dead process left are removed by the next run writing beside them; a
+# live process's are not.
+old_outputs
+sleep 30 & live=$!
+dead=999999
+while kill -0 "$dead" 2> /dev/null; do dead=$((dead - 1)); done
+touch "$work/commit/.rayrad-$dead-0.tmp" "$work/commit/.rayrad-$dead-1.old" "$work/commit/.rayrad-$live-0.tmp"
+commit_run
+if [ ! -e "$work/commit/.rayrad-$dead-0.tmp" ] && [ ! -e "$work/commit/.rayrad-$dead-1.old" ] && [ -e "$work/commit/.rayrad-$live-0.tmp" ]; then
+    passed=$((passed + 1))
+else
+    echo "FAIL stale temporaries: $(ls -a "$work/commit" | tr '\n' ' ')"; failures=$((failures + 1))
+fi
+kill "$live" 2> /dev/null; wait "$live" 2> /dev/null
+rm -f "$work/commit/.rayrad-$live-0.tmp"
+
 finish "hostile inputs"
