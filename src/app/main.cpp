@@ -226,6 +226,12 @@ int runRender(const app::RenderArgs& args) {
     OutputFiles files = app::filesOf(desc);
     const RenderOutputs outputs = renderOutputs(args, desc, display, tile, o, files);
     const auto& views = outputs.views;
+    if (tile.count > 0)
+        for (const auto& [name, camera] : desc.views)
+            if (name == views.front() && tile.count > camera.height)
+                throw InputError(placeMessage("", "--tile", fmt::format("{} bands of an image {} pixels high: at most "
+                                                                        "{} (a band is at least a row)",
+                                                                        tile.count, camera.height, camera.height)));
     o.files = &files;
     auto run = app::runPipeline(a.scene, desc, o);
     app::checkRenderedImage(*run.image, args.allowBlack || tile.count > 0);  // a tile may be all sky

@@ -249,6 +249,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
     if (options.solutionFile.empty()) {
         solveLighting(run, sceneFile, options);
     } else {
+        checkInputFile(options.solutionFile, "solution file");
+        radiosity::checkSolutionFileStart(options.solutionFile);
         const std::string bytes = readInputFile(options.solutionFile, "solution file", size_t(1) << 40);
         run.lighting = radiosity::loadSolution(run.scene, run.mesh, bytes, options.solutionFile, log);
     }

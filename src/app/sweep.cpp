@@ -1,5 +1,7 @@
 #include <app/sweep.h>
 
+#include <app/sensor_table.h>
+
 #include <core/input_error.h>
 #include <core/output_file.h>
 #include <scene/scene_parser.h>
@@ -46,6 +48,13 @@ std::pair<std::string, std::vector<std::string>> parseVary(const std::string& te
     auto values = splitValues(text.substr(eq + 1));
     for (const auto& v : values)
         if (v.empty()) throw InputError(placeMessage("", "--vary", "an empty value in \"" + text + "\""));
+    // The jobs file is one job a line: a line break (or another control character) in a
+    // key or value would split a job in two.
+    for (unsigned char c : text)
+        if (c < 0x20 || c == 0x7f)
+            throw InputError(placeMessage("", "--vary", fmt::format("a control character (code {}) in the values of "
+                                                                    "\"{}\": keys and values are one line each",
+                                                                    static_cast<int>(c), text.substr(0, eq))));
     return {text.substr(0, eq), values};
 }
 
@@ -77,7 +86,7 @@ int writeSweep(const SweepOptions& o) {
 
     const int digits = static_cast<int>(std::to_string(jobs - 1).size());
     std::string lines, csv = "job";
-    for (const auto& [key, unused] : axes) csv += "," + key;
+    for (const auto& [key, unused] : axes) csv += "," + csvField(key);
     csv += "\n";
     const std::string rayrad = o.rayrad.empty() ? selfPath() : o.rayrad;
     for (size_t job = 0; job < jobs; ++job) {
@@ -91,7 +100,7 @@ int writeSweep(const SweepOptions& o) {
         }
         for (const auto& ov : overrides) {
             sets += " --set " + shellQuote(ov.path + "=" + ov.value);
-            row += "," + ov.value;
+            row += "," + csvField(ov.value);
         }
         try {
             scene::loadScene(o.scene, overrides);  // a value the scene refuses is found now, not on the farm

@@ -97,8 +97,11 @@ int mergeTiles(const std::vector<std::string>& outputs, const std::vector<std::s
         int width = 0, height = 0;
         char end = 0;
         const std::string size = attribute(attributes, "rayrad:image_size", path);
-        if (std::sscanf(size.c_str(), "%dx%d%c", &width, &height, &end) != 2 || width < 1 || height < 1)
-            throw InputError(placeMessage(path, "", "a damaged tile (image size \"" + size + "\")"));
+        // The caps of a camera's resolution: a forged size is bad input, not an allocation.
+        if (std::sscanf(size.c_str(), "%dx%d%c", &width, &height, &end) != 2 || width < 1 || height < 1 ||
+            width > 16384 || height > 16384 || static_cast<long long>(width) * height > 100'000'000LL)
+            throw InputError(placeMessage(path, "", "a damaged tile (image size \"" + size +
+                                                        "\"; an image is at most 16384 pixels a side and 10⁸ in all)"));
         const std::string d = attribute(attributes, "rayrad:description", path);
         const std::string print = attribute(attributes, "rayrad:fingerprint", path);
         if (seen.empty()) {

@@ -386,8 +386,13 @@ void readResolution(JsonObject& c, CameraDesc& d) {
         bool ok = r->size() == 2 && (*r)[0].is_number_integer() && (*r)[1].is_number_integer();
         if (ok) {
             long long w = (*r)[0].get<long long>(), h = (*r)[1].get<long long>();
-            if (w < 1 || h < 1 || w > 16384 || h > 16384 || w * h > 100'000'000LL)
+            if (w < 1 || h < 1 || w > 16384 || h > 16384)
                 ok = false;
+            else if (w * h > 100'000'000LL)
+                c.error("resolution", fmt::format("{} × {} is {} pixels, more than the 100 000 000 an image may have "
+                                                  "(render --tile spreads a big image over processes, but the "
+                                                  "whole is held to merge it)",
+                                                  w, h, w * h));
             else
                 d.width = static_cast<int>(w), d.height = static_cast<int>(h);
         }

@@ -109,6 +109,17 @@ sed -i 's/"intensity_cd": 10/"intensity_cd": 20/' "$work/tiles/s.json"
 quietly "$rayrad" render "$work/tiles/s.json" --tile 2/2 -o "$work/tiles/t2.exr" -q
 expect 2 "merge of tiles of two renderings" "t2.exr: is a tile of another rendering than $work/tiles/t1.exr: the scene's geometry, materials, lights, settings or camera differ" -- merge -o "$work/out.exr" "$work/tiles/t1.exr" "$work/tiles/t2.exr"
 
+# Codes and messages.
+expect 2 "a resolution over the pixel cap" "/camera/resolution: 16384 × 16384 is 268435456 pixels, more than the 100 000 000 an image may have" -- render "$work/good.json" --set 'camera.resolution=[16384,16384]' -o "$work/out.png"
+expect 2 "more tiles than rows" "--tile: 100 bands of an image 8 pixels high: at most 8" -- render "$work/good.json" --tile 3/100 -o "$work/out.exr"
+truncate -s 10G "$work/huge.rrs" 2> /dev/null || dd if=/dev/zero of="$work/huge.rrs" bs=1M count=64 2> /dev/null
+expect 2 "a 10 GB file as --solution: refused by its first bytes" "huge.rrs: not a rayrad solution file" -- render "$work/good.json" --solution "$work/huge.rrs" -o "$work/out.png"
+rm -f "$work/huge.rrs"
+expect 2 "a sweep value with a line break" "--vary: a control character (code 10) in the values of \"render.seed\"" -- sweep "$work/good.json" --vary "render.seed=1,$(printf '2\n3')" --jobs "$work/out.txt"
+mkdir -p "$work/sweep"
+quietly "$rayrad" sweep "$work/good.json" --vary 'camera.resolution=[8,8],[16,16]' --jobs "$work/sweep/jobs.txt"
+check "sweep values with commas are quoted in the CSV" grep -qx '1,"\[16,16\]"' "$work/sweep/jobs.csv"
+
 # All outputs or none: a rename that fails, or SIGTERM while the temporaries are written
 # or the outputs renamed, leaves every old output byte-identical and no temporary.
 mkdir -p "$work/commit"

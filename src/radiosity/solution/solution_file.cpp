@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cstring>
+#include <fstream>
 #include <map>
 #include <type_traits>
 
@@ -269,6 +270,14 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
     return std::move(w.bytes());
 }
 
+void checkSolutionFileStart(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char head[sizeof kMagic] = {};
+    in.read(head, sizeof head);
+    if (!in || std::memcmp(head, kMagic, sizeof kMagic) != 0)
+        throw InputError(placeMessage(path, "", "not a rayrad solution file (rayrad solve --save writes one)"));
+}
+
 RadiositySolution decodeSolution(const std::string& bytes, const std::string& path, const SolutionFingerprint& expected,
                                  size_t patchCount, size_t vertexCount) {
     auto fail = [&](const std::string& why) { return InputError(placeMessage(path, "", why)); };
@@ -323,9 +332,7 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     sol.mirrorAbsorbedSecondary = r.get<double>("the statistics");
     sol.backAbsorbedDirect = r.get<double>("the statistics");
     // One back flux per surface group, as many as were written (the checksum vouches for n).
-    const auto n = r.get<uint64_t>("the back fluxes");
-    sol.backFlux.resize(n);
-    for (auto& v : sol.backFlux) v = r.get<double>("the back fluxes");
+    sol.backFlux = r.getAnyArray<double>("the back fluxes");  // bounded by the file's size
     sol.seamProfiles = getProfiles(r, vertexCount, path);
     const auto groupCount = r.get<uint64_t>("the light groups");
     if (!dimmed) return sol;  // the full solve itself (its seam profiles to be indexed by the caller)

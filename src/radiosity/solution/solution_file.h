@@ -52,6 +52,10 @@ std::string encodeSolution(const RadiositySolution& solution, const SolutionFing
 /// the materials, the lights or the settings differ. Lights that differ only by dimming
 /// whole light groups are accepted when the file holds the groups' parts: the solution is
 /// then Σ_g (S'_g / S_g) part_g, with S the groups' strengths then and now.
+/// Throws InputError naming `path` unless the file starts as a solution file does: read
+/// before the whole file is (a 10 GB file of something else is refused at once).
+void checkSolutionFileStart(const std::string& path);
+
 RadiositySolution decodeSolution(const std::string& bytes, const std::string& path, const SolutionFingerprint& expected,
                                  size_t patchCount, size_t vertexCount);
 
