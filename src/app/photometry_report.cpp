@@ -17,7 +17,11 @@ std::string photometryReport(const scene::Photometry& p) {
     if (p.absolute) {
         out += "lamp flux: none stated (absolute photometry: the table is the luminaire's own)\n";
     } else {
-        out += fmt::format("lamp flux: {:.2f} lm (as stated)\n", p.lampFlux);
+        out += fmt::format("lamp flux: {:.2f} lm (as stated", p.lampFlux);
+        if (p.lampSets > 0)
+            out += fmt::format("; lamp set 1 of {}: {:g} × {}", p.lampSets, p.lampCount,
+                               p.lampType.empty() ? std::string("(no type)") : p.lampType);
+        out += ")\n";
         out += fmt::format("light output ratio: {:.4f} (integrated / lamp flux)", flux / p.lampFlux);
         if (p.statedLor)
             out += fmt::format("; stated {:.4f} ({:+.2f} %)", *p.statedLor, 100 * (flux / p.lampFlux / *p.statedLor - 1));

@@ -89,6 +89,8 @@ class NumberStream {
     }
 
     size_t remaining() const { return m_numbers.size() - m_next; }
+    /// The next number's place and text, not read (remaining() > 0).
+    const Number& peek() const { return m_numbers[m_next]; }
 
   private:
     std::string m_name;
@@ -175,6 +177,14 @@ Photometry parseIes(const std::string& text, const std::string& name) {
             p.candela[h][v] = cd * factor;
         }
 
+    // Numbers left over mean the counts and the data disagree (one horizontal angle
+    // counted, two listed): every value after the miscount would be shifted.
+    if (in.remaining() > 0) {
+        const Number& extra = in.peek();
+        in.fail(extra.line, fmt::format("{} number(s) after the {} × {} candela values (the first '{}'): the counts of "
+                                        "vertical and horizontal angles do not match the data",
+                                        in.remaining(), nv, nh, extra.text));
+    }
     p.absolute = lumens == -1;
     p.lampFlux = p.absolute ? 0 : lamps * lumens;
     p.round = width < 0 || length < 0;

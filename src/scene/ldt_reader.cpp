@@ -86,15 +86,21 @@ Photometry parseLdt(const std::string& text, const std::string& name) {
     const double conversion = in.number(24, "the conversion factor for intensities");
     if (!(conversion > 0)) in.fail(24, fmt::format("the conversion factor must be positive, got {:g}", conversion));
     const size_t sets = in.count(26, "the number of lamp sets", 1, 20);
-    // Per set, six blocks of `sets` lines each: lamps, type, total flux, colour, CRI, watts.
-    const size_t lampsLine = 27, fluxLine = 27 + 2 * sets, wattsLine = 27 + 5 * sets;
-    const double lamps = in.number(lampsLine, "the number of lamps of set 1");
+    // Set by set, six lines each (EN 13032-4; as DIALux and the manufacturers' tools write
+    // them): number of lamps, lamp type, total lamp flux (lm), colour, colour rendering,
+    // wattage with ballast. The first set is the standard one, the intensities' reference.
+    constexpr size_t kSetLines = 6;
+    const size_t lampsLine = 27, typeLine = 28, fluxLine = 29, wattsLine = 32;
+    p.lampSets = static_cast<int>(sets);
+    p.lampCount = in.number(lampsLine, "the number of lamps of set 1");  // negative: absolute photometry in some files
+    p.lampType = in.text(typeLine, "the lamp type of set 1");
     const double flux = in.number(fluxLine, "the total lamp flux of set 1 (lm)");
-    if (!(flux > 0)) in.fail(fluxLine, fmt::format("the lamp flux must be positive, got {:g}", flux));
-    (void)lamps;  // a negative count marks absolute photometry in some files; the flux scales either way
-    for (size_t s = 0; s < sets; ++s) p.inputWatts += in.number(wattsLine + s, "the wattage of a lamp set");
+    if (!(flux > 0)) in.fail(fluxLine, fmt::format("the lamp flux of set 1 must be positive, got {:g}", flux));
+    p.inputWatts = in.number(wattsLine, "the wattage of set 1 (W)");
+    for (size_t s = 1; s < sets; ++s)  // the other sets are read, so a short block is an error
+        in.number(fluxLine + s * kSetLines, fmt::format("the total lamp flux of set {} (lm)", s + 1));
     p.lampFlux = flux;
-    const size_t anglesLine = 27 + 6 * sets + 10;  // after the ten direct ratios
+    const size_t anglesLine = 27 + kSetLines * sets + 10;  // after the ten direct ratios
     std::vector<double> c(mc), g(ng);
     for (size_t i = 0; i < mc; ++i) c[i] = in.number(anglesLine + i, fmt::format("C angle {} of {}", i + 1, mc));
     for (size_t i = 0; i < ng; ++i) g[i] = in.number(anglesLine + mc + i, fmt::format("γ angle {} of {}", i + 1, ng));

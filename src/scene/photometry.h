@@ -39,6 +39,11 @@ struct Photometry {
     bool absolute = false;
     std::optional<double> statedLor;  ///< EULUMDAT light output ratio (LORL / 100)
     double inputWatts = 0;
+    /// EULUMDAT: how many lamp sets the file lists, and the one used (the first, the
+    /// standard set the intensities were measured with): its lamp type and lamp count.
+    int lampSets = 0;
+    std::string lampType;
+    double lampCount = 0;
     /// The luminous opening, m: width (across), length (along C0), height. A round
     /// opening has diameter `width` and length 0 (IES writes it as a negative width).
     double width = 0, length = 0, height = 0;

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -190,6 +191,36 @@ TEST_CASE("EULUMDAT with decimal commas and the C0-C180 symmetry", "[scene][phot
     CHECK(p.integratedFlux() == Approx(4 * kPi * 800));
 }
 
+TEST_CASE("EULUMDAT with two lamp sets: set by set, six lines each, the first set used", "[scene][photometry]") {
+    // As DIALux and manufacturers' files lay them out: lamps, type, flux, colour, CRI,
+    // watts of set 1, then the same of set 2. Read as six blocks of two lines instead, set
+    // 1's flux was taken from its colour rendering line (80 lm for 2 000).
+    auto file = [](bool secondSet) {
+        std::ostringstream s;
+        s << "maker\n1\n1\n1\n0\n3\n90\nreport\nname\nnumber\nfile.ldt\ndate\n"
+             "600\n600\n50\n590\n590\n0\n0\n0\n0\n100\n80\n1\n0\n"
+          << (secondSet ? 2 : 1) << "\n1\nLED 830\n2000\n3000\n80\n20\n";
+        if (secondSet) s << "2\nLED 840\n4500\n4000\n80\n41\n";
+        for (int i = 0; i < 10; ++i) s << "0\n";
+        s << "0\n";                                         // C angles
+        for (int g : {0, 90, 180}) s << g << "\n";          // γ angles
+        s << "400\n400\n400\n";                             // 400 cd/klm
+        return s.str();
+    };
+    const Photometry one = parseLdt(file(false), "one.ldt"), two = parseLdt(file(true), "two.ldt");
+    CHECK(two.lampSets == 2);
+    CHECK(two.lampType == "LED 830");
+    CHECK(two.lampCount == 1);
+    CHECK(two.lampFlux == Approx(2000));
+    CHECK(two.inputWatts == Approx(20));
+    CHECK(two.candela == one.candela);  // 800 cd: 400 cd/klm × set 1's 2 000 lm
+    CHECK(two.candela[0][1] == Approx(800));
+    // A second set cut short is an error, not a table read from the wrong lines.
+    std::string shortSet = file(true);
+    shortSet.replace(shortSet.find("4500\n"), 5, "");
+    CHECK_THROWS_AS(parseLdt(shortSet, "short.ldt"), InputError);
+}
+
 TEST_CASE("a malformed photometric file is an error naming the line", "[scene][photometry]") {
     const std::string v = "0 90 180";
     CHECK(errorOf([&] { parseIes("IESNA:LM-63-2002\n[TEST] x\n", "a.ies"); }) ==
@@ -204,10 +235,57 @@ TEST_CASE("a malformed photometric file is an error naming the line", "[scene][p
           "e.ies: line 8: candela value -2 is negative");
     CHECK(errorOf([&] { parseIes(iesFile("IESNA:LM-63-2002", v, "0", "1 2 3", 3, 1, "1 1 5", "1 0 1"), "f.ies"); }) ==
           "f.ies: line 4: lumens per lamp must be positive, or -1 for absolute photometry; got 0");
+    // One horizontal angle counted, two listed: the table would be shifted by one value.
+    CHECK(errorOf([&] {
+              parseIes("IESNA:LM-63-2002\nTILT=NONE\n1 1000 1 3 1 1 2 0 0 0\n1 1 10\n0 45 90\n0 90\n100 50 0\n", "m.ies");
+          }) == "m.ies: line 7: 1 number(s) after the 3 × 1 candela values (the first '0'): the counts of vertical and "
+                "horizontal angles do not match the data");
     CHECK(errorOf([&] { parseLdt("maker\n1\n7\n", "g.ldt"); }) ==
           "g.ldt: line 3: expected the symmetry indicator Isym (0–4) (a whole number from 0 to 4), got 7");
     CHECK(errorOf([&] { parseLdt("maker\n1\n1\n1\n0\n3\n", "h.ldt"); }).find("h.ldt: line 6: the file ends before line") == 0);
     CHECK(errorOf([&] { readPhotometry(sourcePath("tests/data/luminaires/nothere.ies")); }).find("no such file") !=
           std::string::npos);
     CHECK(errorOf([&] { readPhotometry("x.txt"); }) == "x.txt: unknown photometric file type '.txt' (use .ies or .ldt)");
+}
+
+TEST_CASE("every test file's flux, integrated a second way: over directions, not over the table",
+          "[scene][photometry]") {
+    // integratedFlux() integrates the stored planes exactly (sin or cos weighted) and unfolds
+    // the symmetries; here Φ = ∫ I dΩ is summed over a fine grid of directions through
+    // intensityToward, which knows nothing of the table's layout: a symmetry unfolded
+    // wrongly, or a plane counted twice, shows as a difference.
+    namespace fs = std::filesystem;
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(sourcePath("tests/data/luminaires"))) {
+        if (!isPhotometricFile(entry.path().string())) continue;
+        const Photometry p = readPhotometry(entry.path().string());
+        constexpr int kRings = 720, kSectors = 1440;  // in cos θ and φ: equal solid angles
+        double flux = 0;
+        for (int i = 0; i < kRings; ++i) {
+            const double z = -1 + 2 * (i + 0.5) / kRings, r = std::sqrt(1 - z * z);
+            for (int j = 0; j < kSectors; ++j) {
+                const double phi = 2 * kPi * (j + 0.5) / kSectors;
+                flux += p.intensityToward(r * std::cos(phi), r * std::sin(phi), z);
+            }
+        }
+        flux *= 4 * kPi / (double(kRings) * kSectors);
+        INFO(entry.path().filename().string() << ": " << p.symmetry());
+        CHECK(flux == Approx(p.integratedFlux()).epsilon(2e-3));
+        ++files;
+    }
+    CHECK(files >= 10);
+}
+
+TEST_CASE("type B with lateral symmetry (0–90 mirrored) integrates to the hemisphere it lights",
+          "[scene][photometry]") {
+    // 100 cd toward every direction of the front hemisphere (H −90…90 from 0…90, V −90…90):
+    // Φ = 100 cd × 2π sr.
+    const Photometry p = parseIes(
+        "IESNA:LM-63-2002\nTILT=NONE\n1 628.3185 1 3 3 2 2 0 0 0\n1 1 10\n-90 0 90\n0 45 90\n"
+        "100 100 100\n100 100 100\n100 100 100\n",
+        "b.ies");
+    CHECK(p.symmetry() == "bilateral (0–90, mirrored)");
+    CHECK(p.integratedFlux() == Approx(2 * kPi * 100));
+    CHECK(p.intensityToward(-0.6, 0, 0.8) == Approx(100));  // H −37°: the mirrored half
+    CHECK(p.intensityToward(0, 0, -1) == 0);                 // behind
 }
