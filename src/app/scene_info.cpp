@@ -83,7 +83,7 @@ int printSceneInfo(const std::string& file, const std::vector<scene::Override>& 
     if (scene.warnings.clampedFileReflectances > 0)
         fmt::print("warning: {} mesh-file materials had a reflectance above {} and were clamped to it\n",
                    scene.warnings.clampedFileReflectances, scene::kMaxFileReflectance);
-    for (const auto& w : scene.warnings.missingTextures) fmt::print("warning: {}\n", w);
+    for (const auto& w : scene.warnings.fileWarnings) fmt::print("warning: {}\n", w);
     if (!scene.textures.empty()) fmt::print("textures: {}\n", scene.textures.size());
     fmt::print("stages needed: premesh, direct light{}{}{}\n", scene.hasReflectance() ? ", secondary pass" : "",
                scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");

@@ -130,7 +130,7 @@ std::vector<std::string> sensorWarnings(const scene::Scene& scene, const radiosi
 std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
                                        const raytrace::EmbreeScene& embree, bool checkSensors,
                                        std::vector<std::string>* inSolid) {
-    std::vector<std::string> out = scene.warnings.missingTextures;
+    std::vector<std::string> out = scene.warnings.fileWarnings;
     const double diagonal = scene.diagonal();
     const double near = std::max(5e-3, 1e-4 * diagonal);  // "buried": covered within a few mm
     Prober prober(mesh, embree, diagonal);

@@ -58,6 +58,10 @@ class GltfReader {
     void read() {
         readMaterials();
         for (int node : rootNodes()) visit(node, glm::dmat4(1.0), 0);
+        if (!m_model.cameras.empty())
+            m_out.warnings.push_back(fmt::format("its {} camera(s) are not imported: give the scene a \"camera\" "
+                                                 "(or \"cameras\") of its own",
+                                                 m_model.cameras.size()));
     }
 
   private:
@@ -109,8 +113,34 @@ class GltfReader {
                 if (image >= 0 && image < static_cast<int>(m_model.images.size()))
                     out.diffuseTexture = m_model.images[image].uri.empty() ? m_model.images[image].name : m_model.images[image].uri;
             }
+            readSurfaceProperties(m, out);
             m_out.materials.push_back(std::move(out));
         }
+    }
+
+    /// What of the material rayrad honours besides its colour — doubleSided (two-sided),
+    /// transmission (glass) — and what it names instead: metallic surfaces are read as
+    /// diffuse with their base colour.
+    void readSurfaceProperties(const tinygltf::Material& m, ImportedMaterial& out) {
+        out.twoSided = m.doubleSided;
+        auto number = [&](const char* extension, const char* key, double fallback) {
+            auto e = m.extensions.find(extension);
+            if (e == m.extensions.end() || !e->second.Has(key) || !e->second.Get(key).IsNumber()) return fallback;
+            const double v = e->second.Get(key).GetNumberAsDouble();
+            return std::isfinite(v) ? v : fallback;
+        };
+        if (m.extensions.count("KHR_materials_transmission") &&
+            number("KHR_materials_transmission", "transmissionFactor", 0.0) >= 0.5) {
+            out.glass = true;
+            out.ior = std::clamp(number("KHR_materials_ior", "ior", 1.5), 1.0, 4.0);
+            out.twoSided = false;
+        }
+        const double metallic = m.pbrMetallicRoughness.metallicFactor;
+        if (!out.glass && metallic >= 0.5)
+            m_out.materialWarnings.push_back(fmt::format(
+                "material \"{}\" is metallic (metallicFactor {:g}, roughness {:g}): read as diffuse with its base "
+                "colour (rayrad's mirrors are the scene file's quads, polygons and boxes)",
+                out.name, metallic, m.pbrMetallicRoughness.roughnessFactor));
     }
 
     static glm::dmat4 localTransform(const tinygltf::Node& n) {
@@ -244,6 +274,9 @@ class GltfReader {
             m_out.droppedFaces += corners.size();  // points and lines carry no area
             return;
         }
+        // A node whose transform mirrors (negative determinant) reverses the winding, as the
+        // glTF specification says: else its triangles would face inward.
+        const bool mirrored = glm::determinant(glm::dmat3(transform)) < 0;
         const size_t triangles = mode == TINYGLTF_MODE_TRIANGLES ? corners.size() / 3 : (corners.size() >= 3 ? corners.size() - 2 : 0);
         if (m_out.triangles.size() + triangles > kMaxTriangles)
             fail(fmt::format("the file makes more than {} triangles", kMaxTriangles));
@@ -261,6 +294,7 @@ class GltfReader {
                 ++m_out.droppedFaces;  // an index past the vertices is broken data
                 continue;
             }
+            if (mirrored) std::swap(c[1], c[2]);
             for (int k = 0; k < 3; ++k) face[k] = vertex[c[k]];
             if (uv.empty()) {
                 m_builder.addFace(face, material);
@@ -276,7 +310,12 @@ class GltfReader {
         const int l = ext->second.Get("light").GetNumberAsInt();
         if (l < 0 || l >= static_cast<int>(m_model.lights.size())) fail(fmt::format("node {}: light {} does not exist", index, l));
         const tinygltf::Light& in = m_model.lights[l];
-        if (in.type != "point" && in.type != "spot") return;  // directional: no position
+        const std::string name = in.name.empty() ? fmt::format("light {}", l) : "\"" + in.name + "\"";
+        if (in.type != "point" && in.type != "spot") {
+            m_out.warnings.push_back(fmt::format("{} is {}: left out (rayrad has point and spot lights)", name,
+                                                 in.type.empty() ? "of no type" : in.type));
+            return;
+        }
         ImportedLight light;
         light.name = in.name;
         light.isSpot = in.type == "spot";
@@ -288,7 +327,12 @@ class GltfReader {
         light.intensity = Rgb(colour[0], colour[1], colour[2]) * in.intensity;
         light.innerAngleDeg = glm::degrees(in.spot.innerConeAngle);
         light.outerAngleDeg = glm::degrees(in.spot.outerConeAngle);
-        if (!isFinite(light.position) || !isFinite(light.intensity)) return;
+        if (!isFinite(light.position) || !isFinite(light.intensity) || light.intensity.r < 0 || light.intensity.g < 0 ||
+            light.intensity.b < 0) {
+            m_out.warnings.push_back(fmt::format("{}: its intensity ({:g} × colour) is negative or not finite: left out",
+                                                 name, in.intensity));
+            return;
+        }
         m_out.lights.push_back(light);
     }
 

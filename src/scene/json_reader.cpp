@@ -221,7 +221,13 @@ std::optional<std::string> JsonObject::string(const std::string& key) {
         error(key, fmt::format("expected a string, got {}", describe(*v)));
         return std::nullopt;
     }
-    return v->get<std::string>();
+    std::string text = v->get<std::string>();
+    // A NUL ("\u0000") would cut a file name or a name short where the system reads it.
+    if (text.find('\0') != std::string::npos) {
+        error(key, "the string holds a NUL character (\\u0000)");
+        return std::nullopt;
+    }
+    return text;
 }
 
 std::optional<bool> JsonObject::boolean(const std::string& key) {

@@ -18,6 +18,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 namespace rayrad::scene {
@@ -168,6 +169,27 @@ bool hasExtension(const std::string& path, const std::string& ext) { return lowe
 
 }  // namespace
 
+/// The OBJ's `mtllib` files that are not there, one warning each: assimp then gives every
+/// material its default grey and no emission, without a word.
+static std::vector<std::string> missingMaterialLibraries(const std::string& path) {
+    std::vector<std::string> out;
+    std::ifstream in(path);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        const size_t at = line.find_first_not_of(" \t");
+        if (at == std::string::npos || line.compare(at, 7, "mtllib ") != 0) continue;
+        std::string name = line.substr(at + 7);
+        while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back()))) name.pop_back();
+        while (!name.empty() && std::isspace(static_cast<unsigned char>(name.front()))) name.erase(0, 1);
+        const std::string library = (std::filesystem::path(path).parent_path() / name).string();
+        if (const std::string problem = inputFileProblem(library, "material library"); !problem.empty())
+            out.push_back(fmt::format("line {}: material library {}: {} (every material of the file is read as "
+                                      "a default grey, and its lamps do not glow)",
+                                      n, library, problem));
+    }
+    return out;
+}
+
 ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, const std::string& where) {
     const std::string place = where + "/file";
     const std::string prefix = placeMessage(sceneFile, place, "mesh '" + path + "': ");
@@ -188,13 +210,14 @@ ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, c
             throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));
         return out;
     }
+    ImportedMesh out;
+    if (hasExtension(path, ".obj")) out.materialWarnings = missingMaterialLibraries(path);
     Assimp::Importer importer;
     // No post-processing at all: assimp's Triangulate asserts and JoinIdenticalVertices
     // segfaults on some binary PLY files. The collector checks, triangulates and joins.
     const aiScene* s = importer.ReadFile(path, 0);
     if (!s || !s->mRootNode)
         throw InputError(placeMessage(sceneFile, place, "cannot read mesh '" + path + "': " + importer.GetErrorString()));
-    ImportedMesh out;
     std::vector<int> materialOf;
     for (unsigned m = 0; m < s->mNumMaterials && s->mMaterials; ++m) {
         ImportedMaterial mat = s->mMaterials[m] ? readMaterial(s->mMaterials[m]) : ImportedMaterial{};

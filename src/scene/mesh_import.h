@@ -16,6 +16,11 @@ struct ImportedMaterial {
     Rgb reflectance{0.0};        ///< OBJ Kd, glTF baseColorFactor (linear RGB)
     Rgb emission{0.0};           ///< OBJ Ke, glTF emissiveFactor × emissive strength, read as cd/m²
     std::string diffuseTexture;  ///< OBJ map_Kd, glTF baseColorTexture: the image file, relative to the mesh file
+    bool twoSided = false;       ///< glTF doubleSided: both sides reflect
+    /// glTF KHR_materials_transmission (transmissionFactor ≥ 0.5): clear glass, with the
+    /// index of KHR_materials_ior (1.5 by default).
+    bool glass = false;
+    double ior = 1.5;
 };
 
 /// A punctual light of the file (glTF KHR_lights_punctual): point or spot, in candela.
@@ -41,6 +46,10 @@ struct ImportedMesh {
     std::vector<ImportedMaterial> materials;
     std::vector<ImportedLight> lights;
     size_t droppedFaces = 0;               ///< points, lines, faces with bad indices
+    /// What the file asks for that rayrad reads otherwise, one line each without the
+    /// file's name: of its geometry and lights, and of its materials (a missing .mtl, glTF
+    /// material properties; moot when the scene gives the object a material of its own).
+    std::vector<std::string> warnings, materialWarnings;
 };
 
 /// Reads the file. Throws InputError("<sceneFile>: <where>/file: ...") if it cannot be

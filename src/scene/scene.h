@@ -136,7 +136,9 @@ struct BuildWarnings {
     int degeneratePolygons = 0;
     int droppedMeshFaces = 0;                  ///< points, lines and faces with bad indices in mesh files
     int clampedFileReflectances = 0;           ///< mesh-file materials whose reflectance was clamped
-    std::vector<std::string> missingTextures;  ///< mesh-file materials whose image is missing, one line each
+    /// What the mesh files bring that rayrad reads otherwise than meant, one line each (a
+    /// texture or .mtl missing, glTF properties it cannot honour, a size suggesting another unit).
+    std::vector<std::string> fileWarnings;
 };
 
 /// The validated scene in world space, with its settings (scene.shooting, scene.render …).

@@ -238,7 +238,8 @@ class Builder {
                 break;
             case ObjectKind::Sphere: {
                 SurfaceGroup g = cubeSphere(o.center, o.radius, o.subdivisions);
-                finishMeshGroup(s, std::move(g), m, o.inward != mirrored, material, o.where, o.keepAbove);
+                if (finishMeshGroup(s, std::move(g), m, o.inward != mirrored, material, o.where, o.keepAbove) == 0)
+                    failEmpty(o.where, o.keepAbove);
                 break;
             }
             case ObjectKind::Mesh:
@@ -254,6 +255,10 @@ class Builder {
     void addMesh(Scene& s, const ObjectDesc& o, int material, bool mirrored) {
         ImportedMesh mesh = importMesh(o.resolvedFile, m_desc.file, o.where);
         if (mesh.droppedFaces > 0) s.warnings.droppedMeshFaces += static_cast<int>(mesh.droppedFaces);
+        for (const auto& w : mesh.warnings) s.warnings.fileWarnings.push_back(o.where + "/file: " + w);
+        if (material < 0)
+            for (const auto& w : mesh.materialWarnings) s.warnings.fileWarnings.push_back(o.where + "/file: " + w);
+        if (o.fileUnit == 0) checkUnit(s, o, mesh);
         std::map<int, SurfaceGroup> byMaterial;  // scene material → its triangles
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             int m = material;
@@ -275,10 +280,12 @@ class Builder {
                 g.polygonUvs.emplace_back(mesh.triangleUvs[t].begin(), mesh.triangleUvs[t].end());
             }
         }
+        size_t kept = 0;
         for (auto& [m, g] : byMaterial) {
             g.positions = mesh.positions;
-            finishMeshGroup(s, std::move(g), o.transform, mirrored, m, o.where, o.keepAbove);
+            kept += finishMeshGroup(s, std::move(g), o.transform, mirrored, m, o.where, o.keepAbove);
         }
+        if (kept == 0) failEmpty(o.where, o.keepAbove);
         for (const auto& l : mesh.lights) {
             PointLight p;
             p.where = o.where + "/file (light \"" + l.name + "\")";
@@ -295,15 +302,45 @@ class Builder {
         }
     }
 
-    /// The scene material for a file's material, created once per file and name.
+    /// A mesh as large as a building site in millimetres: a room modelled in mm and read as
+    /// metres is 1 000 times too large, and its lamps' light reads 10⁶ times too dark.
+    static void checkUnit(Scene& s, const ObjectDesc& o, const ImportedMesh& mesh) {
+        Vec3 lo(1e300), hi(-1e300);
+        for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        const Vec3 size = hi - lo;
+        const double largest = std::max({size.x, size.y, size.z});
+        if (!(largest > 1000)) return;
+        s.warnings.fileWarnings.push_back(
+            fmt::format("{}/file: the mesh spans {:.4g} × {:.4g} × {:.4g} units, read as metres; if it is modelled in "
+                        "millimetres ({:.3g} × {:.3g} × {:.3g} m), give the object \"units\": \"mm\" — read as "
+                        "metres, its lamps' light reads a million times too dark",
+                        o.where, size.x, size.y, size.z, size.x / 1000, size.y / 1000, size.z / 1000));
+    }
+
+    /// The scene material for a file's material, created once per file and name; a JSON
+    /// material of that name ("FILE:NAME", as info lists them) takes its place.
     int fileMaterial(Scene& s, const ObjectDesc& o, const ImportedMaterial& m) {
         std::string name = o.file + ":" + m.name;
         auto it = m_fileMaterials.find(name);
         if (it != m_fileMaterials.end()) return it->second;
+        for (size_t i = 0; i < m_desc.materials.size() && i < s.materials.size(); ++i)
+            if (s.materials[i].name == name) {
+                m_fileMaterials.emplace(name, static_cast<int>(i));
+                return static_cast<int>(i);
+            }
         Material mat;
         mat.name = name;
         mat.kind = SurfaceKind::Diffuse;
         mat.emission = m.emission;
+        if (m.glass) {  // clear glass: no colour, no texture
+            mat.kind = SurfaceKind::Glass;
+            mat.ior = m.ior;
+            const int index = static_cast<int>(s.materials.size());
+            s.materials.push_back(mat);
+            m_fileMaterials.emplace(name, index);
+            return index;
+        }
+        mat.twoSided = m.twoSided && m.emission == Rgb(0.0);
         std::string textureFile;
         if (!m.diffuseTexture.empty()) {
             const std::filesystem::path t(m.diffuseTexture);
@@ -312,7 +349,7 @@ class Builder {
             // Models often arrive without their images: a missing one is a warning, and the
             // material keeps its plain colour.
             if (const std::string problem = inputFileProblem(textureFile, "texture image"); !problem.empty()) {
-                s.warnings.missingTextures.push_back(
+                s.warnings.fileWarnings.push_back(
                     fmt::format("{}/file: material \"{}\": texture {}: {} (its colour is used)", o.where, m.name,
                                 textureFile, problem));
                 textureFile.clear();
@@ -339,8 +376,10 @@ class Builder {
 
     /// Transforms a triangle mesh, keeps the triangles above the clipping planes, drops
     /// zero-area and duplicate triangles (counted) and vertices no triangle uses.
-    void finishMeshGroup(Scene& s, SurfaceGroup g, const glm::dmat4& m, bool reverse, int material,
-                         const std::string& where, const std::vector<std::pair<Vec3, double>>& keepAbove) {
+    /// Returns the triangles kept; with none, nothing is added (the caller says whether that
+    /// is an error: a mesh of several materials may have one wholly below "keep_above").
+    size_t finishMeshGroup(Scene& s, SurfaceGroup g, const glm::dmat4& m, bool reverse, int material,
+                           const std::string& where, const std::vector<std::pair<Vec3, double>>& keepAbove) {
         for (auto& p : g.positions) p = transformPoint(m, p);
         double size = 0;
         for (const auto& p : g.positions) size = std::max(size, glm::length(p - g.positions[0]));
@@ -370,9 +409,7 @@ class Builder {
             kept.push_back(t);
             if (!uvs.empty()) keptUvs.push_back(std::move(uvs));
         }
-        if (kept.empty())
-            fail(where, keepAbove.empty() ? "every triangle of the mesh has zero area"
-                                          : "no triangle of the mesh is above the \"keep_above\" planes");
+        if (kept.empty()) return 0;
         // Renumber the vertices the kept triangles use.
         std::vector<int64_t> renumber(g.positions.size(), -1);
         std::vector<Vec3> used;
@@ -386,7 +423,14 @@ class Builder {
         g.polygonUvs = std::move(keptUvs);
         g.material = material;
         g.where = where;
+        const size_t count = g.polygons.size();
         s.groups.push_back(std::move(g));
+        return count;
+    }
+
+    [[noreturn]] void failEmpty(const std::string& where, const std::vector<std::pair<Vec3, double>>& keepAbove) const {
+        fail(where, keepAbove.empty() ? "every triangle of the mesh has zero area"
+                                      : "no triangle of the mesh is above the \"keep_above\" planes");
     }
 
     /// Two-sided diffuse surfaces: the back is a coincident surface wound the other way,
@@ -401,8 +445,9 @@ class Builder {
             if (!backOf.count(m)) {
                 Material back = s.materials[m];
                 back.name += " (back)";
-                const auto& desc = m_desc.materials[static_cast<size_t>(m)];
-                if (desc.backReflectance) back.reflectance = *desc.backReflectance;
+                // A scene material may give its back another reflectance; a file's has the front's.
+                if (static_cast<size_t>(m) < m_desc.materials.size() && m_desc.materials[static_cast<size_t>(m)].backReflectance)
+                    back.reflectance = *m_desc.materials[static_cast<size_t>(m)].backReflectance;
                 backOf[m] = static_cast<int>(s.materials.size());
                 s.materials.push_back(back);
             }

@@ -54,6 +54,9 @@ struct ObjectDesc {
     std::vector<std::pair<Vec3, double>> keepAbove;
     std::string file;           ///< mesh: path as written in the scene file
     std::string resolvedFile;   ///< mesh: path relative to the working directory
+    /// mesh: metres per unit of the file ("units": "mm" 0.001, "cm", "in", "ft", "m"),
+    /// applied before the transform; 0 when not given (metres, and a size check).
+    double fileUnit = 0;
     glm::dmat4 transform{1.0};  ///< object → world
 };
 

@@ -249,10 +249,21 @@ ObjectDesc parseObject(JsonObject o, const std::map<std::string, int>& materials
             std::filesystem::path p(d.file);
             d.resolvedFile = p.is_absolute() ? p.string() : (std::filesystem::path(sceneDir) / p).string();
             d.keepAbove = parseKeepAbove(o);
+            if (auto units = o.string("units")) {
+                static const std::map<std::string, double> kUnits = {
+                    {"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}, {"ft", 0.3048}};
+                auto it = kUnits.find(*units);
+                if (it == kUnits.end())
+                    o.error("units", "expected \"m\", \"cm\", \"mm\", \"in\" or \"ft\", got \"" + *units + "\"");
+                else
+                    d.fileUnit = it->second;
+            }
             break;
         }
     }
     if (auto t = o.object("transform")) d.transform = parseTransform(*t);
+    // The file's unit first, then the transform (whose translation is in metres).
+    if (d.fileUnit > 0) d.transform = d.transform * glm::scale(glm::dmat4(1.0), Vec3(d.fileUnit));
     o.finish();
     return d;
 }
@@ -700,6 +711,12 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
         for (auto it = mj.begin(); it != mj.end(); ++it) {
             if (!it.value().is_object()) {
                 mats->error(it.key(), "expected an object, got " + describe(it.value()));
+                continue;
+            }
+            if (it.key().find('\0') != std::string::npos) {
+                std::string shown;  // the place, printable
+                for (char c : it.key()) shown += c == '\0' ? std::string("\\u0000") : std::string(1, c);
+                mats->error(shown, "the material's name holds a NUL character");
                 continue;
             }
             materialIndex[it.key()] = static_cast<int>(desc.materials.size());

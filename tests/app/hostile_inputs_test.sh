@@ -109,6 +109,35 @@ sed -i 's/"intensity_cd": 10/"intensity_cd": 20/' "$work/tiles/s.json"
 quietly "$rayrad" render "$work/tiles/s.json" --tile 2/2 -o "$work/tiles/t2.exr" -q
 expect 2 "merge of tiles of two renderings" "t2.exr: is a tile of another rendering than $work/tiles/t1.exr: the scene's geometry, materials, lights, settings or camera differ" -- merge -o "$work/out.exr" "$work/tiles/t1.exr" "$work/tiles/t2.exr"
 
+# What users bring, read as they meant it (or a warning saying how it was read).
+mkdir -p "$work/mm"
+{
+    echo "mtllib room.mtl"
+    for v in "0 0 0" "4000 0 0" "4000 0 3000" "0 0 3000" "0 2700 0" "4000 2700 0" "4000 2700 3000" "0 2700 3000"; do echo "v $v"; done
+    echo "usemtl white"
+    printf 'f 4 3 2 1\nf 6 7 8 5\nf 2 6 5 1\nf 3 7 6 2\nf 4 8 7 3\nf 1 5 8 4\n'
+} > "$work/mm/room.obj"
+room_lamp='"lights": [{"type": "point", "position": [2, 1.5, 1.35], "intensity_cd": 100}]'
+scene mm/metres "{\"objects\": [{\"type\": \"mesh\", \"file\": \"room.obj\"}], $room_lamp}"
+"$rayrad" info "$work/mm/metres.json" > "$work/mm/info.txt" 2>&1
+check "a model in millimetres: the unit named" grep -q 'the mesh spans 4000 × 2700 × 3000 units, read as metres; if it is modelled in millimetres (4 × 2.7 × 3 m), give the object "units": "mm"' "$work/mm/info.txt"
+check "a missing .mtl: a warning" grep -q '/objects/0/file: line 1: material library .*room.mtl: no such file' "$work/mm/info.txt"
+printf 'newmtl white\nKd 0.5 0.5 0.5\n' > "$work/mm/room.mtl"
+scene mm/mm "{\"materials\": {\"room.obj:white\": {\"reflectance\": 0.2}}, \"objects\": [{\"type\": \"mesh\", \"file\": \"room.obj\", \"units\": \"mm\"}], $room_lamp}"
+"$rayrad" info "$work/mm/mm.json" > "$work/mm/info.txt" 2>&1
+check "units mm: no size warning" bash -c "! grep -q 'read as metres' '$work/mm/info.txt'"
+check "a JSON material named FILE:NAME replaces the file's" grep -q 'room.obj:white: diffuse, reflectance (0.2, 0.2, 0.2)' "$work/mm/info.txt"
+scene mm/bad_unit "{\"objects\": [{\"type\": \"mesh\", \"file\": \"room.obj\", \"units\": \"yards\"}], $room_lamp}"
+expect 2 "an unknown unit" "bad_unit.json: /objects/0/units: expected \"m\", \"cm\", \"mm\", \"in\" or \"ft\", got \"yards\"" -- solve "$work/mm/bad_unit.json"
+# keep_above on a mesh of two materials, one wholly below the plane: the other is kept.
+printf 'newmtl a\nKd 0.5 0.5 0.5\nnewmtl b\nKd 0.5 0.5 0.5\n' > "$work/mm/two.mtl"
+printf 'mtllib two.mtl\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 0 0 -1\nv 1 0 -1\nv 0 1 -1\nusemtl a\nf 1 2 3\nusemtl b\nf 4 5 6\n' > "$work/mm/two.obj"
+scene mm/keep "{\"materials\": {\"w\": {\"reflectance\": 0.5}}, \"objects\": [{\"type\": \"mesh\", \"file\": \"two.obj\", \"keep_above\": [[0, 0, 1, 0]]}, {\"type\": \"box\", \"min\": [-2,-2,-2], \"max\": [2,2,2], \"facing\": \"inward\", \"material\": \"w\"}], \"lights\": [{\"type\": \"point\", \"position\": [0.3, 0.3, 1.5], \"intensity_cd\": 10}]}"
+check "keep_above leaves one material of a mesh empty" quietly "$rayrad" info "$work/mm/keep.json"
+# A NUL inside a name or a path would cut it short.
+printf '%s\n' "{\"objects\": [{\"type\": \"mesh\", \"file\": \"room.obj\\u0000.ply\"}], $room_lamp}" > "$work/mm/nul.json"
+expect 2 "a NUL in a file name" "nul.json: /objects/0/file: the string holds a NUL character" -- solve "$work/mm/nul.json"
+
 # Codes and messages.
 expect 2 "a resolution over the pixel cap" "/camera/resolution: 16384 × 16384 is 268435456 pixels, more than the 100 000 000 an image may have" -- render "$work/good.json" --set 'camera.resolution=[16384,16384]' -o "$work/out.png"
 expect 2 "more tiles than rows" "--tile: 100 bands of an image 8 pixels high: at most 8" -- render "$work/good.json" --tile 3/100 -o "$work/out.exr"

@@ -125,8 +125,8 @@ TEST_CASE("a mesh file brings its texture coordinates and image, a missing image
         "lights": [{"type": "point", "position": [0.5, 0.8, -0.3], "intensity_cd": 10}]})";
     const auto s = app::loadSceneFile(test::writeTempScene("textured_mesh", json), {});
     REQUIRE(s.textures.size() == 1);
-    REQUIRE(s.warnings.missingTextures.size() == 1);
-    CHECK(s.warnings.missingTextures[0].find("no_such_image.png") != std::string::npos);
+    REQUIRE(s.warnings.fileWarnings.size() == 1);
+    CHECK(s.warnings.fileWarnings[0].find("no_such_image.png") != std::string::npos);
     int textured = 0;
     for (const auto& g : s.groups)
         if (s.materials[g.material].texture >= 0) {

@@ -203,3 +203,54 @@ TEST_CASE("glTF: baseColorFactor, node transforms and KHR_lights_punctual point 
     CHECK(spot.innerAngleDeg == Approx(0.2 * 180 / kPi));
     CHECK(spot.outerAngleDeg == Approx(0.5 * 180 / kPi));
 }
+
+TEST_CASE("glTF: a mirroring node keeps its faces' side; doubleSided, transmission, metal, cameras and lights "
+          "rayrad cannot take are honoured or named",
+          "[scene][import]") {
+    // The triangle (0,0,0), (1,0,0), (0,1,0) faces +z; the node mirrors x (scale −1), which
+    // by the specification reverses the winding, so it still faces +z.
+    const char* gltf = R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual",
+        "KHR_materials_transmission", "KHR_materials_ior"],
+      "extensions": {"KHR_lights_punctual": {"lights": [
+        {"name": "sun", "type": "directional", "intensity": 3},
+        {"name": "dark", "type": "point", "intensity": -5}]}},
+      "scene": 0, "scenes": [{"nodes": [0, 1, 2, 3, 4]}],
+      "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+      "nodes": [{"mesh": 0, "scale": [-1, 1, 1]}, {"mesh": 1}, {"mesh": 2},
+                {"extensions": {"KHR_lights_punctual": {"light": 0}}},
+                {"extensions": {"KHR_lights_punctual": {"light": 1}}}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]},
+                 {"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 1}]},
+                 {"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 2}]}],
+      "materials": [{"name": "paper", "doubleSided": true, "pbrMetallicRoughness": {"metallicFactor": 0}},
+                    {"name": "glass", "pbrMetallicRoughness": {"metallicFactor": 0},
+                     "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
+                                    "KHR_materials_ior": {"ior": 1.45}}},
+                    {"name": "chrome", "pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 0.05}}],
+      "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})";
+    std::ofstream("/tmp/rayrad_test_mirrored.gltf") << gltf;
+    const auto mesh = importMesh("/tmp/rayrad_test_mirrored.gltf", "scene.json", "/objects/0");
+    REQUIRE(mesh.triangles.size() == 3);
+    const auto& t = mesh.triangles[0];
+    const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+    CHECK(mesh.positions[t[0]].x + mesh.positions[t[1]].x + mesh.positions[t[2]].x == Approx(-1));  // mirrored
+    CHECK(n.z > 0);
+    REQUIRE(mesh.materials.size() == 3);
+    CHECK(mesh.materials[0].twoSided);
+    CHECK(mesh.materials[1].glass);
+    CHECK(mesh.materials[1].ior == Approx(1.45));
+    auto said = [](const std::vector<std::string>& lines, const std::string& what) {
+        for (const auto& l : lines)
+            if (l.find(what) != std::string::npos) return true;
+        return false;
+    };
+    CHECK(said(mesh.materialWarnings, "material \"chrome\" is metallic (metallicFactor 1, roughness 0.05)"));
+    CHECK(!said(mesh.materialWarnings, "paper"));
+    CHECK(said(mesh.warnings, "its 1 camera(s) are not imported"));
+    CHECK(said(mesh.warnings, "\"sun\" is directional: left out"));
+    CHECK(said(mesh.warnings, "\"dark\": its intensity (-5 × colour) is negative or not finite: left out"));
+    CHECK(mesh.lights.empty());
+}
