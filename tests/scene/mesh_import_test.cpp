@@ -204,7 +204,7 @@ TEST_CASE("glTF: baseColorFactor, node transforms and KHR_lights_punctual point 
     CHECK(spot.outerAngleDeg == Approx(0.5 * 180 / kPi));
 }
 
-TEST_CASE("glTF: a mirroring node keeps its faces' side; doubleSided, transmission, metal, cameras and lights "
+TEST_CASE("glTF: a mirroring node keeps its faces' side, and doubleSided, transmission, metal, cameras and lights "
           "rayrad cannot take are honoured or named",
           "[scene][import]") {
     // The triangle (0,0,0), (1,0,0), (0,1,0) faces +z; the node mirrors x (scale −1), which
