@@ -1,5 +1,7 @@
 #include <app/scene_warnings.h>
 
+#include <app/coincident_surfaces.h>
+
 #include <radiosity/radiosity.h>
 #include <raytrace/camera.h>
 #include <scene/polygon.h>
@@ -131,6 +133,7 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
                                        const raytrace::EmbreeScene& embree, bool checkSensors,
                                        std::vector<std::string>* inSolid) {
     std::vector<std::string> out = scene.warnings.fileWarnings;
+    if (auto w = coincidentSurfacesWarning(scene, mesh)) out.push_back(std::move(*w));
     const double diagonal = scene.diagonal();
     const double near = std::max(5e-3, 1e-4 * diagonal);  // "buried": covered within a few mm
     Prober prober(mesh, embree, diagonal);

@@ -57,6 +57,11 @@ void parseTexture(JsonObject& m, MaterialDesc& d, const std::string& sceneDir) {
     d.resolvedTexture = f.is_absolute() ? f.string() : (std::filesystem::path(sceneDir) / f).string();
 }
 
+/// The largest diffuse reflectance a scene may give: above any real surface (Spectralon
+/// reflects 0.99), and where the interreflections already multiply the light by 1 000. Nearer
+/// 1 the shooting cannot converge (1 − 10⁻¹⁶ made NaN), so it is refused.
+constexpr double kMaxReflectance = 0.999;
+
 MaterialDesc parseMaterial(JsonObject m, const std::string& name, const std::string& sceneDir) {
     MaterialDesc d;
     d.name = name;
@@ -89,11 +94,11 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name, const std::str
         parseTexture(m, d, sceneDir);
         d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/true).value_or(Rgb(1.0));
     } else {
-        d.reflectance = m.rgb("reflectance", 0.0, 1.0, /*hiInclusive=*/false).value_or(Rgb(0.0));
+        d.reflectance = m.rgb("reflectance", 0.0, kMaxReflectance, /*hiInclusive=*/true).value_or(Rgb(0.0));
     }
     if (type == "diffuse") {
         d.twoSided = m.boolean("two_sided").value_or(false);
-        d.backReflectance = m.rgb("back_reflectance", 0.0, 1.0, /*hiInclusive=*/false);
+        d.backReflectance = m.rgb("back_reflectance", 0.0, kMaxReflectance, /*hiInclusive=*/true);
         if (d.backReflectance && !d.twoSided)
             m.error("back_reflectance", "a back reflectance needs \"two_sided\": true");
     }

@@ -22,7 +22,7 @@ scene negative "{$good_materials, $good_box, \"lights\": [{\"type\": \"point\", 
 expect 2 "negative intensity" "negative.json: /lights/0/intensity_cd: expected a positive number, got -5" -- solve "$work/negative.json"
 
 scene reflectance "{\"materials\": {\"white\": {\"reflectance\": 1.0}}, $good_box, $good_light}"
-expect 2 "reflectance >= 1" "reflectance.json: /materials/white/reflectance: expected values in [0, 1)" -- solve "$work/reflectance.json"
+expect 2 "reflectance >= 1" "reflectance.json: /materials/white/reflectance: expected values in [0, 0.999]" -- solve "$work/reflectance.json"
 
 scene mesh "{$good_materials, \"objects\": [{\"type\": \"mesh\", \"file\": \"missing.obj\", \"material\": \"white\"}], $good_light}"
 expect 2 "missing mesh" "mesh.json: /objects/0/file: mesh file" -- solve "$work/mesh.json"

@@ -138,6 +138,15 @@ check "keep_above leaves one material of a mesh empty" quietly "$rayrad" info "$
 printf '%s\n' "{\"objects\": [{\"type\": \"mesh\", \"file\": \"room.obj\\u0000.ply\"}], $room_lamp}" > "$work/mm/nul.json"
 expect 2 "a NUL in a file name" "nul.json: /objects/0/file: the string holds a NUL character" -- solve "$work/mm/nul.json"
 
+# Wrong energy, said: a floor modelled twice, a reflectance of (almost) 1.
+scene twice "{$materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [4,3,2.7], \"facing\": \"inward\", \"material\": \"white\"}, {\"type\": \"quad\", \"vertices\": [[0,0,0],[4,0,0],[4,3,0],[0,3,0]], \"material\": \"white\"}], \"lights\": [{\"type\": \"point\", \"position\": [2,1.5,2.5], \"intensity_cd\": 100}]}"
+"$rayrad" info "$work/twice.json" > "$work/twice.txt" 2>&1
+check "a floor modelled twice: the coincident surfaces named" grep -q '/objects/0 (material "white") and /objects/1 (material "white"): 12 m² of them lie in one plane, facing the same way' "$work/twice.txt"
+"$rayrad" info "$work/good.json" > "$work/once.txt" 2>&1
+check "one box: no coincident surfaces" bash -c "! grep -q 'lie in one plane' '$work/once.txt'"
+scene almost_one "{\"materials\": {\"white\": {\"reflectance\": 0.9999999999999999}}, $box, $light}"
+expect 2 "reflectance 1 − 1e-16" "almost_one.json: /materials/white/reflectance: expected values in [0, 0.999], got 0.9999999999999999" -- solve "$work/almost_one.json"
+
 # Codes and messages.
 expect 2 "a resolution over the pixel cap" "/camera/resolution: 16384 × 16384 is 268435456 pixels, more than the 100 000 000 an image may have" -- render "$work/good.json" --set 'camera.resolution=[16384,16384]' -o "$work/out.png"
 expect 2 "more tiles than rows" "--tile: 100 bands of an image 8 pixels high: at most 8" -- render "$work/good.json" --tile 3/100 -o "$work/out.exr"
