@@ -7,6 +7,7 @@ set -u
 rayrad="$1"
 src="$2"
 source "$(dirname "$0")/test_lib.sh"
+quietly() { "$@" > /dev/null 2>&1; }
 
 materials='"materials": {"white": {"type": "diffuse", "reflectance": 0.5}}'
 box='"objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "facing": "inward", "material": "white"}]'
@@ -26,6 +27,14 @@ small=$(printf '[%.0s' $(seq 60))$(printf ']%.0s' $(seq 60))
 scene nested_60 "{\"materials\": {\"white\": {\"reflectance\": $small}}, $box, $light}"
 expect 2 "60 nested arrays as a value: described, not printed whole" "nested_60.json: /materials/white/reflectance: expected a number or [r, g, b], got an array of 1 values" -- solve "$work/nested_60.json"
 
+printf '%s\n' "$deep" > "$work/deep_align.json"
+pfm_ok() { printf 'PF\n1 1\n-1.0\n\x00\x00\x80\x3f\x00\x00\x80\x3f\x00\x00\x80\x3f' > "$work/$1.pfm"; }
+pfm_ok a1; pfm_ok b1
+expect 2 "60 000 nested arrays in an alignment file" "deep_align.json: byte 64: arrays and objects nested more than 64 levels deep" -- compare "$work/a1.pfm" "$work/b1.pfm" --align "$work/deep_align.json"
+expect 2 "65 nested objects in --set" "--set render: the value nests arrays and objects more than 64 levels deep" -- solve "$work/good.json" --set "render=$deep65"
+scene nul_name "{\"materials\": {\"w\\u0000x\": {\"reflectance\": 0.5}}, $box, $light}"
+expect 2 "a NUL in a material's name" "nul_name.json: /materials/w\\u0000x: the material's name holds a NUL character" -- solve "$work/nul_name.json"
+
 # Points and directions no ray can start from.
 scene up_zero "{$materials, $box, $light, $(camera '[0.5,0.5,0.1]' '[0,0,0]')}"
 expect 2 "camera up zero" "up_zero.json: /camera/up: up must not be zero" -- render "$work/up_zero.json" -o "$work/out.png"
@@ -41,9 +50,18 @@ scene grid_far "{$materials, $box, $light, \"sensor_grids\": [{\"name\": \"g\", 
 expect 2 "grid at 1e300 m" "grid_far.json: /sensor_grids/0/origin: expected numbers within ±1e9 (m)" -- solve "$work/grid_far.json"
 scene scaled_far "{$materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,1,1], \"facing\": \"inward\", \"material\": \"white\"}, {\"type\": \"box\", \"min\": [0.2,0.2,0.2], \"max\": [0.3,0.3,0.3], \"material\": \"white\", \"transform\": {\"scale\": 1e30}}], $light}"
 expect 2 "an object scaled to 1e29 m" "scaled_far.json: /objects/1: the surface reaches (2e+29, 2e+29, 2e+29) m, beyond ±1e9 m" -- solve "$work/scaled_far.json"
+scene box_far "{$materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [2e9,1,1], \"material\": \"white\"}], $light}"
+expect 2 "a box reaching 2e9 m" "box_far.json: /objects/0/max: expected numbers within ±1e9 (m)" -- solve "$work/box_far.json"
+scene axis_zero "{$materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,1,1], \"facing\": \"inward\", \"material\": \"white\", \"transform\": {\"rotate_axis\": [0,0,0], \"rotate_deg\": 30}}], $light}"
+expect 2 "a zero rotation axis" "axis_zero.json: /objects/0/transform/rotate_axis: the rotation axis must not be zero" -- solve "$work/axis_zero.json"
+scene grid_flat "{$materials, $box, $light, \"sensor_grids\": [{\"name\": \"g\", \"origin\": [0.1,0.1,0.5], \"u\": [1e-200,0,0], \"v\": [0,1e-200,0], \"counts\": [2,2]}]}"
+expect 2 "a grid of 1e-200 m sides" "grid_flat.json: /sensor_grids/0/v: the grid's normal is zero" -- solve "$work/grid_flat.json"
+scene path_up "{$materials, $box, $light, \"camera_path\": {\"frames\": 2, \"resolution\": [8, 8], \"keyframes\": [{\"position\": [0.5,0.5,0.9], \"look_at\": [0.5,0.5,0], \"up\": [0,0,0]}, {\"position\": [0.4,0.5,0.8], \"look_at\": [0.5,0.4,0]}]}}"
+expect 2 "a keyframe's up zero" "path_up.json: /camera_path/keyframes/0/up: up must not be zero" -- render "$work/path_up.json" --frames all -o "$work/out.png"
+scene spot_denormal "{$materials, $box, \"lights\": [{\"type\": \"spot\", \"position\": [0.5,0.5,0.9], \"direction\": [0,0,-1e-320], \"intensity_cd\": 10}]}"
+check "a spot aimed along a denormal direction: solved" quietly "$rayrad" solve "$work/spot_denormal.json" -q
 # A denormal up or normal is a direction like any other: scaled before it is normalised.
 scene up_denormal "{$materials, $box, $light, $(camera '[0.5,0.5,0.1]' '[1e-320,0,0]'), \"sensors\": [{\"name\": \"s\", \"position\": [0.5,0.5,0], \"normal\": [0,0,1e-320]}]}"
-quietly() { "$@" > /dev/null 2>&1; }
 check "denormal up and normal: rendered" quietly "$rayrad" render "$work/up_denormal.json" -o "$work/denormal.png" -q --sensors "$work/denormal.csv"
 rm -f "$work/denormal.png" "$work/denormal.csv"
 
@@ -82,10 +100,12 @@ pfm other $(sixteen 1.1)
 pfm black $(sixteen 0)
 pfm nan $(sixteen nan)
 pfm halfnan $(sixteen nan | cut -d' ' -f1-8) $(sixteen 1 | cut -d' ' -f1-8)
+printf 'PF\n1 1\n-1.0\n\x00\x00\x80\x7f\x00\x00\x80\x7f\x00\x00\x80\x7f' > "$work/inf.pfm"
 linear=(--a-space linear --b-space linear --fail-above mean_abs_rel_pct=50)
 check "compare of two images" quietly "$rayrad" compare "$work/one.pfm" "$work/other.pfm" "${linear[@]}"
 expect 4 "compare with an all-black reference" "black.pfm: every pixel is black: there is nothing to compare" -- compare "$work/one.pfm" "$work/black.pfm" "${linear[@]}"
 expect 4 "compare with an all-NaN image" "nan.pfm: 16 of its 16 pixels are not finite" -- compare "$work/nan.pfm" "$work/one.pfm" "${linear[@]}"
+expect 4 "compare with an Inf pixel" "inf.pfm: 1 of its 1 pixels are not finite" -- compare "$work/inf.pfm" "$work/a1.pfm" "${linear[@]}"
 expect 4 "compare with a half-NaN image" "halfnan.pfm: 8 of its 16 pixels are not finite" -- compare "$work/one.pfm" "$work/halfnan.pfm" "${linear[@]}"
 printf '%s\n' '[{"a":[100,100],"b":[0,0]},{"a":[104,100],"b":[4,0]},{"a":[104,104],"b":[4,4]},{"a":[100,104],"b":[0,4]}]' > "$work/away.json"
 expect 4 "an alignment that maps outside the image" "away.json: the alignment maps $work/one.pfm onto 0.0 % of $work/other.pfm, less than the 10 %" -- compare "$work/one.pfm" "$work/other.pfm" "${linear[@]}" --align "$work/away.json"
@@ -153,6 +173,7 @@ expect 2 "more tiles than rows" "--tile: 100 bands of an image 8 pixels high: at
 truncate -s 10G "$work/huge.rrs" 2> /dev/null || dd if=/dev/zero of="$work/huge.rrs" bs=1M count=64 2> /dev/null
 expect 2 "a 10 GB file as --solution: refused by its first bytes" "huge.rrs: not a rayrad solution file" -- render "$work/good.json" --solution "$work/huge.rrs" -o "$work/out.png"
 rm -f "$work/huge.rrs"
+expect 2 "a sweep key with a tab" "--vary: a control character (code 9)" -- sweep "$work/good.json" --vary "$(printf 'render.seed\t=1,2')" --jobs "$work/out.txt"
 expect 2 "a sweep value with a line break" "--vary: a control character (code 10) in the values of \"render.seed\"" -- sweep "$work/good.json" --vary "render.seed=1,$(printf '2\n3')" --jobs "$work/out.txt"
 mkdir -p "$work/sweep"
 quietly "$rayrad" sweep "$work/good.json" --vary 'camera.resolution=[8,8],[16,16]' --jobs "$work/sweep/jobs.txt"
