@@ -3,7 +3,7 @@
 // holds more light than its lamps give: the energy account books it as "not accounted".
 #pragma once
 
-#include <radiosity/mesh/patch_mesh.h>
+#include <radiosity/radiosity.h>
 #include <scene/scene.h>
 
 #include <optional>

@@ -4,7 +4,7 @@
 
 #include <app/sensor_table.h>
 #include <core/hdr_image.h>
-#include <radiosity/solution/solution.h>
+#include <radiosity/radiosity.h>
 
 #include <cstdint>
 #include <string>

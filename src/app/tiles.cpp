@@ -5,7 +5,7 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <core/output_file.h>
-#include <radiosity/solution/solution_file.h>
+#include <radiosity/radiosity.h>
 #include <tonemap/image_io.h>
 
 #include <fmt/format.h>
