@@ -25,15 +25,6 @@ glm::dvec2 inPlane(const Vec3& x, const Vec3& n) {
     return drop == 0 ? glm::dvec2(x.y, x.z) : drop == 1 ? glm::dvec2(x.z, x.x) : glm::dvec2(x.x, x.y);
 }
 
-bool inside(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
-    auto side = [](const glm::dvec2& u, const glm::dvec2& v, const glm::dvec2& w) {
-        return (v.x - u.x) * (w.y - u.y) - (v.y - u.y) * (w.x - u.x);
-    };
-    const double d1 = side(a, b, p), d2 = side(b, c, p), d3 = side(c, a, p);
-    const bool negative = d1 < 0 || d2 < 0 || d3 < 0, positive = d1 > 0 || d2 > 0 || d3 > 0;
-    return !(negative && positive);
-}
-
 }  // namespace
 
 std::optional<std::string> coincidentSurfacesWarning(const scene::Scene& scene, const radiosity::PatchMesh& mesh) {
@@ -87,9 +78,9 @@ std::optional<std::string> coincidentSurfacesWarning(const scene::Scene& scene, 
                     for (uint32_t j : cell->second) {
                         const radiosity::Patch& q = mesh.patches[j];
                         if (q.group == p.group || glm::length(q.centroid - p.centroid) > q.diameter) continue;
-                        if (!inside(c, inPlane(mesh.corner(q, 0), p.normal), inPlane(mesh.corner(q, 1), p.normal),
-                                    inPlane(mesh.corner(q, 2), p.normal)))
-                            continue;
+                        // p's centroid on q (the same plane): every barycentric weight ≥ 0 (an edge counts).
+                        const Vec3 w = barycentric(mesh.corner(q, 0), mesh.corner(q, 1), mesh.corner(q, 2), p.centroid);
+                        if (!(std::min({w.x, w.y, w.z}) >= -1e-9)) continue;
                         shared[{std::min(p.group, q.group), std::max(p.group, q.group)}] += p.area;
                         found = true;
                         break;

@@ -4,6 +4,7 @@
 #include <app/result_checks.h>
 #include <core/input_error.h>
 #include <core/input_file.h>
+#include <core/hash.h>
 #include <core/output_file.h>
 #include <radiosity/radiosity.h>
 #include <tonemap/image_io.h>
@@ -25,22 +26,11 @@ std::string attribute(const std::vector<std::pair<std::string, std::string>>& at
     throw InputError(placeMessage(path, "", "not a tile of a rayrad rendering (no " + name + "; render --tile writes tiles)"));
 }
 
-/// 64-bit FNV-1a over the bytes of plain values.
-struct Fnv {
-    uint64_t h = 1469598103934665603ull;
-    template <class T>
-    Fnv& operator<<(const T& value) {
-        const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
-        for (size_t i = 0; i < sizeof(T); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
-        return *this;
-    }
-};
-
 }  // namespace
 
 std::string renderFingerprint(const PipelineRun& run) {
     const radiosity::SolutionFingerprint f = radiosity::fingerprintOf(run.scene, run.mesh);
-    Fnv h;
+    Hash h;
     h << f.geometry << f.materials << f.lights << f.settings;
     if (run.scene.camera) {
         const scene::Camera& c = *run.scene.camera;
@@ -50,7 +40,7 @@ std::string renderFingerprint(const PipelineRun& run) {
     const scene::RenderOptions& r = run.scene.render;
     h << r.samplesPerPixel << r.seed << r.areaLightSamples << r.directThreshold << r.shareFarShadows << r.maxDepth
       << r.displayRangeCompression << r.smoothingAngleDeg << r.gatherIndirect;
-    return fmt::format("{:016x}", h.h);
+    return fmt::format("{:016x}", h.value());
 }
 
 Tile parseTile(const std::string& text) {

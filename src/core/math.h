@@ -43,10 +43,13 @@ inline bool isFinite(const Vec3& v) {
 }
 
 /// The point of the segment ab nearest to x.
+/// The largest magnitude of v's components (the max norm).
+inline double maxAbs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
 /// v scaled to unit length, or nothing when it is zero. Divided by its largest component
 /// first, so neither a denormal (1e-320) nor a huge vector over- or underflows on the way.
 inline std::optional<Vec3> unitDirection(const Vec3& v) {
-    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    const double largest = maxAbs(v);
     if (!(largest > 0) || !std::isfinite(largest)) return std::nullopt;
     return glm::normalize(v / largest);
 }

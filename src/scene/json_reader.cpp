@@ -257,7 +257,7 @@ std::optional<Vec3> JsonObject::vec3(const std::string& key) {
     auto r = toVec3(*v);
     if (!r) {
         error(key, fmt::format("expected three finite numbers [x, y, z], got {}", describe(*v)));
-    } else if (std::max({std::abs(r->x), std::abs(r->y), std::abs(r->z)}) > kMaxCoordinate) {
+    } else if (maxAbs(*r) > kMaxCoordinate) {
         error(key, fmt::format("expected numbers within ±1e9 (m), got {}", describe(*v)));
         return std::nullopt;
     }

@@ -595,7 +595,7 @@ class Builder {
     /// mesh file's light must lie within ±kMaxCoordinate, as the scene file's points must.
     void computeBounds(Scene& s) const {
         auto beyond = [](const Vec3& p) {
-            return !(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxCoordinate);
+            return !(maxAbs(p) <= kMaxCoordinate);
         };
         Vec3 lo(1e300), hi(-1e300);
         for (const auto& g : s.groups)

@@ -7,9 +7,6 @@ rayrad="$1"
 src="$2"
 source "$(dirname "$0")/test_lib.sh"
 
-good_materials='"materials": {"white": {"type": "diffuse", "reflectance": 0.5}}'
-good_box='"objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "facing": "inward", "material": "white"}]'
-good_light='"lights": [{"type": "point", "position": [0.5,0.5,0.5], "intensity_cd": 10}]'
 good_camera='"camera": {"position": [0.5,0.5,0.1], "look_at": [0.5,0.5,1], "resolution": [8,8]}'
 
 scene malformed '{ "materials": { "white": { "reflectance": 0.5, } } }'

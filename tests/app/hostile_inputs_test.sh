@@ -9,9 +9,7 @@ src="$2"
 source "$(dirname "$0")/test_lib.sh"
 quietly() { "$@" > /dev/null 2>&1; }
 
-materials='"materials": {"white": {"type": "diffuse", "reflectance": 0.5}}'
-box='"objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "facing": "inward", "material": "white"}]'
-light='"lights": [{"type": "point", "position": [0.5,0.5,0.5], "intensity_cd": 10}]'
+materials=$good_materials box=$good_box light=$good_light
 camera() { printf '"camera": {"position": %s, "look_at": [0.5,0.5,1], "up": %s, "resolution": [8,8]}' "$1" "$2"; }
 
 # Nesting: refused before parsing, at the place it goes too deep.

@@ -40,3 +40,8 @@ expect() {
 scene() {  # scene NAME JSON: writes $work/NAME.json
     printf '%s\n' "$2" > "$work/$1.json"
 }
+
+# The smallest good scene, in parts: a white box room and a point light in it.
+good_materials='"materials": {"white": {"type": "diffuse", "reflectance": 0.5}}'
+good_box='"objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "facing": "inward", "material": "white"}]'
+good_light='"lights": [{"type": "point", "position": [0.5,0.5,0.5], "intensity_cd": 10}]'

@@ -1,5 +1,7 @@
 #include <radiosity/solution/solution_file.h>
 
+#include <core/hash.h>
+
 #include <core/input_error.h>
 #include <scene/light_groups.h>
 #include <scene/photometry.h>
@@ -19,31 +21,6 @@ constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
 constexpr uint32_t kVersion =
     5;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux; 5: unshot net flux, not ΔL per patch
 constexpr uint32_t kByteOrder = 0x01020304;
-
-/// 64-bit FNV-1a over values' bytes.
-class Hash {
-  public:
-    void bytes(const void* data, size_t n) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (size_t i = 0; i < n; ++i) m_h = (m_h ^ p[i]) * 1099511628211ull;
-    }
-    template <class T>
-    Hash& operator<<(const T& v) {
-        static_assert(std::is_arithmetic_v<T>, "hash numbers only (no padding)");
-        bytes(&v, sizeof v);
-        return *this;
-    }
-    Hash& operator<<(const Vec3& v) { return *this << v.x << v.y << v.z; }
-    Hash& operator<<(const std::string& s) {
-        *this << s.size();
-        bytes(s.data(), s.size());
-        return *this;
-    }
-    uint64_t value() const { return m_h; }
-
-  private:
-    uint64_t m_h = 14695981039346656037ull;
-};
 
 /// Appends values to a byte string; reads them back with bounds checks.
 class Writer {
