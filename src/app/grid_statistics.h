@@ -4,6 +4,7 @@
 
 #include <app/sensor_table.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,9 @@ struct GridStatistics {
     size_t points = 0;    ///< the points the figures are of
     size_t excluded = 0;  ///< points inside a solid or buried (SensorResult::excluded), not counted
     double minimum = 0, mean = 0, maximum = 0;                               ///< total illuminance Y, lx
+    double median = 0;                                                       ///< lx
+    /// Under a sky without sun: the daylight factors' minimum, mean and median, %.
+    std::optional<double> dfMinimum, dfMean, dfMedian;
     double u0() const { return mean > 0 ? minimum / mean : 0; }              ///< Emin / Eavg
     double minToMax() const { return maximum > 0 ? minimum / maximum : 0; }  ///< Emin / Emax
 };

@@ -258,8 +258,14 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
 
     if (options.wantSensors && !run.scene.sensors.empty()) {
         const auto values = radiosity::gatherSensors(run.scene, run.mesh, *run.embree, run.lighting, log);
-        for (size_t i = 0; i < values.size(); ++i)
+        const auto& day = run.scene.daylight;
+        for (size_t i = 0; i < values.size(); ++i) {
             run.sensors.push_back({run.scene.sensors[i], values[i], i < inSolid.size() ? inSolid[i] : std::string()});
+            // Under a sky without direct sun: the daylight factor against the open sky.
+            if (day && !day->hasDirectSun() && day->skyHorizontalIlluminance > 0)
+                run.sensors.back().daylightFactor =
+                    100 * luminance(values[i].direct + values[i].indirect) / day->skyHorizontalIlluminance;
+        }
     } else if (options.wantSensors) {
         run.skipped.push_back("sensors (the scene has none)");
     } else if (!run.scene.sensors.empty()) {

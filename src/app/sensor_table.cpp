@@ -49,6 +49,10 @@ Row rowOf(const SensorResult& r) {
 
 }  // namespace
 
+bool anyDaylightFactor(const std::vector<SensorResult>& results) {
+    return std::any_of(results.begin(), results.end(), [](const SensorResult& r) { return r.daylightFactor; });
+}
+
 std::string csvField(const std::string& text) {
     if (text.find_first_of(",\"\n") == std::string::npos) return text;
     std::string q;
@@ -66,6 +70,8 @@ std::string sensorCsv(const std::vector<SensorResult>& results) {
     const bool marks =
         std::any_of(results.begin(), results.end(), [](const SensorResult& r) { return !r.excluded.empty(); });
     if (marks) s += ",excluded";
+    const bool factors = anyDaylightFactor(results);
+    if (factors) s += ",daylight_factor_pct";
     s += "\n";
     for (const auto& r : results) {
         Row row = rowOf(r);
@@ -82,6 +88,7 @@ std::string sensorCsv(const std::vector<SensorResult>& results) {
         s += "," + cell(row.vertex);
         if (refs) s += "," + cell(row.vertex ? errorPct(*row.vertex, r.sensor.refIndirect) : std::nullopt, "{:.6f}");
         if (marks) s += "," + r.excluded;
+        if (factors) s += "," + cell(r.daylightFactor, "{:.6f}");
         s += "\n";
     }
     return s;
@@ -93,6 +100,8 @@ std::string sensorTable(const std::vector<SensorResult>& results) {
     std::string s = fmt::format("{:<14} {:>11} {:>11} {:>11} {:>14}", "sensor", "direct lx", "indirect lx", "total lx",
                                 "vertex ind lx");
     if (refs) s += fmt::format("  {:>9} {:>9} {:>9} {:>9}", "err dir", "err ind", "err tot", "err vtx");
+    const bool factors = anyDaylightFactor(results);
+    if (factors) s += fmt::format("  {:>7}", "DF %");
     s += "\n";
     for (const auto& r : results) {
         Row row = rowOf(r);
@@ -103,6 +112,7 @@ std::string sensorTable(const std::vector<SensorResult>& results) {
                              pct(errorPct(row.indirect, r.sensor.refIndirect)),
                              pct(errorPct(row.total, r.sensor.refTotal)),
                              pct(row.vertex ? errorPct(*row.vertex, r.sensor.refIndirect) : std::nullopt));
+        if (factors) s += fmt::format("  {:>7}", r.daylightFactor ? fmt::format("{:.2f}", *r.daylightFactor) : "-");
         s += "\n";
     }
     return s;

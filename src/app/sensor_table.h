@@ -4,6 +4,7 @@
 #include <radiosity/radiosity.h>
 #include <scene/scene.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct SensorResult {
     /// within a few millimetres) — or "": such grid points are left out of the grid's
     /// statistics, and the CSV marks them.
     std::string excluded;
+    /// Daylight without direct sun: the daylight factor, 100 · E / E_out (E_out the
+    /// unobstructed sky's horizontal illuminance), %.
+    std::optional<double> daylightFactor;
 };
 
 /// CSV with the columns
@@ -23,8 +27,12 @@ struct SensorResult {
 /// then, when any sensor has a reference, ref_direct_lx,ref_indirect_lx,ref_total_lx,
 /// err_direct_pct,err_indirect_pct,err_total_pct (100·(value − ref)/ref, empty where
 /// no reference), then indirect_vertex_lx (interpolated vertex values; empty off-surface)
-/// and, with references, err_indirect_vertex_pct. Illuminances are luminance-weighted Y.
+/// and, with references, err_indirect_vertex_pct; then, under a sky without sun,
+/// daylight_factor_pct. Illuminances are luminance-weighted Y.
 std::string sensorCsv(const std::vector<SensorResult>& results);
+
+/// Whether any result carries a daylight factor.
+bool anyDaylightFactor(const std::vector<SensorResult>& results);
 
 /// A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a newline.
 std::string csvField(const std::string& text);

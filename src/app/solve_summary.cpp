@@ -52,10 +52,14 @@ void printSolveSummary(const PipelineRun& run) {
         alsoAbsorbed += fmt::format(" + {:.6g} lm by mirrors", balance.mirrorAbsorbed);
     if (balance.backAbsorbed > 0)
         alsoAbsorbed += fmt::format(" + {:.6g} lm on backs of one-sided surfaces", balance.backAbsorbed);
+    // Daylight: what came in through the openings, and what the room reflected out again.
+    const bool daylight = run.lighting.lights && run.lighting.lights->openingCount() > 0;
     fmt::print(stderr,
-               "energy: emitted {:.6g} lm, absorbed {:.6g} lm{}, unshot {:.6g} lm, not accounted {:+.4f}% "
+               "energy: {} {:.6g} lm, absorbed {:.6g} lm{}{}, unshot {:.6g} lm, not accounted {:+.4f}% "
                "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
-               balance.emitted, balance.absorbed, alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
+               daylight ? "entering through the openings" : "emitted", balance.emitted, balance.absorbed,
+               alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
+               daylight ? fmt::format(", left through the openings {:.6g} lm", balance.leftThroughOpenings) : "",
                balance.unshot, 100 * balance.relativeError(), 100 * balance.directError(),
                100 * balance.secondaryError());
     const auto& st = run.lighting.shooting;

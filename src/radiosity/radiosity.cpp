@@ -103,6 +103,7 @@ void solveIndirect(const scene::Scene& scene, const PatchMesh& mesh, const Visib
     lighting.shooting = solver.statistics();
     lighting.maxIlluminanceStep = solver.maxIlluminanceStep();
     lighting.singleChannel = solver.singleChannel();
+    solution.leftThroughOpenings = leavingThroughOpenings(scene, mesh, solution, *lighting.lights, vis);
 }
 
 Lighting loadSolution(const scene::Scene& scene, const PatchMesh& mesh, const std::string& bytes,

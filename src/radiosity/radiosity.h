@@ -8,6 +8,7 @@
 #include <core/visibility.h>
 #include <radiosity/clusters/clusters.h>
 #include <radiosity/direct/direct_light.h>
+#include <radiosity/direct/openings_leaving.h>
 #include <radiosity/display/edge_vertices.h>
 #include <radiosity/gather/gather.h>
 #include <radiosity/gather/sensors.h>

@@ -72,7 +72,7 @@ void frontFacesOnly(const RTCFilterFunctionNArguments* args) {
 std::vector<SpecularTriangle> specularTriangles(const scene::Scene& scene) {
     std::vector<SpecularTriangle> out;
     for (const auto& g : scene.groups) {
-        if (scene.isPatchSurface(g)) continue;
+        if (scene.isPatchSurface(g) || scene.materials[g.material].isOpening()) continue;  // openings let light through
         for (const auto& poly : g.polygons) {
             std::vector<Vec3> v;
             for (uint32_t i : poly) v.push_back(g.positions[i]);

@@ -27,14 +27,43 @@ double fresnelDielectric(double cosI, double eta, double& cosT) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
+/// What a ray that leaves the scene sees: the sky, the ground below the horizon and the
+/// sun's disk (cd/m²), or black without daylight.
+Rgb outdoors(const scene::Scene& scene, const Vec3& unit) {
+    if (!scene.daylight) return Rgb(0.0);
+    const scene::Daylight& d = *scene.daylight;
+    return Rgb(d.luminance(unit) + (d.inSunDisk(unit) ? d.sunDiskLuminance() : 0.0));
+}
+
+Rgb shadeHit(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
+             const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
+             Hit h, int areaLightSamples, Random& rng, const RayCone& cone, int depth, const HitGather* gather,
+             radiosity::PixelLightMemo* pixel);
+
 }  // namespace
 
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
              int areaLightSamples, Random& rng, const RayCone& cone, int depth, const HitGather* gather,
              radiosity::PixelLightMemo* pixel) {
-    Hit h = embree.intersect(origin, dir, 0.0, std::numeric_limits<double>::infinity());
-    if (!h.found) return Rgb(0.0);
+    const Hit h = embree.intersect(origin, dir, 0.0, std::numeric_limits<double>::infinity());
+    const Vec3 unit = glm::normalize(dir);
+    // The glazing of the openings the ray passes through on its way (1 without daylight).
+    const double glazing =
+        scene.daylight ? lights.openingTransmittance(origin, unit, h.found ? h.t * glm::length(dir)
+                                                                           : std::numeric_limits<double>::infinity())
+                       : 1.0;
+    if (!h.found) return glazing * outdoors(scene, unit);
+    return glazing * shadeHit(scene, mesh, solution, lights, embree, origin, dir, h, areaLightSamples, rng, cone, depth,
+                              gather, pixel);
+}
+
+namespace {
+
+Rgb shadeHit(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
+             const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
+             Hit h, int areaLightSamples, Random& rng, const RayCone& cone, int depth, const HitGather* gather,
+             radiosity::PixelLightMemo* pixel) {
     const Vec3 unit = glm::normalize(dir);
     const RayCone onward = cone.continuedAt(h.t * glm::length(dir));  // the footprint at the hit
     if (h.specular) {
@@ -102,6 +131,8 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
                                                     static_cast<int64_t>(h.patch));
     return L + rho * (direct + indirect) / kPi;  // L = ρ E / π
 }
+
+}  // namespace
 
 double compressionLuminance(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
                             const radiosity::RadiositySolution& solution) {

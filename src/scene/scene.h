@@ -25,6 +25,7 @@ struct Material {
     Rgb emission{0.0};     ///< emitted luminance per channel, cd/m² (front side only)
     Rgb specular{0.0};     ///< mirror: Ks per channel, in [0, 1]
     double ior = 1.5;      ///< glass: index of refraction
+    double transmittance = 1.0;  ///< opening: normal transmittance (1: an unglazed hole)
     /// One side of a two-sided diffuse surface: the builder adds the back as a coincident
     /// reversed surface (the ray tracer shows whichever side's front faces the ray).
     bool twoSided = false;
@@ -34,6 +35,7 @@ struct Material {
     int texture = -1;
     bool isEmissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     bool isDiffuse() const { return kind == SurfaceKind::Diffuse; }
+    bool isOpening() const { return kind == SurfaceKind::Opening; }
 };
 
 /// One planar mirror polygon: reflects across its plane n·x = offset, front side only.
@@ -156,6 +158,7 @@ struct Scene : Settings {
     std::vector<View> views;         ///< every named view
     std::vector<Camera> pathFrames;  ///< the walkthrough's frames ("camera_path"), in order
     std::vector<Sensor> sensors;
+    std::optional<Daylight> daylight;  ///< the sky and the sun, lighting through the openings
     BuildWarnings warnings;
 
     /// Axis-aligned bounds of all geometry.

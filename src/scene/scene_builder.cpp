@@ -128,6 +128,7 @@ class Builder {
             mat.reflectance = m.reflectance;
             mat.specular = m.specular;
             mat.ior = m.ior;
+            mat.transmittance = m.transmittance;
             mat.twoSided = m.twoSided;
             mat.lightGroup = m.lightGroup;
             if (m.emissive && m.luminance > 0) mat.emission = m.color / luminance(m.color) * m.luminance;
@@ -140,7 +141,8 @@ class Builder {
         resolveFluxes(s);
         for (const auto& l : m_desc.lights) s.lights.push_back(makeLight(l));
         for (const auto& l : m_fileLights) s.lights.push_back(l);
-        bool anyEmitter = !s.lights.empty();
+        s.daylight = m_desc.daylight;
+        bool anyEmitter = !s.lights.empty() || s.daylight.has_value();
         for (const auto& g : s.groups) anyEmitter |= s.materials[g.material].isEmissive();
         if (!anyEmitter)
             fail("/lights", "the scene has no light: add a light or an emissive material (the mesh files bring none)");

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <core/math.h>
+#include <scene/daylight/daylight.h>
 #include <scene/settings.h>
 
 #include <glm/mat4x4.hpp>
@@ -12,7 +13,10 @@
 
 namespace rayrad::scene {
 
-enum class SurfaceKind { Diffuse, Mirror, Glass };
+/// Diffuse (Lambertian), a planar mirror, clear glass (ray tracer only), or an opening:
+/// a window or skylight the daylight enters through (no surface for visibility; glazed
+/// when its transmittance is below 1).
+enum class SurfaceKind { Diffuse, Mirror, Glass, Opening };
 
 /// A Lambertian material, optionally emissive (an area light); or a planar mirror or
 /// glass (specular, for the image method and the ray tracer).
@@ -23,6 +27,7 @@ struct MaterialDesc {
     Rgb reflectance{0.0};  ///< diffuse reflectance per channel, in [0, 1)
     Rgb specular{0.0};     ///< mirror: specular reflectance Ks per channel, in [0, 1]
     double ior = 1.5;      ///< glass: index of refraction
+    double transmittance = 1.0;  ///< opening: normal transmittance of its glazing (1: unglazed)
     bool emissive = false;
     Rgb color{1.0};                      ///< emission colour (scaled to the given luminance)
     double luminance = 0.0;              ///< emitted luminance Y in cd/m² (if given)
@@ -140,6 +145,7 @@ struct SceneDesc : Settings {
     std::optional<CameraPathDesc> cameraPath;   ///< "camera_path": a walkthrough's frames
     std::vector<SensorDesc> sensors;            ///< points, with grids already expanded
     std::vector<SurfaceGridDesc> surfaceGrids;  ///< expanded into sensors by the builder
+    std::optional<Daylight> daylight;           ///< "daylight": the sky and the sun
 };
 
 }  // namespace rayrad::scene

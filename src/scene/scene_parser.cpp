@@ -3,6 +3,7 @@
 #include <core/colour_temperature.h>
 #include <core/input_error.h>
 #include <core/input_file.h>
+#include <scene/daylight/daylight_parser.h>
 #include <scene/json_reader.h>
 #include <scene/overrides.h>
 #include <scene/sensor_names.h>
@@ -67,12 +68,25 @@ MaterialDesc parseMaterial(JsonObject m, const std::string& name, const std::str
     d.name = name;
     d.where = m.path();
     std::string type = m.string("type").value_or("diffuse");
-    static const std::vector<std::string> kTypes = {"diffuse", "emissive", "mirror", "glass"};
+    static const std::vector<std::string> kTypes = {"diffuse", "emissive", "mirror", "glass", "opening"};
     if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end()) {
         std::string hint = closestMatch(type, kTypes);
         m.error("type", fmt::format("unknown material type \"{}\" ({})", type,
-                                    hint.empty() ? "expected diffuse, emissive, mirror or glass"
+                                    hint.empty() ? "expected diffuse, emissive, mirror, glass or opening"
                                                  : fmt::format("did you mean \"{}\"?", hint)));
+    }
+    if (type == "opening") {
+        // A window or skylight: daylight enters through it, from behind its front side.
+        d.kind = SurfaceKind::Opening;
+        if (m.has("transmittance")) {
+            d.transmittance = m.number("transmittance", 1.0);
+            if (!(d.transmittance > 0 && d.transmittance <= 1))
+                m.error("transmittance",
+                        fmt::format("a glazing's normal transmittance lies in (0, 1] (1: no glazing), got {}",
+                                    d.transmittance));
+        }
+        m.finish();
+        return d;
     }
     if (type == "mirror") {
         d.kind = SurfaceKind::Mirror;
@@ -708,7 +722,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     top.string("provenance");
     // Unknown top-level keys first: a misspelt "Materials" explains the errors it causes.
     top.finish({"materials", "objects", "lights", "camera", "cameras", "sensors", "sensor_grids", "work_planes",
-                "surface_grids", "camera_path", "radiosity", "clusters", "render"});
+                "surface_grids", "camera_path", "radiosity", "clusters", "render", "daylight"});
 
     std::map<std::string, int> materialIndex;
     if (auto mats = top.object("materials")) {
@@ -771,9 +785,10 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     if (auto r = top.object("radiosity")) parseRadiosity(*r, desc);
     if (auto c = top.object("clusters")) parseClusters(*c, desc);
     if (auto r = top.object("render")) parseRender(*r, desc);
+    if (auto d = top.object("daylight")) desc.daylight = parseDaylight(*d);
 
     if (ctx.errors == 0 && desc.objects.empty()) ctx.error("/objects", "the scene has no geometry");
-    if (ctx.errors == 0 && desc.lights.empty()) {
+    if (ctx.errors == 0 && desc.lights.empty() && !desc.daylight) {
         bool anyEmitter = false;
         for (const auto& m : desc.materials) anyEmitter |= m.emissive;
         // A mesh that takes its file's materials may bring emitters or lights (checked

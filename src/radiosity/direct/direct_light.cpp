@@ -3,14 +3,28 @@
 #include <core/check.h>
 #include <core/ray_batch.h>
 #include <radiosity/form_factors/form_factor.h>
+#include <scene/daylight/glazing.h>
 #include <scene/polygon.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace rayrad::radiosity {
 
 namespace {
+/// An opening is cut into at least this many parts: the sky's luminance changes across it.
+constexpr int kOpeningSamples = 16;
+/// Near the receiver its parts are split until each spans at most this fraction of its
+/// distance (about 30°), at most this many times.
+constexpr double kOpeningPartSpan = 0.5;
+constexpr int kOpeningMaxDepth = 6;
+
+/// Visibility with nothing in the way (an opening's luminance factor, without rays).
+struct NoOcclusion : Visibility {
+    bool visible(const Vec3&, const Vec3&) const override { return true; }
+};
+
 /// An area light within this many of its diameters gets all its shadow rays; farther, it
 /// subtends a smaller solid angle and its penumbrae are narrower, and the rays fall in
 /// proportion to the solid angle (at least one).
@@ -37,6 +51,35 @@ AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rg
     return light;
 }
 
+double AreaLight::skyLuminanceAlong(const Vec3& w) const {
+    const double cosTheta = -glm::dot(w, normal);  // the opening's normal faces the receiver
+    return sky->luminance(w) * scene::glazingTransmittance(transmittance, cosTheta);
+}
+
+double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance, bool withSun) {
+    // Midpoint rule over the hemisphere of directions w leaving the room (w · inward < 0),
+    // in (cosθ, φ) about −inward: dω = d(cosθ) dφ.
+    const Vec3 out = -inward;
+    const auto [t, b] = tangentFrame(out);
+    constexpr int kRings = 256, kSectors = 512;
+    double sum = 0;
+    for (int i = 0; i < kRings; ++i) {
+        const double c = (i + 0.5) / kRings, s = std::sqrt(1 - c * c);
+        const double tau = scene::glazingTransmittance(transmittance, c);
+        double ring = 0;
+        for (int j = 0; j < kSectors; ++j) {
+            const double phi = (j + 0.5) * 2 * kPi / kSectors;
+            ring += daylight.luminance(c * out + s * (std::cos(phi) * t + std::sin(phi) * b));
+        }
+        sum += ring * tau * c;
+    }
+    double e = sum * (1.0 / kRings) * (2 * kPi / kSectors);
+    const double cosSun = glm::dot(daylight.sunDirection, out);
+    if (withSun && daylight.hasDirectSun() && cosSun > 0)
+        e += daylight.sunNormalIlluminance * scene::glazingTransmittance(transmittance, cosSun) * cosSun;
+    return e;
+}
+
 double areaLightFormFactor(const AreaLight& light, const Vec3& x, const Vec3& n) {
     const Vec3 d = light.centre - x;
     const double far = kFarFormFactorDiameters * 2 * light.radius;  // m
@@ -48,14 +91,41 @@ double areaLightFormFactor(const AreaLight& light, const Vec3& x, const Vec3& n)
 }
 
 DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights) {
+    m_beyondScene = 4 * std::max(scene.diagonal(), 1.0);
+    if (scene.daylight) m_daylight = std::make_shared<const scene::Daylight>(*scene.daylight);
     for (const auto& g : scene.groups) {
         const auto& mat = scene.materials[g.material];
-        if (!mat.isEmissive()) continue;
+        const bool opening = mat.isOpening() && m_daylight;
+        if (!mat.isEmissive() && !opening) continue;
         for (const auto& poly : g.polygons) {
             std::vector<Vec3> vertices;
             for (uint32_t i : poly) vertices.push_back(g.positions[i]);
-            m_areaLights.push_back(makeAreaLight(std::move(vertices), scene::polygonNormal(vertices), mat.emission));
+            const Vec3 normal = scene::polygonNormal(vertices);
+            if (!opening) {
+                m_areaLights.push_back(makeAreaLight(std::move(vertices), normal, mat.emission));
+                continue;
+            }
+            // An opening: the sky behind it, seen from its front; its mean luminance
+            // Φ_in / (π A) from what the unobstructed sky and ground send in.
+            const double mean = enteringIlluminance(*m_daylight, normal, mat.transmittance, false) / kPi;
+            if (!(mean > 0)) continue;
+            AreaLight light = makeAreaLight(std::move(vertices), normal, Rgb(mean));
+            light.sky = m_daylight.get();
+            light.transmittance = mat.transmittance;
+            m_openings.push_back(m_areaLights.size());
+            m_areaLights.push_back(std::move(light));
         }
+    }
+    if (m_daylight && m_daylight->hasDirectSun()) {
+        // The sun: a point source so far away (10⁵ scene diagonals) that its direction and
+        // its 1/d² change by at most 2·10⁻⁵ across the scene; I = E_n d².
+        scene::PointLight sun;
+        const double d = 1e5 * std::max(scene.diagonal(), 1.0);
+        sun.position = 0.5 * (scene.boundsMin + scene.boundsMax) + d * m_daylight->sunDirection;
+        sun.intensity = Rgb(m_daylight->sunNormalIlluminance * d * d);
+        sun.where = m_daylight->where + "/sun";
+        m_sun = static_cast<int>(m_pointLights.size());
+        m_pointLights.push_back(sun);
     }
     m_mirrors = scene.mirrors;
     for (const auto& m : m_mirrors) m_convexMirrors &= scene::isConvexAround(m.polygon, m.normal);
@@ -75,6 +145,7 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             v.centre = image.point(a.centre);
             v.moments = polygonMoments(v.triangles);
             v.luminance = a.luminance * image.weight;
+            if (a.sky) v.luminance = Rgb(0.0), v.sky = nullptr;  // the sky is not carried through mirrors
             mirrored.push_back(std::move(v));
         }
         m_imageAreaLights.push_back(std::move(mirrored));
@@ -83,8 +154,17 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
 
 double DirectLight::emittedFlux() const {
     double flux = 0;
-    for (const auto& l : m_pointLights) {
-        if (l.photometry) {
+    for (size_t k = 0; k < m_pointLights.size(); ++k) {
+        const scene::PointLight& l = m_pointLights[k];
+        if (static_cast<int>(k) == m_sun) {
+            // The sun's flux: what it sends in through the openings, E_n τ(θ) cosθ A.
+            for (size_t i : m_openings) {
+                const AreaLight& o = m_areaLights[i];
+                const double c = -glm::dot(m_daylight->sunDirection, o.normal);
+                if (c > 0)
+                    flux += m_daylight->sunNormalIlluminance * scene::glazingTransmittance(o.transmittance, c) * c * o.area;
+            }
+        } else if (l.photometry) {
             flux += luminance(l.intensity) * l.photometricFlux;  // the file's table, integrated
         } else if (!l.isSpot) {
             flux += 4 * kPi * luminance(l.intensity);  // Φ = 4π I
@@ -144,14 +224,38 @@ bool DirectLight::inNearField(const scene::PointLight& l, const Vec3& x, double 
     return !l.openingPoints.empty() && glm::length(x - l.position) < sizes * l.openingSize;
 }
 
-Rgb DirectLight::unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n) {
-    if (!inNearField(l, x)) return pointIlluminance(l, l.position, x, n);
+double DirectLight::glazingFor(const scene::PointLight& l, const Vec3& x) const {
+    if (m_sun < 0 || &l != &m_pointLights[m_sun]) return 1.0;
+    return openingTransmittance(x, m_daylight->sunDirection, m_beyondScene);
+}
+
+int DirectLight::openingsCrossed(const Vec3& x, const Vec3& w, double maxDistance, double* tau) const {
+    int crossed = 0;
+    for (size_t i : m_openings) {
+        const AreaLight& o = m_areaLights[i];
+        const double c = glm::dot(w, o.normal);
+        if (c == 0) continue;
+        const double t = glm::dot(o.centre - x, o.normal) / c;  // the ray meets the opening's plane
+        if (!(t > 0 && t < maxDistance)) continue;
+        const Vec3 p = x + t * w;
+        for (const auto& tri : o.triangles)
+            if (const Vec3 b = barycentric(tri[0], tri[1], tri[2], p); b.x >= 0 && b.y >= 0 && b.z >= 0) {
+                if (tau) *tau *= scene::glazingTransmittance(o.transmittance, std::abs(c));
+                ++crossed;
+                break;
+            }
+    }
+    return crossed;
+}
+
+Rgb DirectLight::unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n) const {
+    if (!inNearField(l, x)) return pointIlluminance(l, l.position, x, n) * glazingFor(l, x);
     Rgb sum(0.0);  // the opening's parts, each with 1/n of the distribution
     for (const Vec3& p : l.openingPoints) sum += pointIlluminance(l, p, x, n);
     return sum / static_cast<double>(l.openingPoints.size());
 }
 
-Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) {
+Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) const {
     if (inNearField(l, x)) {
         Rgb sum(0.0);
         for (const Vec3& p : l.openingPoints) {
@@ -160,7 +264,7 @@ Rgb DirectLight::fromPointLight(const scene::PointLight& l, const Vec3& x, const
         }
         return sum / static_cast<double>(l.openingPoints.size());
     }
-    const Rgb e = unshadowedFromPointLight(l, x, n);
+    const Rgb e = unshadowedFromPointLight(l, x, n);  // the sun's through its glazing
     if (e == Rgb(0.0) || !vis.visibleFromSurface(x, n, l.position)) return Rgb(0.0);
     return e;
 }
@@ -189,10 +293,11 @@ const AreaLight& DirectLight::areaSource(size_t s) const {
     return s < perChain() ? m_areaLights[k] : m_imageAreaLights[s / perChain() - 1][k];
 }
 
-Rgb DirectLight::fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples) const {
-    if (s < perChain()) return fromAreaLight(areaSource(s), x, n, vis, samples, nullptr);
+Rgb DirectLight::fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
+                                Random* rng) const {
+    if (s < perChain()) return fromAreaLight(areaSource(s), x, n, vis, samples, rng);
     const size_t i = s / perChain() - 1, k = s % perChain() - m_pointLights.size();
-    return fromAreaImage(i, k, x, n, MirrorPath(m_mirrors, m_images[i], vis), samples, nullptr);
+    return fromAreaImage(i, k, x, n, MirrorPath(m_mirrors, m_images[i], vis), samples, rng);
 }
 
 std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, const Vec3& x) const {
@@ -216,8 +321,13 @@ Rgb DirectLight::fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n,
     return Rgb(0.0);
 }
 
-Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const {
+Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n, bool withSky) const {
     auto open = [&](const AreaLight& light) {
+        if (light.sky && withSky) {
+            double open = 0;
+            throughOpening(light, x, n, nullptr, kOpeningSamples, nullptr, &open);
+            return Rgb(open);
+        }
         return light.luminance * (kPi * areaLightFormFactor(light, x, n));  // E = π L F
     };
     if (s < perChain()) return open(areaSource(s));
@@ -294,23 +404,97 @@ Rgb DirectLight::fromImages(const Vec3& x, const Vec3& n, const Visibility& vis,
 
 Rgb DirectLight::fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
                                Random* rng, Rgb* open, double* visible) const {
-    const double f = areaLightFormFactor(light, x, n);
+    const double f = light.luminance == Rgb(0.0) ? 0.0 : areaLightFormFactor(light, x, n);
     if (open) *open = light.luminance * (kPi * std::max(0.0, f));
     if (visible) *visible = 0;
     if (f <= 0) return Rgb(0.0);
-    const double v = visibleFraction(light, x, n, vis, samples, rng);
+    if (light.sky) {  // an opening: the sky through its parts
+        double unshadowed = 0;
+        const double e = throughOpening(light, x, n, &vis, samples, rng, &unshadowed);
+        if (open) *open = Rgb(unshadowed);
+        if (visible) *visible = unshadowed > 0 ? e / unshadowed : 0.0;
+        return Rgb(e);
+    }
+    const double v = visibleFraction(light, x, n, &vis, samples, rng);
     if (visible) *visible = v;
     return light.luminance * (kPi * f * v);  // E = π L F
 }
 
-double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
-                                    int samples, Random* rng) {
+double DirectLight::openingFormFactor(size_t k, const Vec3& x, const Vec3& n, const Visibility& vis,
+                                      int samples) const {
+    AreaLight outline = m_areaLights[m_openings[k]];
+    outline.sky = nullptr;  // its outline only
+    const double f = areaLightFormFactor(outline, x, n);
+    return f > 0 ? f * visibleFraction(outline, x, n, &vis, samples, nullptr) : 0.0;
+}
+
+double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis,
+                                   int samples, Random* rng, double* open) const {
+    // Each triangle of the outline cut into m² equal parts (a barycentric grid); part c
+    // sees the sky along the direction to its centroid ω_c, and delivers π F_c L(ω_c) τ(θ_c),
+    // F_c its own form factor by Lambert's formula (exact however near x is).
+    samples = std::max(samples, kOpeningSamples);
+    const int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples) /
+                                                                    static_cast<double>(light.triangles.size())))));
+    double unshadowed = 0, shadowed = 0;
+    const NoOcclusion none;
+    RayBatch<double> shadowRays(vis ? *vis : none, x, n, shadowed);
+    // A part: split in four while it spans more than kOpeningPartSpan of its distance
+    // from x (near x the luminance and the glazing's τ change across a part faster than
+    // its centroid's direction can say), else it delivers its light.
+    std::function<void(const std::array<Vec3, 3>&, int)> part = [&](const std::array<Vec3, 3>& t, int depth) {
+        const Vec3 centroid = (t[0] + t[1] + t[2]) / 3.0;
+        const double span = std::max({glm::length(t[1] - t[0]), glm::length(t[2] - t[1]), glm::length(t[0] - t[2])});
+        if (depth < kOpeningMaxDepth && span > kOpeningPartSpan * glm::length(centroid - x)) {
+            const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
+            for (const auto& child : {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
+                                      std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})
+                part(child, depth + 1);
+            return;
+        }
+        const double f = formFactorToPolygon(x, n, t.data(), 3, light.normal);
+        if (f <= 0) return;
+        const auto along = unitDirection(centroid - x);
+        if (!along) return;
+        const double e = kPi * f * light.skyLuminanceAlong(*along);  // lx
+        unshadowed += e;
+        if (!vis) return;
+        // The shadow ray through a point of the part (jittered when rng), on beyond the scene.
+        Vec3 y = centroid;
+        if (rng) {
+            double u = rng->nextDouble(), v = rng->nextDouble();
+            if (u + v > 1) u = 1 - u, v = 1 - v;
+            y = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+        }
+        if (const auto through = unitDirection(y - x)) shadowRays.add(y + m_beyondScene * *through, e);
+    };
+    for (const auto& t : light.triangles) {
+        const Vec3 e1 = (t[1] - t[0]) / static_cast<double>(m), e2 = (t[2] - t[0]) / static_cast<double>(m);
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; i + j < m; ++j) {
+                const Vec3 a = t[0] + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
+                part({a, a + e1, a + e2}, 0);
+                if (i + j + 1 < m) part({a + e1, a + e1 + e2, a + e2}, 0);  // the grid's downward triangles
+            }
+    }
+    shadowRays.flush();
+    if (open) *open = unshadowed;
+    return vis ? shadowed : unshadowed;
+}
+
+double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis,
+                                    int samples, Random* rng) const {
     // Visible fraction, weighted by the unoccluded integrand cosθ_x cosθ_y / r².
     const double near = kAllSamplesDiameters * 2 * light.radius;  // m
     const double d2 = glm::dot(light.centre - x, light.centre - x);
     const double rays = d2 > near * near ? samples * near * near / d2 : samples;
+    if (light.sky) {  // E / (L̄ π F), F the sum of the parts' form factors
+        const double f = areaLightFormFactor(light, x, n);
+        return f > 0 ? throughOpening(light, x, n, vis, samples, rng, nullptr) / (light.luminance.g * kPi * f) : 0.0;
+    }
+    CHECK(vis);
     double weightSum = 0, visibleSum = 0;
-    RayBatch<double> shadowRays(vis, x, n, visibleSum);  // the samples' rays, traced together
+    RayBatch<double> shadowRays(*vis, x, n, visibleSum);  // the samples' rays, traced together
     auto sample = [&](const std::array<Vec3, 3>& tri, double u1, double u2) {
         // Uniform point on a triangle (square-root warp).
         const double su = std::sqrt(u1);

@@ -10,6 +10,7 @@
 #include <scene/scene.h>
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -26,10 +27,24 @@ struct AreaLight {
     Vec3 centre{0.0};        ///< mean of the vertices
     double radius = 0;       ///< largest vertex distance from the centre, m
     PolygonMoments moments;  ///< area centroid and second moment, for far form factors
+    /// An opening: the sky seen through it, L(ω) τ(θ) along each direction ω through it
+    /// (θ its angle with the normal), and `luminance` the mean, Φ_in / (π A), that the
+    /// ranking and the energy account use; null for a lamp.
+    const scene::Daylight* sky = nullptr;
+    double transmittance = 1;  ///< the opening's glazing at normal incidence (1: none)
+    /// The luminance (cd/m²) that comes through toward a receiver along the unit direction
+    /// w (from the receiver through the opening): the sky's (or ground's), × the glazing's τ.
+    double skyLuminanceAlong(const Vec3& w) const;
 };
 
 /// An area light from its outline (CCW seen from its emitting front).
 AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance);
+
+/// The illuminance (lx) that comes in through an opening of unit normal `inward` (facing
+/// the room) from the unobstructed sky, ground and sun: ∫ L(ω) τ(θ) cosθ dω over the
+/// outside half of the sphere, plus E_n τ(θ_s) cosθ_s. The opening's flux is this × its area.
+double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance,
+                           bool withSun = true);
 
 /// F(dA_x → light), unoccluded: Lambert's formula within 5 of the light's diameters, or
 /// when x's horizon cuts the light; beyond, the second-order far form factor
@@ -134,10 +149,13 @@ class DirectLight {
     const AreaLight& areaSource(size_t s) const;
     /// Illuminance (lx) at x, normal n, from area source s alone: π L F · visible fraction
     /// from `samples` shadow rays (through the mirror chain for an image).
-    Rgb fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples) const;
+    Rgb fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
+                       Random* rng = nullptr) const;
     /// The same without shadows: π L F, F the analytic form factor (to the part of an
-    /// image that x sees through the mirror polygons).
-    Rgb unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n) const;
+    /// image that x sees through the mirror polygons). For an opening the sky's luminance
+    /// through it (throughOpening), or with `withSky` false its mean: π L̄ F, which changes
+    /// across a receiver as F does and costs one form factor.
+    Rgb unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n, bool withSky = true) const;
     /// For point source s: Whole when it is a real light, or when its image sees every
     /// corner of triangle t through its mirror chain (the set of receivers that see it
     /// is convex, so then all of t does). None when t lies behind the chain's last
@@ -148,8 +166,30 @@ class DirectLight {
 
     const std::vector<AreaLight>& areaLights() const { return m_areaLights; }
     const std::vector<scene::PointLight>& pointLights() const { return m_pointLights; }
-    /// Total flux in lm emitted by all primary lights (luminance-weighted).
+    /// Total flux in lm emitted by all primary lights (luminance-weighted); for daylight,
+    /// what enters through the openings from the unobstructed sky, ground and sun.
     double emittedFlux() const;
+    /// The sun as a point source (its index), or −1 without direct sun.
+    int sunSource() const { return m_sun; }
+    /// The product of the glazings' transmittances τ(θ) the ray from x along the unit
+    /// direction w crosses (each opening it crosses, to the first `maxDistance` m).
+    double openingTransmittance(const Vec3& x, const Vec3& w, double maxDistance) const {
+        double tau = 1;
+        openingsCrossed(x, w, maxDistance, &tau);
+        return tau;
+    }
+    /// How many openings the ray from x along the unit direction w crosses within
+    /// `maxDistance` m; `tau` (if given) is multiplied by their glazings' τ(θ).
+    int openingsCrossed(const Vec3& x, const Vec3& w, double maxDistance, double* tau = nullptr) const;
+    /// The openings the daylight enters through.
+    size_t openingCount() const { return m_openings.size(); }
+    /// F from x (unit normal n) to opening k, times the fraction of it x sees past occluders
+    /// (`samples` shadow rays; cell centres): where light leaving x goes out of the room.
+    double openingFormFactor(size_t k, const Vec3& x, const Vec3& n, const Visibility& vis, int samples) const;
+    /// Whether the sun reaches x through an opening (not from outdoors, onto the building's shell).
+    bool sunThroughOpening(const Vec3& x) const {
+        return m_sun >= 0 && openingsCrossed(x, m_daylight->sunDirection, m_beyondScene) > 0;
+    }
     size_t imageCount() const { return m_images.size(); }
     size_t virtualLightCount() const { return m_images.size() * (m_pointLights.size() + m_areaLights.size()); }
 
@@ -159,8 +199,10 @@ class DirectLight {
     /// Point and spot lights, and luminaires beyond their near field: E = I(ω) cosθ / d²
     /// from the position. A luminaire within kNearFieldSizes of its opening's size: the
     /// mean over its opening's parts (each with its own shadow ray in fromPointLight).
-    static Rgb unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n);
-    static Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis);
+    Rgb unshadowedFromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n) const;
+    Rgb fromPointLight(const scene::PointLight& l, const Vec3& x, const Vec3& n, const Visibility& vis) const;
+    /// The sun's glazing factor at x (1 for other lights and unglazed openings).
+    double glazingFor(const scene::PointLight& l, const Vec3& x) const;
     static Rgb fromPointImage(const scene::PointLight& l, const MirrorImage& image, const MirrorPath& path,
                               const Vec3& x, const Vec3& n);
     /// `open` (if given) gets the unshadowed value π L F, `visible` the visible fraction
@@ -169,8 +211,16 @@ class DirectLight {
                       Random* rng, Rgb* open = nullptr, double* visible = nullptr) const;
     /// The fraction of an area light x sees past occluders (`samples` stratified shadow
     /// rays, fewer for a far light), weighted by the unoccluded integrand cosθ_x cosθ_y / r².
-    static double visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis,
-                                  int samples, Random* rng);
+    /// For an opening: its light at x (throughOpening) over L̄ π F, its luminance through
+    /// the visible parts over its mean. `vis` null: nothing occludes.
+    double visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis, int samples,
+                           Random* rng) const;
+    /// An opening's light at x (lx): its outline cut into about `samples` parts, each
+    /// delivering π F_c L(ω_c) τ(θ_c) (F_c the part's exact form factor, ω_c the direction
+    /// to its centroid) if its shadow ray, continued through it beyond the scene, is clear.
+    /// `open` gets the unshadowed sum; `vis` null: nothing occludes.
+    double throughOpening(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis, int samples,
+                          Random* rng, double* open) const;
     /// Area light k's image i: the part of it x sees through the chain's mirror polygons
     /// (exact for convex mirrors, so the rim of a reflected light is not left to shadow
     /// rays), with its shadow rays through the chain.
@@ -187,6 +237,10 @@ class DirectLight {
 
     std::vector<scene::PointLight> m_pointLights;
     std::vector<AreaLight> m_areaLights;
+    int m_sun = -1;                                 ///< the sun's index in m_pointLights
+    std::shared_ptr<const scene::Daylight> m_daylight;  ///< the sky the openings point to
+    std::vector<size_t> m_openings;                 ///< the openings' indices in m_areaLights
+    double m_beyondScene = 0;                       ///< m: a distance that leaves the scene from anywhere in it
     std::vector<scene::Mirror> m_mirrors;
     bool m_convexMirrors = true;  ///< every mirror polygon convex: images are clipped exactly
     std::vector<MirrorImage> m_images;

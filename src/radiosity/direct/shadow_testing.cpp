@@ -97,7 +97,7 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
             v = fromPointLight(m_pointLights[c.light], x, n, vis);
         } else if (c.exact) {
             const AreaLight& light = m_areaLights[c.light - points];
-            v = light.luminance * (c.factor * visibleFraction(light, x, n, vis, samples, rng));
+            v = light.luminance * (c.factor * visibleFraction(light, x, n, &vis, samples, rng));
         } else {  // far: its visible fraction is kept for the pixel's other samples
             double visible = 0;
             Rgb open(0.0);

@@ -66,7 +66,8 @@ QuadContacts findContacts(const scene::Scene& scene, size_t group, const std::ve
     for (size_t gi = 0; gi < scene.groups.size(); ++gi) {
         if (gi == group || !overlap(box, bounds[gi], tolerance)) continue;
         const scene::SurfaceGroup& g = scene.groups[gi];
-        if (scene.materials[g.material].kind == scene::SurfaceKind::Glass) continue;
+        const scene::SurfaceKind kind = scene.materials[g.material].kind;
+        if (kind == scene::SurfaceKind::Glass || kind == scene::SurfaceKind::Opening) continue;
         for (const auto& poly : g.polygons) {
             // Signed distances to the quad's plane; a surface must reach into its front.
             double dmax = -1e300, dmin = 1e300;

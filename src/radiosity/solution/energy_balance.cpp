@@ -18,6 +18,7 @@ EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, co
     b.unshot = s.unshotNetFlux;
     b.mirrorAbsorbedDirect = s.mirrorAbsorbedDirect;
     b.backAbsorbed = s.backAbsorbedDirect;
+    b.leftThroughOpenings = s.leftThroughOpenings;
     b.mirrorAbsorbed = s.mirrorAbsorbedDirect + s.mirrorAbsorbedSecondary;
     return b;
 }

@@ -20,11 +20,16 @@ struct EnergyBalance {
     double mirrorAbsorbed = 0, mirrorAbsorbedDirect = 0;
     /// lm the direct pass delivered onto backs of one-sided surfaces.
     double backAbsorbed = 0;
-    double relativeError() const { return relative(absorbed + mirrorAbsorbed + backAbsorbed + unshot - emitted); }
+    /// lm reflected out of the scene through its openings (daylight).
+    double leftThroughOpenings = 0;
+    double relativeError() const {
+        return relative(absorbed + mirrorAbsorbed + backAbsorbed + unshot + leftThroughOpenings - emitted);
+    }
     double directError() const { return relative(directReceived + mirrorAbsorbedDirect + backAbsorbed - emitted); }
     /// What the secondary pass lost or made.
     double secondaryError() const {
-        return relative(absorbed + mirrorAbsorbed + unshot - directReceived - mirrorAbsorbedDirect);
+        return relative(absorbed + mirrorAbsorbed + unshot + leftThroughOpenings - directReceived -
+                        mirrorAbsorbedDirect);
     }
     double backShare() const { return relative(backAbsorbed); }
 

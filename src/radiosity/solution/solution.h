@@ -43,6 +43,8 @@ struct RadiositySolution {
     /// lm absorbed by mirrors on the way, booked by the source that delivers through
     /// them (delivered · (1/Π Ks − 1)): in the direct pass, and in the secondary pass.
     double mirrorAbsorbedDirect = 0, mirrorAbsorbedSecondary = 0;
+    /// lm the surfaces reflect out through the openings (daylight), over the whole solution.
+    double leftThroughOpenings = 0;
     /// lm the direct pass delivered onto the backs of one-sided surfaces (absorbed there:
     /// a one-sided surface's back is the inside of a solid, or a modelling error), and
     /// onto the backs of mirrors; per surface group (scene.groups) and in all.

@@ -158,6 +158,12 @@ SolutionFingerprint fingerprintOf(const scene::Scene& scene, const PatchMesh& me
                 for (double cd : plane) l << cd;
         }
     }
+    if (const auto& d = scene.daylight) {  // the sky and the sun light the scene through its openings
+        l << static_cast<int>(d->kind) << d->cieType << d->zenithLuminance << d->sunDirection
+          << d->sunNormalIlluminance << d->groundReflectance << d->up << d->north;
+        for (const auto& mat : scene.materials)
+            if (mat.isOpening()) l << mat.transmittance;
+    }
     f.lights = l.value();
 
     // The same with each emitter's strength over its group's (dimming a group changes no

@@ -1,0 +1,116 @@
+// Daylight through openings against closed forms and quadratures computed here.
+#include <radiosity/direct/direct_light.h>
+#include <radiosity/mesh/mesher.h>
+#include <raytrace/embree_scene.h>
+#include <scene/daylight/glazing.h>
+#include <scene/scene.h>
+#include <scene/scene_parser.h>
+
+#include "test_support.h"
+
+#include <cmath>
+
+using namespace rayrad;
+
+namespace {
+
+/// A 2 × 2 m opening (normal −z, facing a room below it, z up) at height h above the
+/// origin, a floor far below, and the sky given as JSON.
+scene::Scene roofOpening(double h, const std::string& sky, double transmittance = 1) {
+    const std::string json = R"({"materials": {"m": {"reflectance": 0.5},
+            "hole": {"type": "opening", "transmittance": )" + std::to_string(transmittance) + R"(}},
+        "objects": [{"type": "quad", "material": "m", "vertices": [[-50,-50,-10],[50,-50,-10],[50,50,-10],[-50,50,-10]]},
+                    {"type": "quad", "material": "hole", "vertices": [[-1,-1,)" + std::to_string(h) + R"(],[-1,1,)" +
+                             std::to_string(h) + R"(],[1,1,)" + std::to_string(h) + R"(],[1,-1,)" + std::to_string(h) +
+                             R"(]]}],
+        "daylight": {"up": [0, 0, 1], "north": [0, 1, 0], "sky": )" + sky + "}}";
+    return scene::buildScene(scene::parseScene(json, "t.json"));
+}
+
+struct Setup {
+    scene::Scene scene;
+    radiosity::PatchMesh mesh;
+    std::unique_ptr<raytrace::EmbreeScene> embree;
+    std::unique_ptr<radiosity::DirectLight> lights;
+    explicit Setup(scene::Scene s) : scene(std::move(s)) {
+        mesh = radiosity::premesh(scene, scene.meshing);
+        embree = std::make_unique<raytrace::EmbreeScene>(mesh, 1e-5 * scene.diagonal());
+        lights = std::make_unique<radiosity::DirectLight>(scene);
+    }
+    double at(const Vec3& x, const Vec3& n, int samples = 16) const {
+        return luminance(lights->illuminance(x, n, *embree, samples, nullptr));
+    }
+};
+
+/// F from a point to a parallel a × b rectangle one of whose corners lies straight above
+/// it at height h (the classic corner formula).
+double cornerFormFactor(double a, double b, double h) {
+    const double X = a / h, Y = b / h;
+    return (X / std::sqrt(1 + X * X) * std::atan(Y / std::sqrt(1 + X * X)) +
+            Y / std::sqrt(1 + Y * Y) * std::atan(X / std::sqrt(1 + Y * Y))) /
+           (2 * kPi);
+}
+
+/// ∫ L(ω) cosθ_x cosθ_y / r² dA over the opening z = h, |x|, |y| ≤ 1 seen from x (normal +z),
+/// by the midpoint rule on an n × n grid; L from the direction (unit, z up).
+template <class Luminance>
+double openingQuadrature(const Vec3& x, double h, Luminance L, int n = 800) {
+    double sum = 0;
+    const double cell = 2.0 / n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const Vec3 y(-1 + (i + 0.5) * cell, -1 + (j + 0.5) * cell, h);
+            const Vec3 d = y - x;
+            const double r2 = glm::dot(d, d), r = std::sqrt(r2);
+            sum += L(d / r) * (d.z / r) * (d.z / r) / r2;
+        }
+    return sum * cell * cell;
+}
+
+}  // namespace
+
+TEST_CASE("daylight: a uniform sky through a roof opening gives pi L F", "[daylight]") {
+    Setup s(roofOpening(3, R"({"type": "uniform", "zenith_luminance": 1000})"));
+    const double F = 4 * cornerFormFactor(1, 1, 3);  // on the axis: four corners
+    CHECK(s.at({0, 0, 0}, {0, 0, 1}) == Approx(kPi * 1000 * F).epsilon(1e-9));
+    // Off the axis: sums and differences of corner rectangles.
+    const double Foff = 2 * (cornerFormFactor(3.5, 1, 3) - cornerFormFactor(1.5, 1, 3));
+    CHECK(s.at({2.5, 0, 0}, {0, 0, 1}) == Approx(kPi * 1000 * Foff).epsilon(1e-9));
+}
+
+TEST_CASE("daylight: the CIE overcast sky through a roof opening, against a quadrature", "[daylight]") {
+    Setup s(roofOpening(3, R"({"type": "cie_overcast", "zenith_luminance": 3000})"));
+    auto overcast = [](const Vec3& w) { return 3000 * (1 + 2 * w.z) / 3; };  // Moon & Spencer
+    for (const Vec3& x : {Vec3(0, 0, 0), Vec3(2.5, 0, 0), Vec3(1, 4, 1)}) {
+        const double reference = openingQuadrature(x, 3, overcast);
+        INFO("x = " << toString(x));
+        const double e = s.at(x, {0, 0, 1});
+        WARN("overcast " << toString(x) << " " << e << " vs " << reference << " " << (e / reference - 1));
+        CHECK(e == Approx(reference).epsilon(5e-3));
+    }
+}
+
+TEST_CASE("daylight: a glazed opening seen from beside its edge, against a quadrature", "[daylight]") {
+    // Points on a plane perpendicular to the opening, as on a window's reveal: the light
+    // comes in at grazing angles, where the glazing passes little.
+    Setup s(roofOpening(3, R"({"type": "cie_overcast", "zenith_luminance": 3000})", 0.8));
+    auto glazed = [](const Vec3& w) {
+        return 3000 * (1 + 2 * w.z) / 3 * scene::glazingTransmittance(0.8, w.z);  // the opening's normal is −z
+    };
+    for (double depth : {0.5, 0.1, 0.02}) {
+        const Vec3 x(1.0, 0.0, 3 - depth);  // on the plane x = 1 through the opening's edge, facing −x
+        double reference = 0;
+        const int n = 1600;
+        const double cell = 2.0 / n;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const Vec3 y(-1 + (i + 0.5) * cell, -1 + (j + 0.5) * cell, 3);
+                const Vec3 d = y - x;
+                const double r2 = glm::dot(d, d), r = std::sqrt(r2);
+                reference += glazed(d / r) * (-d.x / r) * (d.z / r) / r2 * cell * cell;
+            }
+        const double e = s.at(x, {-1, 0, 0});
+        WARN("reveal depth " << depth << ": " << e << " vs " << reference << " " << (e / reference - 1));
+        CHECK(e == Approx(reference).epsilon(5e-3));
+    }
+}
