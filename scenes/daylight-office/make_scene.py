@@ -31,6 +31,11 @@ objects = [
     quad("wall", (0, 0, 1), (0, Y1, 0), (W, Y1, 0), (W, H, 0), (0, H, 0)),
     quad("wall", (0, 0, 1), (0, Y0, 0), (X0, Y0, 0), (X0, Y1, 0), (0, Y1, 0)),
     quad("wall", (0, 0, 1), (X1, Y0, 0), (W, Y0, 0), (W, Y1, 0), (X1, Y1, 0)),
+    # The window wall's outer face (z = -T, normal -z) around the hole: the wall is solid.
+    quad("wall", (0, 0, -1), (0, 0, -T), (W, 0, -T), (W, Y0, -T), (0, Y0, -T)),
+    quad("wall", (0, 0, -1), (0, Y1, -T), (W, Y1, -T), (W, H, -T), (0, H, -T)),
+    quad("wall", (0, 0, -1), (0, Y0, -T), (X0, Y0, -T), (X0, Y1, -T), (0, Y1, -T)),
+    quad("wall", (0, 0, -1), (X1, Y0, -T), (W, Y0, -T), (W, Y1, -T), (X1, Y1, -T)),
     # The reveals, inside the wall's thickness.
     quad("reveal", (0, 1, 0), (X0, Y0, -T), (X1, Y0, -T), (X1, Y0, 0), (X0, Y0, 0)),   # sill, normal +y
     quad("reveal", (0, -1, 0), (X0, Y1, -T), (X0, Y1, 0), (X1, Y1, 0), (X1, Y1, -T)),   # head, normal -y

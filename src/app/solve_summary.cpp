@@ -57,9 +57,9 @@ void printSolveSummary(const PipelineRun& run) {
     fmt::print(stderr,
                "energy: {} {:.6g} lm, absorbed {:.6g} lm{}{}, unshot {:.6g} lm, not accounted {:+.4f}% "
                "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
-               daylight ? "entering through the openings" : "emitted", balance.emitted, balance.absorbed,
+               daylight ? "daylight in (through the openings, and the sun outdoors)" : "emitted", balance.emitted, balance.absorbed,
                alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
-               daylight ? fmt::format(", left through the openings {:.6g} lm", balance.leftThroughOpenings) : "",
+               daylight ? fmt::format(", left again (through the openings, to the sky) {:.6g} lm", balance.leftThroughOpenings) : "",
                balance.unshot, 100 * balance.relativeError(), 100 * balance.directError(),
                100 * balance.secondaryError());
     const auto& st = run.lighting.shooting;

@@ -356,6 +356,7 @@ Rgb refinedAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& nor
 /// corners' values, and the flux mirrors absorbed on the way (lm per m² of the patch).
 struct SideLight {
     Rgb mean{0.0};
+    Rgb outdoorSun{0.0};  ///< lx of the mean: the sun from outdoors, not through an opening
     Rgb corner[3];
     Rgb mirrorLoss{0.0};
 };
@@ -398,7 +399,9 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         const Rgb values[4] = {at[0]->share[s], at[1]->share[s], at[2]->share[s], at[3]->share[s]};
         const Rgb opens[4] = {at[0]->open[s], at[1]->open[s], at[2]->open[s], at[3]->open[s]};
         const Rgb fourPoint = fourPointMean(values[3], values);
-        if (back && static_cast<int>(s) == lights.sunSource() && !lights.sunThroughOpening(p.centroid)) {
+        const bool outdoorSun =
+            static_cast<int>(s) == lights.sunSource() && !lights.sunThroughOpening(p.centroid);
+        if (back && outdoorSun) {
             // The sun on the back of a one-sided surface from outdoors: the outside of the
             // building's shell, not light that came in.
             out.mean -= fourPoint;
@@ -429,6 +432,7 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
             sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined, count);
         }
         out.mean += sourceMean - fourPoint;
+        if (outdoorSun) out.outdoorSun = sourceMean;
         out.mirrorLoss += mirrorLoss(sourceMean, lights.sourceWeight(s));
     }
     return out;
@@ -443,6 +447,7 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     solution.directCorner.assign(3 * mesh.patches.size(), RgbF(0.0f));
     std::vector<double> mirrorAbsorbed(mesh.patches.size(), 0.0);  // lm, per patch
     std::vector<double> backReceived(mesh.patches.size(), 0.0);    // lm, per patch
+    std::vector<double> outdoorSun(mesh.patches.size(), 0.0);      // lm, per patch
     const auto refined = shadowSamplePoints(kShadowSamples);
     const std::vector<char> shared = sharedCorners(mesh);
     const std::vector<char> sealed = sealedGroups(scene);  // their backs face a solid's dark inside
@@ -458,6 +463,7 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
                 const SideLight front = sideLight(mesh, p, p.normal, lights, vis, areaSamples, refined, &corners);
                 for (int k = 0; k < 3; ++k) solution.directCorner[3 * i + k] = RgbF(front.corner[k]);
                 solution.directMean[i] = front.mean;
+                outdoorSun[i] = luminance(front.outdoorSun) * p.area;
                 mirrorAbsorbed[i] = luminance(front.mirrorLoss) * p.area;
                 // The back of a one-sided surface is the inside of a solid: light that still
                 // reaches it (through a gap, onto a blind lit from behind) is absorbed there, and
@@ -496,6 +502,8 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
     for (size_t i = 0; i < mesh.patches.size(); ++i) solution.backFlux[mesh.patches[i].group] += backReceived[i];
     for (size_t i = 0; i < mirrorBacks.patches.size(); ++i)
         solution.backFlux[mirrorBacks.patches[i].group] += mirrorBackReceived[i];
+    solution.outdoorDirect = 0;
+    for (double f : outdoorSun) solution.outdoorDirect += f;
     solution.backAbsorbedDirect = 0;
     for (double f : solution.backFlux) solution.backAbsorbedDirect += f;
 }

@@ -7,7 +7,7 @@ namespace rayrad::radiosity {
 EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, const RadiositySolution& s,
                             double emittedFlux) {
     EnergyBalance b;
-    b.emitted = emittedFlux;
+    b.emitted = emittedFlux + s.outdoorDirect;  // daylight: what came in, and the sun on outdoor surfaces
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& p = mesh.patches[i];
         const Rgb rho = patchReflectance(scene, mesh, i);

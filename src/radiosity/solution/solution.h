@@ -45,6 +45,9 @@ struct RadiositySolution {
     double mirrorAbsorbedDirect = 0, mirrorAbsorbedSecondary = 0;
     /// lm the surfaces reflect out through the openings (daylight), over the whole solution.
     double leftThroughOpenings = 0;
+    /// lm the sun delivers onto surfaces from outdoors (not through an opening): light
+    /// that enters the account there, besides what enters through the openings.
+    double outdoorDirect = 0;
     /// lm the direct pass delivered onto the backs of one-sided surfaces (absorbed there:
     /// a one-sided surface's back is the inside of a solid, or a modelling error), and
     /// onto the backs of mirrors; per surface group (scene.groups) and in all.
