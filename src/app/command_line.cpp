@@ -227,6 +227,9 @@ void addValidate(CLI::App& cli, CommandLine& args) {
     validateLuminaire->add_option("--data", luminaire.dataDir, "Directory with .ies and .ldt files")
         ->default_str(luminaire.dataDir);
     addValidationRun(validateLuminaire, luminaire.outDir, nullptr);
+
+    validate->add_subcommand("daylight",
+                             "The sun's position, the CIE skies, the sky and the sun through openings, against references");
 }
 
 }  // namespace
@@ -248,6 +251,7 @@ void noteChosenCommand(const CLI::App& cli, CommandLine& args) {
         const CLI::App* validate = cli.get_subcommand("validate");
         args.command = validate->got_subcommand("sphere")      ? Command::ValidateSphere
                        : validate->got_subcommand("luminaire") ? Command::ValidateLuminaire
+                       : validate->got_subcommand("daylight")  ? Command::ValidateDaylight
                                                                : Command::ValidateCube;
         return;
     }

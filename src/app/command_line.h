@@ -70,7 +70,8 @@ struct CommandLine {
         Compare,
         ValidateCube,
         ValidateSphere,
-        ValidateLuminaire
+        ValidateLuminaire,
+        ValidateDaylight
     };
     Command command = Command::Info;
     RenderArgs render;

@@ -12,6 +12,7 @@
 #include <app/sweep.h>
 #include <app/tiles.h>
 #include <app/validate_cube.h>
+#include <app/validate_daylight.h>
 #include <app/validate_luminaire.h>
 #include <app/validate_runs.h>
 #include <app/validate_sphere.h>
@@ -318,6 +319,8 @@ int runCommand(const app::CommandLine& args) {
             return app::validateSphere(args.validateSphere);
         case Command::ValidateLuminaire:
             return app::validateLuminaire(args.validateLuminaire);
+        case Command::ValidateDaylight:
+            return app::validateDaylight();
         case Command::ValidateCube:
             return app::validateCube(args.validateCube);
         case Command::Render:

@@ -1,4 +1,5 @@
 // Daylight through openings against closed forms and quadratures computed here.
+#include <app/validate_daylight.h>
 #include <radiosity/direct/direct_light.h>
 #include <radiosity/mesh/mesher.h>
 #include <raytrace/embree_scene.h>
@@ -113,4 +114,45 @@ TEST_CASE("daylight: a glazed opening seen from beside its edge, against a quadr
         WARN("reveal depth " << depth << ": " << e << " vs " << reference << " " << (e / reference - 1));
         CHECK(e == Approx(reference).epsilon(5e-3));
     }
+}
+
+TEST_CASE("daylight: validate daylight passes every check", "[daylight]") {
+    CHECK(app::validateDaylight() == 0);
+}
+
+TEST_CASE("daylight: bad daylight input is refused with its place", "[daylight]") {
+    auto refused = [](const std::string& daylight, const std::string& material = R"({"type": "opening"})") {
+        const std::string json = R"({"materials": {"m": {"reflectance": 0.5}, "hole": )" + material + R"(},
+            "objects": [{"type": "quad", "material": "m", "vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+            "daylight": )" + daylight + "}";
+        try {
+            scene::parseScene(json, "t.json");
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string sky = R"("sky": {"type": "cie_overcast", "zenith_luminance": 1000})";
+    CHECK_THAT(refused("{" + sky + R"(, "sun": {"latitude": 95, "longitude": 0, "utc_offset": 0, "date": "2026-06-21", "time": "12:00"}})"),
+               Catch::Contains("/daylight/sun/latitude") && Catch::Contains("[−90°, 90°]"));
+    CHECK_THAT(refused("{" + sky + R"(, "sun": {"latitude": 50, "longitude": 0, "utc_offset": 0, "date": "2026-02-30", "time": "12:00"}})"),
+               Catch::Contains("/daylight/sun/date") && Catch::Contains("not a date"));
+    CHECK_THAT(refused(R"({"sky": {"type": "cie_overcast"}})"),
+               Catch::Contains("/daylight/sky") && Catch::Contains("exactly one scale"));
+    CHECK_THAT(refused(R"({"sky": {"type": "cie_clear", "zenith_luminance": 1000}})"),
+               Catch::Contains("/daylight/sun") && Catch::Contains("brighter toward the sun"));
+    CHECK_THAT(refused("{" + sky + "}", R"({"type": "opening", "transmittance": 1.5})"),
+               Catch::Contains("/materials/hole/transmittance") && Catch::Contains("(0, 1]"));
+    CHECK(refused("{" + sky + "}").empty());
+}
+
+TEST_CASE("daylight: clear glass passes its normal transmittance at 0 degrees and less at grazing angles",
+          "[daylight]") {
+    CHECK(scene::glazingTransmittance(0.8, 1.0) == Approx(0.8).epsilon(1e-12));
+    CHECK(scene::glazingTransmittance(1.0, 0.1) == 1.0);  // an open hole
+    // A single clear pane: 0.85–0.97 of its normal value at 60° (reflection and a longer path), 0 at 90°.
+    const double ratio60 = scene::glazingTransmittance(0.8, 0.5) / 0.8;
+    CHECK(ratio60 > 0.85);
+    CHECK(ratio60 < 0.97);
+    CHECK(scene::glazingTransmittance(0.8, 1e-6) < 0.01);
 }

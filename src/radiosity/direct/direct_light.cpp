@@ -19,6 +19,8 @@ constexpr int kOpeningSamples = 16;
 /// distance (about 30°), at most this many times.
 constexpr double kOpeningPartSpan = 0.5;
 constexpr int kOpeningMaxDepth = 6;
+/// Parts the horizon crosses are split this many times (the line between sky and ground).
+constexpr int kOpeningHorizonDepth = 3;
 
 /// Visibility with nothing in the way (an opening's luminance factor, without rays).
 struct NoOcclusion : Visibility {
@@ -441,11 +443,19 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
     RayBatch<double> shadowRays(vis ? *vis : none, x, n, shadowed);
     // A part: split in four while it spans more than kOpeningPartSpan of its distance
     // from x (near x the luminance and the glazing's τ change across a part faster than
-    // its centroid's direction can say), else it delivers its light.
+    // its centroid's direction can say) or the horizon crosses it, else it delivers its light.
     std::function<void(const std::array<Vec3, 3>&, int)> part = [&](const std::array<Vec3, 3>& t, int depth) {
         const Vec3 centroid = (t[0] + t[1] + t[2]) / 3.0;
         const double span = std::max({glm::length(t[1] - t[0]), glm::length(t[2] - t[1]), glm::length(t[0] - t[2])});
-        if (depth < kOpeningMaxDepth && span > kOpeningPartSpan * glm::length(centroid - x)) {
+        // A part the horizon crosses (sky above, ground below) is split too.
+        double lowest = 1e300, highest = -1e300;
+        for (const Vec3& v : t) {
+            const double h = glm::dot(light.sky->up, v - x);
+            lowest = std::min(lowest, h), highest = std::max(highest, h);
+        }
+        const bool horizon = lowest < 0 && highest > 0;
+        if ((horizon && depth < kOpeningHorizonDepth) ||
+            (depth < kOpeningMaxDepth && span > kOpeningPartSpan * glm::length(centroid - x))) {
             const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
             for (const auto& child : {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
                                       std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})
