@@ -18,7 +18,8 @@ double median(std::vector<double>& v) {
 }
 }  // namespace
 
-std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& results) {
+std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& results,
+                                           std::optional<double> medianExternalIlluminance) {
     std::vector<GridStatistics> out;
     std::vector<std::vector<double>> values, factors;  // per grid
     for (const auto& r : results) {
@@ -57,6 +58,14 @@ std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& resu
             for (double f : factors[k]) sum += f;
             g.dfMean = sum / static_cast<double>(factors[k].size());
             g.dfMedian = median(factors[k]);
+            if (medianExternalIlluminance && *medianExternalIlluminance > 0) {
+                g.dfTarget = 100 * 300 / *medianExternalIlluminance;
+                g.dfTargetMinimum = 100 * 100 / *medianExternalIlluminance;
+                size_t above = 0, aboveMinimum = 0;
+                for (double f : factors[k]) above += f >= *g.dfTarget, aboveMinimum += f >= *g.dfTargetMinimum;
+                g.shareAboveTarget = above / static_cast<double>(factors[k].size());
+                g.shareAboveTargetMinimum = aboveMinimum / static_cast<double>(factors[k].size());
+            }
         }
     }
     return out;
@@ -78,6 +87,12 @@ std::string gridTable(const std::vector<GridStatistics>& grids) {
         if (g.dfMean)
             s += fmt::format("{:<14} {:>9.2f} {:>9.2f} {:>11.2f} {:>8.3f}\n", g.grid, *g.dfMinimum, *g.dfMean,
                              *g.dfMedian, *g.dfMean > 0 ? *g.dfMinimum / *g.dfMean : 0.0);
+    for (const auto& g : grids)
+        if (g.shareAboveTarget)
+            s += fmt::format("EN 17037 method 1, {}: DF ≥ D_T {:.2f} % on {:.0f} % of points (50 % asked), DF ≥ D_TM "
+                             "{:.2f} % on {:.0f} % (95 % asked): the minimum level is {}\n",
+                             g.grid, *g.dfTarget, 100 * *g.shareAboveTarget, *g.dfTargetMinimum,
+                             100 * *g.shareAboveTargetMinimum, g.meetsEn17037Minimum() ? "met" : "not met");
     return s;
 }
 

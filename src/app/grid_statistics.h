@@ -18,6 +18,13 @@ struct GridStatistics {
     double median = 0;                                                       ///< lx
     /// Under a sky without sun: the daylight factors' minimum, mean and median, %.
     std::optional<double> dfMinimum, dfMean, dfMedian;
+    /// EN 17037 method 1 (with the site's median external diffuse illuminance E): the
+    /// targets D_T = 100 · 300 / E and D_TM = 100 · 100 / E (%), and the shares of points
+    /// whose daylight factor reaches them (the minimum level asks 50 % and 95 %).
+    std::optional<double> dfTarget, dfTargetMinimum, shareAboveTarget, shareAboveTargetMinimum;
+    bool meetsEn17037Minimum() const {
+        return shareAboveTarget && *shareAboveTarget >= 0.5 && *shareAboveTargetMinimum >= 0.95;
+    }
     double u0() const { return mean > 0 ? minimum / mean : 0; }              ///< Emin / Eavg
     double minToMax() const { return maximum > 0 ? minimum / maximum : 0; }  ///< Emin / Emax
 };
@@ -26,7 +33,8 @@ struct GridStatistics {
 /// (direct + gathered indirect) of each point, every point weighted alike (the points
 /// are cell centres of equal cells). Points inside a solid are no measurement: counted
 /// apart, not in the figures (a grid with no other point has none: 0).
-std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& results);
+std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& results,
+                                           std::optional<double> medianExternalIlluminance = std::nullopt);
 
 /// An aligned text table for the terminal.
 std::string gridTable(const std::vector<GridStatistics>& grids);

@@ -80,7 +80,8 @@ SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath
 std::optional<LightGroupParts> reportSensors(PipelineRun& run, const std::string& sceneFile, const PipelineOptions& options,
                                              const SensorFiles& f, OutputFiles& files, bool forSavedSolution) {
     for (const auto& w : checkSensorResults(run.sensors)) fmt::print(stderr, "warning: {}\n", w);
-    const auto grids = gridStatistics(run.sensors);
+    const auto grids = gridStatistics(
+        run.sensors, run.scene.daylight ? run.scene.daylight->medianExternalIlluminance : std::nullopt);
     if (!run.sensors.empty()) std::cout << sensorTable(run.sensors) << gridTable(grids);
     if (!f.points.empty()) files.set(f.points, sensorCsv(run.sensors));
     if (!f.grids.empty()) files.set(f.grids, gridCsv(grids));

@@ -83,18 +83,24 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
         if (r.sensor.refIndirect) e["ref_indirect_lx"] = *r.sensor.refIndirect;
         if (r.sensor.refTotal) e["ref_total_lx"] = *r.sensor.refTotal;
         if (!r.excluded.empty()) e["excluded"] = r.excluded;
+        if (r.daylightFactor) e["daylight_factor_pct"] = *r.daylightFactor;
         j["sensors"].push_back(e);
     }
     j["grids"] = json::array();
-    for (const auto& g : gridStatistics(run.sensors))
-        j["grids"].push_back({{"grid", g.grid},
-                              {"points", g.points},
-                              {"emin_lx", g.minimum},
-                              {"eavg_lx", g.mean},
-                              {"emax_lx", g.maximum},
-                              {"u0", g.u0()},
-                              {"emin_emax", g.minToMax()},
-                              {"excluded_points", g.excluded}});
+    const auto& day = run.scene.daylight;
+    for (const auto& g : gridStatistics(run.sensors, day ? day->medianExternalIlluminance : std::nullopt)) {
+        json e = {{"grid", g.grid},          {"points", g.points},   {"emin_lx", g.minimum},
+                  {"eavg_lx", g.mean},       {"emedian_lx", g.median}, {"emax_lx", g.maximum},
+                  {"u0", g.u0()},            {"emin_emax", g.minToMax()}, {"excluded_points", g.excluded}};
+        if (g.dfMean) e["daylight_factor_pct"] = {{"min", *g.dfMinimum}, {"mean", *g.dfMean}, {"median", *g.dfMedian}};
+        if (g.shareAboveTarget)
+            e["en17037_method1"] = {{"d_t_pct", *g.dfTarget},
+                                    {"d_tm_pct", *g.dfTargetMinimum},
+                                    {"share_above_d_t", *g.shareAboveTarget},
+                                    {"share_above_d_tm", *g.shareAboveTargetMinimum},
+                                    {"minimum_level_met", g.meetsEn17037Minimum()}};
+        j["grids"].push_back(e);
+    }
     if (groups) j["light_groups"] = lightGroupJson(run.sensors, *groups);
     return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
            "\n";  // names may come from --set or mesh files

@@ -1,6 +1,7 @@
 #include <app/scene_warnings.h>
 
 #include <app/coincident_surfaces.h>
+#include <app/daylight_warnings.h>
 
 #include <radiosity/radiosity.h>
 #include <raytrace/camera.h>
@@ -134,6 +135,7 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
                                        std::vector<std::string>* inSolid) {
     std::vector<std::string> out = scene.warnings.fileWarnings;
     if (auto w = coincidentSurfacesWarning(scene, mesh)) out.push_back(std::move(*w));
+    for (auto& w : daylightWarnings(scene, embree)) out.push_back(std::move(w));
     const double diagonal = scene.diagonal();
     const double near = std::max(5e-3, 1e-4 * diagonal);  // "buried": covered within a few mm
     Prober prober(mesh, embree, diagonal);

@@ -1,8 +1,7 @@
 #include <app/validate_daylight.h>
 
+#include <radiosity/radiosity.h>
 #include <raytrace/embree_scene.h>
-#include <radiosity/direct/direct_light.h>
-#include <radiosity/mesh/mesher.h>
 #include <scene/daylight/glazing.h>
 #include <scene/daylight/sky.h>
 #include <scene/daylight/sun_position.h>
@@ -54,7 +53,7 @@ struct OpeningScene {
             "daylight": {"up": [0, 0, 1], "north": [0, 1, 0], )" +
                                  daylight + "}}";
         scene = scene::buildScene(scene::parseScene(json, "validate-daylight.json"));
-        mesh = radiosity::premesh(scene, scene.meshing);
+        mesh = radiosity::prepareMesh(scene, {});
         embree = std::make_unique<raytrace::EmbreeScene>(mesh, 1e-5 * scene.diagonal());
         lights = std::make_unique<radiosity::DirectLight>(scene);
     }

@@ -35,9 +35,35 @@ TEST_CASE("grid statistics: minimum, mean, maximum and uniformities of each grid
     CHECK(grids[1].grid == "floor");
     CHECK(grids[1].u0() == Approx(1));
     CHECK(app::gridCsv(grids) ==
-          "grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax,excluded_points\n"
-          "desk,3,200,400,600,0.500000,0.333333,0\nfloor,1,100,100,100,1.000000,1.000000,0\n");
+          "grid,points,emin_lx,eavg_lx,emax_lx,u0,emin_emax,excluded_points,emedian_lx,df_min_pct,df_mean_pct,"
+          "df_median_pct\n"
+          "desk,3,200,400,600,0.500000,0.333333,0,400,,,\nfloor,1,100,100,100,1.000000,1.000000,0,100,,,\n");
     CHECK(app::gridSummaryPath("out/room.csv") == "out/room.grids.csv");
+}
+
+TEST_CASE("grid statistics: daylight factors, their median and EN 17037's method 1", "[app]") {
+    std::vector<app::SensorResult> results;
+    const double factors[] = {0.5, 1.0, 2.0, 3.0};  // %
+    for (int i = 0; i < 4; ++i) {
+        app::SensorResult r;
+        r.sensor.name = "p" + std::to_string(i);
+        r.sensor.grid = "plane";
+        r.value.direct = Rgb(100 * factors[i]);  // lx under a 10 000 lx sky
+        r.daylightFactor = factors[i];
+        results.push_back(r);
+    }
+    // E_v,d,med 15 000 lx: D_T = 2 %, D_TM = 0.667 %: 2 of 4 points reach D_T, 3 of 4 D_TM.
+    const auto grids = app::gridStatistics(results, 15000.0);
+    REQUIRE(grids.size() == 1);
+    CHECK(*grids[0].dfMinimum == Approx(0.5));
+    CHECK(*grids[0].dfMean == Approx(1.625));
+    CHECK(*grids[0].dfMedian == Approx(1.5));
+    CHECK(grids[0].median == Approx(150));
+    CHECK(*grids[0].dfTarget == Approx(2.0));
+    CHECK(*grids[0].shareAboveTarget == Approx(0.5));
+    CHECK(*grids[0].shareAboveTargetMinimum == Approx(0.75));
+    CHECK_FALSE(grids[0].meetsEn17037Minimum());  // 95 % must reach D_TM
+    CHECK_THAT(app::gridTable(grids), Catch::Contains("the minimum level is not met"));
 }
 
 TEST_CASE("grid statistics leave out points inside solids and count them", "[app][grids]") {

@@ -27,6 +27,9 @@ struct Daylight {
     Vec3 sunDirection{0, 0, 1};            ///< toward the sun, world space
     double sunNormalIlluminance = 0;       ///< E_n, lx on a plane facing the sun (0: no direct sun)
     double groundReflectance = 0.2;        ///< of the ground below the horizon
+    /// EN 17037 method 1: the site's median external diffuse illuminance E_v,d,med, lx
+    /// (given: grids report the shares of points above D_T = 300 / E and D_TM = 100 / E).
+    std::optional<double> medianExternalIlluminance;
 
     /// A world direction in the sky frame (x east, y north, z up).
     Vec3 toLocal(const Vec3& w) const { return {glm::dot(w, east), glm::dot(w, north), glm::dot(w, up)}; }

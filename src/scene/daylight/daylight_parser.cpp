@@ -102,6 +102,8 @@ Daylight parseDaylight(JsonObject o) {
         if (d.groundReflectance >= 1)
             o.error("ground_reflectance", fmt::format("expected a reflectance in [0, 1), got {}", d.groundReflectance));
     }
+    if (o.has("median_external_illuminance"))
+        d.medianExternalIlluminance = o.positive("median_external_illuminance", 10000);
     o.finish();
     if (o.context().errors > 0) return d;
     SkyDistribution probe(d.kind, d.cieType, 0.0);
