@@ -19,8 +19,6 @@ constexpr int kOpeningSamples = 16;
 /// distance (about 30°), at most this many times.
 constexpr double kOpeningPartSpan = 0.5;
 constexpr int kOpeningMaxDepth = 6;
-/// Parts the horizon crosses are split this many times (the line between sky and ground).
-constexpr int kOpeningHorizonDepth = 3;
 
 /// Visibility with nothing in the way (an opening's luminance factor, without rays).
 struct NoOcclusion : Visibility {
@@ -441,42 +439,70 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
     double unshadowed = 0, shadowed = 0;
     const NoOcclusion none;
     RayBatch<double> shadowRays(vis ? *vis : none, x, n, shadowed);
-    // A part: split in four while it spans more than kOpeningPartSpan of its distance
-    // from x (near x the luminance and the glazing's τ change across a part faster than
-    // its centroid's direction can say) or the horizon crosses it, else it delivers its light.
+    // A piece of the opening (a triangle, or a part of one the horizon cut off) delivers
+    // π F L(ω) τ along the direction ω to its centroid, F its exact form factor.
+    auto deliver = [&](const Vec3* piece, int count) {
+        const double f = formFactorToPolygon(x, n, piece, count, light.normal);
+        if (f <= 0) return;
+        Vec3 centroid(0.0);
+        for (int k = 0; k < count; ++k) centroid += piece[k];
+        centroid /= static_cast<double>(count);
+        const auto along = unitDirection(centroid - x);
+        if (!along) return;
+        const double e = kPi * f * light.skyLuminanceAlong(*along);  // lx
+        unshadowed += e;
+        if (!vis) return;
+        // The shadow ray through a point of the piece (jittered when rng: in one of its fan
+        // triangles, chosen by area), on beyond the scene.
+        Vec3 y = centroid;
+        if (rng) {
+            int k = 1;
+            if (count == 4) {
+                const double a1 = glm::length(glm::cross(piece[1] - piece[0], piece[2] - piece[0]));
+                const double a2 = glm::length(glm::cross(piece[2] - piece[0], piece[3] - piece[0]));
+                if (rng->nextDouble() * (a1 + a2) > a1) k = 2;
+            }
+            double u = rng->nextDouble(), v = rng->nextDouble();
+            if (u + v > 1) u = 1 - u, v = 1 - v;
+            y = piece[0] + u * (piece[k] - piece[0]) + v * (piece[k + 1] - piece[0]);
+        }
+        if (const auto through = unitDirection(y - x)) shadowRays.add(y + m_beyondScene * *through, e);
+    };
+    // A part: split in four while it spans more than kOpeningPartSpan of its distance from
+    // x (near x the luminance and the glazing's τ change across a part faster than its
+    // centroid's direction can say); a part the horizon crosses is cut there, so the sky
+    // above and the ground below each get their own piece.
     std::function<void(const std::array<Vec3, 3>&, int)> part = [&](const std::array<Vec3, 3>& t, int depth) {
         const Vec3 centroid = (t[0] + t[1] + t[2]) / 3.0;
         const double span = std::max({glm::length(t[1] - t[0]), glm::length(t[2] - t[1]), glm::length(t[0] - t[2])});
-        // A part the horizon crosses (sky above, ground below) is split too.
-        double lowest = 1e300, highest = -1e300;
-        for (const Vec3& v : t) {
-            const double h = glm::dot(light.sky->up, v - x);
-            lowest = std::min(lowest, h), highest = std::max(highest, h);
-        }
-        const bool horizon = lowest < 0 && highest > 0;
-        if ((horizon && depth < kOpeningHorizonDepth) ||
-            (depth < kOpeningMaxDepth && span > kOpeningPartSpan * glm::length(centroid - x))) {
+        if (depth < kOpeningMaxDepth && span > kOpeningPartSpan * glm::length(centroid - x)) {
             const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
             for (const auto& child : {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
                                       std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})
                 part(child, depth + 1);
             return;
         }
-        const double f = formFactorToPolygon(x, n, t.data(), 3, light.normal);
-        if (f <= 0) return;
-        const auto along = unitDirection(centroid - x);
-        if (!along) return;
-        const double e = kPi * f * light.skyLuminanceAlong(*along);  // lx
-        unshadowed += e;
-        if (!vis) return;
-        // The shadow ray through a point of the part (jittered when rng), on beyond the scene.
-        Vec3 y = centroid;
-        if (rng) {
-            double u = rng->nextDouble(), v = rng->nextDouble();
-            if (u + v > 1) u = 1 - u, v = 1 - v;
-            y = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+        double h[3];
+        for (int k = 0; k < 3; ++k) h[k] = glm::dot(light.sky->up, t[k] - x);  // m above x's horizon
+        if (std::min({h[0], h[1], h[2]}) >= 0 || std::max({h[0], h[1], h[2]}) <= 0) {
+            deliver(t.data(), 3);
+            return;
         }
-        if (const auto through = unitDirection(y - x)) shadowRays.add(y + m_beyondScene * *through, e);
+        // Cut at the horizon: the corners on each side, and the two crossings.
+        Vec3 above[4], below[4];
+        int na = 0, nb = 0;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 &a = t[k], &b = t[(k + 1) % 3];
+            const double ha = h[k], hb = h[(k + 1) % 3];
+            if (ha >= 0) above[na++] = a;
+            if (ha < 0) below[nb++] = a;
+            if ((ha < 0) != (hb < 0)) {
+                const Vec3 cut = a + (ha / (ha - hb)) * (b - a);
+                above[na++] = cut, below[nb++] = cut;
+            }
+        }
+        deliver(above, na);
+        deliver(below, nb);
     };
     for (const auto& t : light.triangles) {
         const Vec3 e1 = (t[1] - t[0]) / static_cast<double>(m), e2 = (t[2] - t[0]) / static_cast<double>(m);
