@@ -19,6 +19,9 @@ constexpr int kOpeningSamples = 16;
 /// distance (about 30°), at most this many times.
 constexpr double kOpeningPartSpan = 0.5;
 constexpr int kOpeningMaxDepth = 6;
+/// A piece that spans more than this fraction of its distance gets its exact form factor;
+/// smaller ones their point form factor, scaled so that all of them add up to the exact F.
+constexpr double kExactPieceSpan = 0.5;
 
 /// Visibility with nothing in the way (an opening's luminance factor, without rays).
 struct NoOcclusion : Visibility {
@@ -436,21 +439,46 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
     samples = std::max(samples, kOpeningSamples);
     const int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples) /
                                                                     static_cast<double>(light.triangles.size())))));
-    double unshadowed = 0, shadowed = 0;
+    // Near pieces (spanning more than kExactPieceSpan of their distance) with their exact
+    // form factors F_c: lx. Far ones share what the near ones leave of the opening's exact F,
+    // in proportion to their point form factors w_c = A cosθ_x cosθ_y / (π r²): Σ w_c L_c V_c,
+    // Σ w_c L_c and Σ w_c, in cd/m² (and sr).
+    double unshadowed = 0, shadowed = 0, nearF = 0;
+    double farWeights = 0, farOpen = 0, farShadowed = 0;
     const NoOcclusion none;
     RayBatch<double> shadowRays(vis ? *vis : none, x, n, shadowed);
+    RayBatch<double> farRays(vis ? *vis : none, x, n, farShadowed);
     // A piece of the opening (a triangle, or a part of one the horizon cut off) delivers
-    // π F L(ω) τ along the direction ω to its centroid, F its exact form factor.
+    // π F L(ω) τ along the direction ω to its centroid.
     auto deliver = [&](const Vec3* piece, int count) {
-        const double f = formFactorToPolygon(x, n, piece, count, light.normal);
-        if (f <= 0) return;
         Vec3 centroid(0.0);
         for (int k = 0; k < count; ++k) centroid += piece[k];
         centroid /= static_cast<double>(count);
-        const auto along = unitDirection(centroid - x);
+        const Vec3 d = centroid - x;
+        const double r2 = glm::dot(d, d);
+        double span = 0;
+        for (int k = 0; k < count; ++k) span = std::max(span, glm::length(piece[k] - piece[(k + 1) % count]));
+        const bool far = span * span < kExactPieceSpan * kExactPieceSpan * r2;
+        double f = 0;
+        if (far) {
+            Vec3 area(0.0);  // the piece's vector area
+            for (int k = 1; k + 1 < count; ++k) area += 0.5 * glm::cross(piece[k] - piece[0], piece[k + 1] - piece[0]);
+            f = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(area, d)) / (kPi * r2 * r2);
+        } else {
+            f = formFactorToPolygon(x, n, piece, count, light.normal);
+        }
+        if (f <= 0) return;
+        const auto along = unitDirection(d);
         if (!along) return;
-        const double e = kPi * f * light.skyLuminanceAlong(*along);  // lx
-        unshadowed += e;
+        const double l = light.skyLuminanceAlong(*along);  // cd/m²
+        if (far) {
+            farWeights += f;
+            farOpen += f * l;
+        } else {
+            nearF += f;
+            unshadowed += kPi * f * l;
+        }
+        const double e = far ? f * l : kPi * f * l;
         if (!vis) return;
         // The shadow ray through a point of the piece (jittered when rng: in one of its fan
         // triangles, chosen by area), on beyond the scene.
@@ -466,7 +494,7 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
             if (u + v > 1) u = 1 - u, v = 1 - v;
             y = piece[0] + u * (piece[k] - piece[0]) + v * (piece[k + 1] - piece[0]);
         }
-        if (const auto through = unitDirection(y - x)) shadowRays.add(y + m_beyondScene * *through, e);
+        if (const auto through = unitDirection(y - x)) (far ? farRays : shadowRays).add(y + m_beyondScene * *through, e);
     };
     // A part: split in four while it spans more than kOpeningPartSpan of its distance from
     // x (near x the luminance and the glazing's τ change across a part faster than its
@@ -514,6 +542,13 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
             }
     }
     shadowRays.flush();
+    farRays.flush();
+    if (farWeights > 0) {
+        // The far pieces' share of the exact F, π (F − Σ near F_c) Σ w L (V) / Σ w.
+        const double rest = std::max(0.0, areaLightFormFactor(light, x, n) - nearF);
+        unshadowed += kPi * rest * farOpen / farWeights;
+        shadowed += kPi * rest * farShadowed / farWeights;
+    }
     if (open) *open = unshadowed;
     return vis ? shadowed : unshadowed;
 }
