@@ -4,9 +4,8 @@ and the sun coming in through its four windows.
 
 The windows are holes in the walls (the model's wall meshes, found by rasterising them)
 at the back of deep bays whose frames reach 0.51 m beyond the wall x = 0 and 0.59 m beyond
-the wall z = 0. Each opening is a quad just beyond the outermost frame, covering its bay;
-where it is larger than the hole, the wall and the frames shade the rest of it, as they
-do the sky. Axes: y up; north is +x, so the arched windows in the wall x = 0 face south
+the wall z = 0. Each opening is a quad just beyond the outermost frame, spanning its bay;
+the frames and mullions in it shade the sky and the sun as they do in the model. Axes: y up; north is +x, so the arched windows in the wall x = 0 face south
 and the two in the wall z = 0 face east. The sky: the CIE clear sky with the sun of
 Munich (48.14 N, 11.58 E) on 21 March at 15:00 (UTC+1); rayrad's --set changes it (see
 README.md)."""
@@ -18,15 +17,16 @@ for name in ("emitter1", "emitter2"):
     scene["materials"][name] = {"type": "diffuse", "reflectance": 0.05}
 
 scene["materials"]["window"] = {"type": "opening"}
-X_OUT, Z_OUT = -0.53, 0.61  # just beyond the frames of the bays
-Y0, Y1 = 0.0, 2.6
+X_OUT, Z_OUT = -0.514, 0.594  # just beyond the frames of the bays (their meshes reach -0.513 and 0.593)
+Y0 = 0.0
 openings = [
-    # Wall x = 0 (arched windows), facing +x into the room: corners CCW seen from +x.
-    [[X_OUT, Y0, -1.92], [X_OUT, Y0, -3.12], [X_OUT, Y1, -3.12], [X_OUT, Y1, -1.92]],
-    [[X_OUT, Y0, 0.02], [X_OUT, Y0, -1.18], [X_OUT, Y1, -1.18], [X_OUT, Y1, 0.02]],
-    # Wall z = 0 (rectangular windows), facing -z into the room: CCW seen from -z.
-    [[1.36, Y0, Z_OUT], [0.16, Y0, Z_OUT], [0.16, Y1, Z_OUT], [1.36, Y1, Z_OUT]],
-    [[3.60, Y0, Z_OUT], [2.40, Y0, Z_OUT], [2.40, Y1, Z_OUT], [3.60, Y1, Z_OUT]],
+    # Wall x = 0 (arched windows), facing +x into the room: corners CCW seen from +x. Each
+    # spans its bay's frame (meshes 038 and 055) across and up to its top.
+    [[X_OUT, Y0, -1.943], [X_OUT, Y0, -3.101], [X_OUT, 2.555, -3.101], [X_OUT, 2.555, -1.943]],
+    [[X_OUT, Y0, 0.002], [X_OUT, Y0, -1.156], [X_OUT, 2.555, -1.156], [X_OUT, 2.555, 0.002]],
+    # Wall z = 0 (rectangular windows, frames 029 and 039), facing -z into the room: CCW seen from -z.
+    [[1.341, Y0, Z_OUT], [0.183, Y0, Z_OUT], [0.183, 2.562, Z_OUT], [1.341, 2.562, Z_OUT]],
+    [[3.574, Y0, Z_OUT], [2.426, Y0, Z_OUT], [2.426, 2.562, Z_OUT], [3.574, 2.562, Z_OUT]],
 ]
 for v in openings:
     scene["objects"].append({"type": "quad", "material": "window", "vertices": v})

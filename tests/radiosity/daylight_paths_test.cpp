@@ -1,6 +1,7 @@
 // The side-lit office under the CIE overcast sky against a small Monte Carlo path tracer
 // written here: daylight factors at three points on the room's axis.
 #include <app/pipeline.h>
+#include <radiosity/radiosity.h>
 #include <scene/daylight/glazing.h>
 #include <scene/polygon.h>
 #include <scene/scene.h>
@@ -125,6 +126,11 @@ TEST_CASE("daylight: the office's daylight factors against a path tracer", "[day
     options.quiet = true;
     app::PipelineRun run = app::runPipeline(file, options);
     REQUIRE(run.sensors.size() >= 3);
+    // The account closes: what came in = absorbed + left again (+ unshot).
+    const auto balance = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution,
+                                                  run.lighting.lights->emittedFlux());
+    CHECK(std::abs(balance.relativeError()) < 0.01);
+    CHECK(balance.leftThroughOpenings > 0);
     for (size_t i = 0; i < 3; ++i) {
         const auto& s = run.sensors[i];
         const double reference = 100 * office.illuminance(s.sensor.position, s.sensor.normal, 200000, 7 + i) /

@@ -155,11 +155,57 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
     }
 }
 
+void DirectLight::measureEntering(const Visibility& vis) {
+    if (m_openings.empty()) return;
+    // Per triangle of an opening, from 8 × 8 points on it: the share of the sky's light
+    // (L τ, 16 × 32 cosine-distributed directions outward) whose ray is clear, times the
+    // unobstructed sky's exact Φ; and the share of the points the sun reaches, times its Φ.
+    constexpr int kPoints = 8, kRings = 16, kSectors = 32;
+    double flux = 0;
+    for (size_t i : m_openings) {
+        const AreaLight& o = m_areaLights[i];
+        const Vec3 out = -o.normal;
+        const auto [t1, t2] = tangentFrame(out);
+        const double cosSun = glm::dot(m_daylight->sunDirection, out);
+        const double sunIlluminance =
+            m_sun >= 0 && cosSun > 0
+                ? m_daylight->sunNormalIlluminance * scene::glazingTransmittance(o.transmittance, cosSun) * cosSun
+                : 0.0;  // lx on the opening, unobstructed
+        const double skyIlluminance = kPi * o.luminance.g;  // lx, the unobstructed sky and ground through it
+        for (size_t t = 0; t < o.triangles.size(); ++t) {
+            const auto& tri = o.triangles[t];
+            double seen = 0, all = 0;
+            int sunlit = 0;
+            for (int a = 0; a < kPoints; ++a)
+                for (int b = 0; b < kPoints; ++b) {
+                    double u = (a + 0.5) / kPoints, v = (b + 0.5) / kPoints;
+                    if (u + v > 1) u = 1 - u, v = 1 - v;
+                    const Vec3 y = tri[0] + u * (tri[1] - tri[0]) + v * (tri[2] - tri[0]);
+                    for (int r = 0; r < kRings; ++r)
+                        for (int k = 0; k < kSectors; ++k) {
+                            const double q = (r + 0.5) / kRings, phi = 2 * kPi * (k + 0.5) / kSectors;
+                            const double c = std::sqrt(1 - q), sn = std::sqrt(q);
+                            const Vec3 w = c * out + sn * (std::cos(phi) * t1 + std::sin(phi) * t2);
+                            const double l = m_daylight->luminance(w) * scene::glazingTransmittance(o.transmittance, c);
+                            all += l;
+                            if (vis.visible(y, y + m_beyondScene * w)) seen += l;
+                        }
+                    if (sunIlluminance > 0 && vis.visible(y, y + m_beyondScene * m_daylight->sunDirection)) ++sunlit;
+                }
+            const double share = all > 0 ? seen / all : 0.0;
+            flux += o.triangleAreas[t] *
+                    (skyIlluminance * share + sunIlluminance * sunlit / static_cast<double>(kPoints * kPoints));
+        }
+    }
+    m_enteringMeasured = flux;
+}
+
 double DirectLight::emittedFlux() const {
     double flux = 0;
     for (size_t k = 0; k < m_pointLights.size(); ++k) {
         const scene::PointLight& l = m_pointLights[k];
         if (static_cast<int>(k) == m_sun) {
+            if (m_enteringMeasured) continue;  // in the measured flux
             // The sun's flux: what it sends in through the openings, E_n τ(θ) cosθ A.
             for (size_t i : m_openings) {
                 const AreaLight& o = m_areaLights[i];
@@ -185,7 +231,9 @@ double DirectLight::emittedFlux() const {
             flux += 2 * kPi * sum * kPi / n;
         }
     }
-    for (const auto& a : m_areaLights) flux += kPi * luminance(a.luminance) * a.area;  // Φ = π L A
+    for (const auto& a : m_areaLights)
+        if (!a.sky || !m_enteringMeasured) flux += kPi * luminance(a.luminance) * a.area;  // Φ = π L A
+    if (m_enteringMeasured) flux += *m_enteringMeasured;
     return flux;
 }
 

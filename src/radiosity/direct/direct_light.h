@@ -169,6 +169,12 @@ class DirectLight {
     /// Total flux in lm emitted by all primary lights (luminance-weighted); for daylight,
     /// what enters through the openings from the unobstructed sky, ground and sun.
     double emittedFlux() const;
+    /// Measures what actually comes in through the openings, with the scene's geometry
+    /// outside them (frames, overhangs, the wall around a hole smaller than the opening):
+    /// per opening, rays outward from 8 × 8 points on each of its triangles in 16 × 32
+    /// cosine-distributed directions (and toward the sun), Φ = A ∫ L τ cosθ V dω. From then
+    /// on emittedFlux() counts it instead of the unobstructed sky's.
+    void measureEntering(const Visibility& vis);
     /// The sun as a point source (its index), or −1 without direct sun.
     int sunSource() const { return m_sun; }
     /// The product of the glazings' transmittances τ(θ) the ray from x along the unit
@@ -241,6 +247,7 @@ class DirectLight {
     std::shared_ptr<const scene::Daylight> m_daylight;  ///< the sky the openings point to
     std::vector<size_t> m_openings;                 ///< the openings' indices in m_areaLights
     double m_beyondScene = 0;                       ///< m: a distance that leaves the scene from anywhere in it
+    std::optional<double> m_enteringMeasured;       ///< lm through the openings, measured (sky, ground and sun)
     std::vector<scene::Mirror> m_mirrors;
     bool m_convexMirrors = true;  ///< every mirror polygon convex: images are clipped exactly
     std::vector<MirrorImage> m_images;
