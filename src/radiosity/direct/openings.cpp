@@ -1,0 +1,261 @@
+// Daylight through openings: an opening's light at a receiver, part by part; what comes in
+// through the openings; the glazing the sun and the ray tracer's rays cross.
+#include <radiosity/direct/direct_light.h>
+
+#include <core/ray_batch.h>
+#include <radiosity/form_factors/form_factor.h>
+#include <scene/daylight/glazing.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace rayrad::radiosity {
+
+namespace {
+/// An opening is cut into at least this many parts: the sky's luminance changes across it.
+constexpr int kOpeningSamples = 16;
+/// Near the receiver its parts are split until each spans at most this fraction of its
+/// distance (about 30°), at most this many times.
+constexpr double kOpeningPartSpan = 0.5;
+constexpr int kOpeningMaxDepth = 6;
+/// A piece that spans more than this fraction of its distance gets its exact form factor;
+/// smaller ones their point form factor, scaled so that all of them add up to the exact F.
+constexpr double kExactPieceSpan = 0.5;
+
+/// Visibility with nothing in the way (an opening's luminance factor, without rays).
+struct NoOcclusion : Visibility {
+    bool visible(const Vec3&, const Vec3&) const override { return true; }
+};
+
+}  // namespace
+
+double AreaLight::skyLuminanceAlong(const Vec3& w) const {
+    const double cosTheta = -glm::dot(w, normal);  // the opening's normal faces the receiver
+    return sky->luminance(w) * scene::glazingTransmittance(transmittance, cosTheta);
+}
+
+double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance, bool withSun) {
+    // Midpoint rule over the hemisphere of directions w leaving the room (w · inward < 0),
+    // in (cosθ, φ) about −inward: dω = d(cosθ) dφ.
+    const Vec3 out = -inward;
+    const auto [t, b] = tangentFrame(out);
+    constexpr int kRings = 256, kSectors = 512;
+    double sum = 0;
+    for (int i = 0; i < kRings; ++i) {
+        const double c = (i + 0.5) / kRings, s = std::sqrt(1 - c * c);
+        const double tau = scene::glazingTransmittance(transmittance, c);
+        double ring = 0;
+        for (int j = 0; j < kSectors; ++j) {
+            const double phi = (j + 0.5) * 2 * kPi / kSectors;
+            ring += daylight.luminance(c * out + s * (std::cos(phi) * t + std::sin(phi) * b));
+        }
+        sum += ring * tau * c;
+    }
+    double e = sum * (1.0 / kRings) * (2 * kPi / kSectors);
+    const double cosSun = glm::dot(daylight.sunDirection, out);
+    if (withSun && daylight.hasDirectSun() && cosSun > 0)
+        e += daylight.sunNormalIlluminance * scene::glazingTransmittance(transmittance, cosSun) * cosSun;
+    return e;
+}
+
+void DirectLight::measureEntering(const Visibility& vis) {
+    if (m_openings.empty()) return;
+    // Per triangle of an opening, from 8 × 8 points on it: the share of the sky's light
+    // (L τ, 16 × 32 cosine-distributed directions outward) whose ray is clear, times the
+    // unobstructed sky's exact Φ; and the share of the points the sun reaches, times its Φ.
+    constexpr int kPoints = 8, kRings = 16, kSectors = 32;
+    double flux = 0;
+    for (size_t i : m_openings) {
+        const AreaLight& o = m_areaLights[i];
+        const Vec3 out = -o.normal;
+        const auto [t1, t2] = tangentFrame(out);
+        const double cosSun = glm::dot(m_daylight->sunDirection, out);
+        const double sunIlluminance =
+            m_sun >= 0 && cosSun > 0
+                ? m_daylight->sunNormalIlluminance * scene::glazingTransmittance(o.transmittance, cosSun) * cosSun
+                : 0.0;  // lx on the opening, unobstructed
+        const double skyIlluminance = kPi * o.luminance.g;  // lx, the unobstructed sky and ground through it
+        for (size_t t = 0; t < o.triangles.size(); ++t) {
+            const auto& tri = o.triangles[t];
+            double seen = 0, all = 0;
+            int sunlit = 0;
+            for (int a = 0; a < kPoints; ++a)
+                for (int b = 0; b < kPoints; ++b) {
+                    double u = (a + 0.5) / kPoints, v = (b + 0.5) / kPoints;
+                    if (u + v > 1) u = 1 - u, v = 1 - v;
+                    const Vec3 y = tri[0] + u * (tri[1] - tri[0]) + v * (tri[2] - tri[0]);
+                    for (int r = 0; r < kRings; ++r)
+                        for (int k = 0; k < kSectors; ++k) {
+                            const double q = (r + 0.5) / kRings, phi = 2 * kPi * (k + 0.5) / kSectors;
+                            const double c = std::sqrt(1 - q), sn = std::sqrt(q);
+                            const Vec3 w = c * out + sn * (std::cos(phi) * t1 + std::sin(phi) * t2);
+                            const double l = m_daylight->luminance(w) * scene::glazingTransmittance(o.transmittance, c);
+                            all += l;
+                            if (vis.visible(y, y + m_beyondScene * w)) seen += l;
+                        }
+                    if (sunIlluminance > 0 && vis.visible(y, y + m_beyondScene * m_daylight->sunDirection)) ++sunlit;
+                }
+            const double share = all > 0 ? seen / all : 0.0;
+            flux += o.triangleAreas[t] *
+                    (skyIlluminance * share + sunIlluminance * sunlit / static_cast<double>(kPoints * kPoints));
+        }
+    }
+    m_enteringMeasured = flux;
+}
+
+double DirectLight::glazingFor(const scene::PointLight& l, const Vec3& x) const {
+    if (m_sun < 0 || &l != &m_pointLights[m_sun]) return 1.0;
+    return openingTransmittance(x, m_daylight->sunDirection, m_beyondScene);
+}
+
+int DirectLight::openingsCrossed(const Vec3& x, const Vec3& w, double maxDistance, double* tau) const {
+    int crossed = 0;
+    for (size_t i : m_openings) {
+        const AreaLight& o = m_areaLights[i];
+        const double c = glm::dot(w, o.normal);
+        if (c == 0) continue;
+        const double t = glm::dot(o.centre - x, o.normal) / c;  // the ray meets the opening's plane
+        if (!(t > 0 && t < maxDistance)) continue;
+        const Vec3 p = x + t * w;
+        for (const auto& tri : o.triangles)
+            if (const Vec3 b = barycentric(tri[0], tri[1], tri[2], p); b.x >= 0 && b.y >= 0 && b.z >= 0) {
+                if (tau) *tau *= scene::glazingTransmittance(o.transmittance, std::abs(c));
+                ++crossed;
+                break;
+            }
+    }
+    return crossed;
+}
+
+double DirectLight::openingFormFactor(size_t k, const Vec3& x, const Vec3& n, const Visibility& vis,
+                                      int samples) const {
+    AreaLight outline = m_areaLights[m_openings[k]];
+    outline.sky = nullptr;  // its outline only
+    const double f = areaLightFormFactor(outline, x, n);
+    return f > 0 ? f * visibleFraction(outline, x, n, &vis, samples, nullptr) : 0.0;
+}
+
+double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis,
+                                   int samples, Random* rng, double* open) const {
+    // Each triangle of the outline cut into m² equal parts (a barycentric grid); part c
+    // sees the sky along the direction to its centroid ω_c, and delivers π F_c L(ω_c) τ(θ_c),
+    // F_c its own form factor by Lambert's formula (exact however near x is).
+    samples = std::max(samples, kOpeningSamples);
+    const int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples) /
+                                                                    static_cast<double>(light.triangles.size())))));
+    // Near pieces (spanning more than kExactPieceSpan of their distance) with their exact
+    // form factors F_c: lx. Far ones share what the near ones leave of the opening's exact F,
+    // in proportion to their point form factors w_c = A cosθ_x cosθ_y / (π r²): Σ w_c L_c V_c,
+    // Σ w_c L_c and Σ w_c, in cd/m² (and sr).
+    double unshadowed = 0, shadowed = 0, nearF = 0;
+    double farWeights = 0, farOpen = 0, farShadowed = 0;
+    const NoOcclusion none;
+    RayBatch<double> shadowRays(vis ? *vis : none, x, n, shadowed);
+    RayBatch<double> farRays(vis ? *vis : none, x, n, farShadowed);
+    // A piece of the opening (a triangle, or a part of one the horizon cut off) delivers
+    // π F L(ω) τ along the direction ω to its centroid.
+    auto deliver = [&](const Vec3* piece, int count) {
+        Vec3 centroid(0.0);
+        for (int k = 0; k < count; ++k) centroid += piece[k];
+        centroid /= static_cast<double>(count);
+        const Vec3 d = centroid - x;
+        const double r2 = glm::dot(d, d);
+        double span = 0;
+        for (int k = 0; k < count; ++k) span = std::max(span, glm::length(piece[k] - piece[(k + 1) % count]));
+        const bool far = span * span < kExactPieceSpan * kExactPieceSpan * r2;
+        double f = 0;
+        if (far) {
+            Vec3 area(0.0);  // the piece's vector area
+            for (int k = 1; k + 1 < count; ++k) area += 0.5 * glm::cross(piece[k] - piece[0], piece[k + 1] - piece[0]);
+            f = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(area, d)) / (kPi * r2 * r2);
+        } else {
+            f = formFactorToPolygon(x, n, piece, count, light.normal);
+        }
+        if (f <= 0) return;
+        const auto along = unitDirection(d);
+        if (!along) return;
+        const double l = light.skyLuminanceAlong(*along);  // cd/m²
+        if (far) {
+            farWeights += f;
+            farOpen += f * l;
+        } else {
+            nearF += f;
+            unshadowed += kPi * f * l;
+        }
+        const double e = far ? f * l : kPi * f * l;
+        if (!vis) return;
+        // The shadow ray through a point of the piece (jittered when rng: in one of its fan
+        // triangles, chosen by area), on beyond the scene.
+        Vec3 y = centroid;
+        if (rng) {
+            int k = 1;
+            if (count == 4) {
+                const double a1 = glm::length(glm::cross(piece[1] - piece[0], piece[2] - piece[0]));
+                const double a2 = glm::length(glm::cross(piece[2] - piece[0], piece[3] - piece[0]));
+                if (rng->nextDouble() * (a1 + a2) > a1) k = 2;
+            }
+            double u = rng->nextDouble(), v = rng->nextDouble();
+            if (u + v > 1) u = 1 - u, v = 1 - v;
+            y = piece[0] + u * (piece[k] - piece[0]) + v * (piece[k + 1] - piece[0]);
+        }
+        if (const auto through = unitDirection(y - x)) (far ? farRays : shadowRays).add(y + m_beyondScene * *through, e);
+    };
+    // A part: split in four while it spans more than kOpeningPartSpan of its distance from
+    // x (near x the luminance and the glazing's τ change across a part faster than its
+    // centroid's direction can say); a part the horizon crosses is cut there, so the sky
+    // above and the ground below each get their own piece.
+    std::function<void(const std::array<Vec3, 3>&, int)> part = [&](const std::array<Vec3, 3>& t, int depth) {
+        const Vec3 centroid = (t[0] + t[1] + t[2]) / 3.0;
+        const double span = std::max({glm::length(t[1] - t[0]), glm::length(t[2] - t[1]), glm::length(t[0] - t[2])});
+        if (depth < kOpeningMaxDepth && span > kOpeningPartSpan * glm::length(centroid - x)) {
+            const Vec3 m01 = 0.5 * (t[0] + t[1]), m12 = 0.5 * (t[1] + t[2]), m20 = 0.5 * (t[2] + t[0]);
+            for (const auto& child : {std::array<Vec3, 3>{t[0], m01, m20}, std::array<Vec3, 3>{m01, t[1], m12},
+                                      std::array<Vec3, 3>{m20, m12, t[2]}, std::array<Vec3, 3>{m01, m12, m20}})
+                part(child, depth + 1);
+            return;
+        }
+        double h[3];
+        for (int k = 0; k < 3; ++k) h[k] = glm::dot(light.sky->up, t[k] - x);  // m above x's horizon
+        if (std::min({h[0], h[1], h[2]}) >= 0 || std::max({h[0], h[1], h[2]}) <= 0) {
+            deliver(t.data(), 3);
+            return;
+        }
+        // Cut at the horizon: the corners on each side, and the two crossings.
+        Vec3 above[4], below[4];
+        int na = 0, nb = 0;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 &a = t[k], &b = t[(k + 1) % 3];
+            const double ha = h[k], hb = h[(k + 1) % 3];
+            if (ha >= 0) above[na++] = a;
+            if (ha < 0) below[nb++] = a;
+            if ((ha < 0) != (hb < 0)) {
+                const Vec3 cut = a + (ha / (ha - hb)) * (b - a);
+                above[na++] = cut, below[nb++] = cut;
+            }
+        }
+        deliver(above, na);
+        deliver(below, nb);
+    };
+    for (const auto& t : light.triangles) {
+        const Vec3 e1 = (t[1] - t[0]) / static_cast<double>(m), e2 = (t[2] - t[0]) / static_cast<double>(m);
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; i + j < m; ++j) {
+                const Vec3 a = t[0] + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
+                part({a, a + e1, a + e2}, 0);
+                if (i + j + 1 < m) part({a + e1, a + e1 + e2, a + e2}, 0);  // the grid's downward triangles
+            }
+    }
+    shadowRays.flush();
+    farRays.flush();
+    if (farWeights > 0) {
+        // The far pieces' share of the exact F, π (F − Σ near F_c) Σ w L (V) / Σ w.
+        const double rest = std::max(0.0, areaLightFormFactor(light, x, n) - nearF);
+        unshadowed += kPi * rest * farOpen / farWeights;
+        shadowed += kPi * rest * farShadowed / farWeights;
+    }
+    if (open) *open = unshadowed;
+    return vis ? shadowed : unshadowed;
+}
+
+}  // namespace rayrad::radiosity
