@@ -66,11 +66,12 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             }
             // An opening: the sky behind it, seen from its front; its mean luminance
             // Φ_in / (π A) from what the unobstructed sky and ground send in.
-            const double mean = enteringIlluminance(*m_daylight, normal, mat.transmittance, false) / kPi;
+            const double mean = enteringIlluminance(*m_daylight, normal, mat.transmittance) / kPi;
             if (!(mean > 0)) continue;
             AreaLight light = makeAreaLight(std::move(vertices), normal, Rgb(mean));
             light.sky = m_daylight.get();
             light.transmittance = mat.transmittance;
+            m_anyGlazing |= mat.transmittance < 1;
             m_openings.push_back(m_areaLights.size());
             m_areaLights.push_back(std::move(light));
         }

@@ -41,10 +41,9 @@ struct AreaLight {
 AreaLight makeAreaLight(std::vector<Vec3> vertices, const Vec3& normal, const Rgb& luminance);
 
 /// The illuminance (lx) that comes in through an opening of unit normal `inward` (facing
-/// the room) from the unobstructed sky, ground and sun: ∫ L(ω) τ(θ) cosθ dω over the
-/// outside half of the sphere, plus E_n τ(θ_s) cosθ_s. The opening's flux is this × its area.
-double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance,
-                           bool withSun = true);
+/// the room) from the unobstructed sky and ground: ∫ L(ω) τ(θ) cosθ dω over the outside
+/// half of the sphere. The opening's sky flux is this × its area.
+double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance);
 
 /// F(dA_x → light), unoccluded: Lambert's formula within 5 of the light's diameters, or
 /// when x's horizon cuts the light; beyond, the second-order far form factor
@@ -180,6 +179,7 @@ class DirectLight {
     /// The product of the glazings' transmittances τ(θ) the ray from x along the unit
     /// direction w crosses (each opening it crosses, to the first `maxDistance` m).
     double openingTransmittance(const Vec3& x, const Vec3& w, double maxDistance) const {
+        if (!m_anyGlazing) return 1.0;  // open holes pass everything: no need to look
         double tau = 1;
         openingsCrossed(x, w, maxDistance, &tau);
         return tau;
@@ -248,6 +248,7 @@ class DirectLight {
     std::vector<size_t> m_openings;                 ///< the openings' indices in m_areaLights
     double m_beyondScene = 0;                       ///< m: a distance that leaves the scene from anywhere in it
     std::optional<double> m_enteringMeasured;       ///< lm through the openings, measured (sky, ground and sun)
+    bool m_anyGlazing = false;                      ///< some opening is glazed (transmittance < 1)
     std::vector<scene::Mirror> m_mirrors;
     bool m_convexMirrors = true;  ///< every mirror polygon convex: images are clipped exactly
     std::vector<MirrorImage> m_images;

@@ -35,7 +35,7 @@ double AreaLight::skyLuminanceAlong(const Vec3& w) const {
     return sky->luminance(w) * scene::glazingTransmittance(transmittance, cosTheta);
 }
 
-double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance, bool withSun) {
+double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance) {
     // Midpoint rule over the hemisphere of directions w leaving the room (w · inward < 0),
     // in (cosθ, φ) about −inward: dω = d(cosθ) dφ.
     const Vec3 out = -inward;
@@ -52,11 +52,7 @@ double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, 
         }
         sum += ring * tau * c;
     }
-    double e = sum * (1.0 / kRings) * (2 * kPi / kSectors);
-    const double cosSun = glm::dot(daylight.sunDirection, out);
-    if (withSun && daylight.hasDirectSun() && cosSun > 0)
-        e += daylight.sunNormalIlluminance * scene::glazingTransmittance(transmittance, cosSun) * cosSun;
-    return e;
+    return sum * (1.0 / kRings) * (2 * kPi / kSectors);
 }
 
 void DirectLight::measureEntering(const Visibility& vis) {
