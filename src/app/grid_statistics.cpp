@@ -27,7 +27,10 @@ std::vector<GridStatistics> gridStatistics(const std::vector<SensorResult>& resu
         auto it =
             std::find_if(out.begin(), out.end(), [&](const GridStatistics& g) { return g.grid == r.sensor.grid; });
         if (it == out.end()) {
-            out.push_back({r.sensor.grid, 0, 0, std::numeric_limits<double>::infinity(), 0, 0});
+            GridStatistics g;
+            g.grid = r.sensor.grid;
+            g.minimum = std::numeric_limits<double>::infinity();
+            out.push_back(g);
             values.emplace_back();
             factors.emplace_back();
             it = out.end() - 1;

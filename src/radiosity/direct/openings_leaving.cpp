@@ -34,8 +34,8 @@ double leavingThroughOpenings(const scene::Scene& scene, const PatchMesh& mesh, 
             for (int a = 0; a < kSkyRays; ++a)
                 for (int b = 0; b < kSkyRays; ++b) {
                     const double u = (a + 0.5) / kSkyRays, phi = 2 * kPi * (b + 0.5) / kSkyRays;
-                    const double r = std::sqrt(u);
-                    const Vec3 w = r * std::cos(phi) * t1 + r * std::sin(phi) * t2 + std::sqrt(1 - u) * p.normal;
+                    const double radius = std::sqrt(u);
+                    const Vec3 w = radius * std::cos(phi) * t1 + radius * std::sin(phi) * t2 + std::sqrt(1 - u) * p.normal;
                     if (lights.openingsCrossed(p.centroid, w, far) == 0 &&
                         vis.visibleFromSurface(p.centroid, p.normal, p.centroid + far * w))
                         ++open;
