@@ -260,7 +260,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
         const auto values = radiosity::gatherSensors(run.scene, run.mesh, *run.embree, run.lighting, log);
         const auto& day = run.scene.daylight;
         for (size_t i = 0; i < values.size(); ++i) {
-            run.sensors.push_back({run.scene.sensors[i], values[i], i < inSolid.size() ? inSolid[i] : std::string()});
+            run.sensors.push_back({run.scene.sensors[i], values[i], i < inSolid.size() ? inSolid[i] : std::string(), {}});
             // Under a sky without direct sun: the daylight factor against the open sky.
             if (day && !day->hasDirectSun() && day->skyHorizontalIlluminance > 0)
                 run.sensors.back().daylightFactor =

@@ -116,6 +116,40 @@ TEST_CASE("daylight: a glazed opening seen from beside its edge, against a quadr
     }
 }
 
+TEST_CASE("daylight: the sky seen through an opening in a mirror", "[daylight]") {
+    // A clear sky with the sun in the east, so a mirror's reflection changes which part of
+    // the sky is seen. A large vertical mirror (x = 1.5, facing −x, reflectance 0.9) beside
+    // the roof opening: what its image of the opening sends to a point facing the mirror
+    // is 0.9 × what the real opening sends to the mirrored point facing back, which a
+    // quadrature over the opening gives.
+    const std::string sky = R"({"type": "cie_clear", "zenith_luminance": 5000}, "sun": {"altitude": 30, "azimuth": 90})";
+    const std::string withMirror = R"({"materials": {"m": {"reflectance": 0.5}, "hole": {"type": "opening"},
+            "mirror": {"type": "mirror", "specular_reflectance": 0.9}},
+        "objects": [{"type": "quad", "material": "m", "vertices": [[-50,-50,-10],[50,-50,-10],[50,50,-10],[-50,50,-10]]},
+                    {"type": "quad", "material": "hole", "vertices": [[-1,-1,3],[-1,1,3],[1,1,3],[1,-1,3]]},
+                    {"type": "quad", "material": "mirror", "vertices": [[1.5,-20,-9],[1.5,-20,20],[1.5,20,20],[1.5,20,-9]]}],
+        "daylight": {"up": [0, 0, 1], "north": [0, 1, 0], "sky": )" + sky + "}}";
+    Setup mirrored(scene::buildScene(scene::parseScene(withMirror, "t.json")));
+    Setup plain(roofOpening(3, sky));
+    for (const Vec3& x : {Vec3(0.5, 0, 0), Vec3(1.2, 0.7, 1.5)}) {
+        const Vec3 image(3.0 - x.x, x.y, x.z);  // x mirrored in the plane x = 1.5, facing −x
+        double reference = 0;
+        const int n = 1600;
+        const double cell = 2.0 / n;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const Vec3 y(-1 + (i + 0.5) * cell, -1 + (j + 0.5) * cell, 3);
+                const Vec3 d = y - image;
+                const double r2 = glm::dot(d, d), r = std::sqrt(r2);
+                if (d.x < 0)
+                    reference += 0.9 * plain.scene.daylight->luminance(d / r) * (-d.x / r) * (d.z / r) / r2 * cell * cell;
+            }
+        const double viaMirror = mirrored.at(x, {1, 0, 0}) - plain.at(x, {1, 0, 0});
+        INFO("at " << x.x << ", " << x.y << ", " << x.z << ": " << viaMirror << " vs " << reference);
+        CHECK(viaMirror == Approx(reference).epsilon(5e-3));
+    }
+}
+
 TEST_CASE("daylight: validate daylight passes every check", "[daylight]") {
     CHECK(app::validateDaylight() == 0);
 }

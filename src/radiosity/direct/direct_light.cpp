@@ -105,7 +105,11 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             v.centre = image.point(a.centre);
             v.moments = polygonMoments(v.triangles);
             v.luminance = a.luminance * image.weight;
-            if (a.sky) v.luminance = Rgb(0.0), v.sky = nullptr;  // the sky is not carried through mirrors
+            if (a.sky) {  // the sky beyond the real opening, seen through the chain
+                v.skyFrame = glm::transpose(glm::dmat3(image.transform)) * a.skyFrame;
+                v.skyWeight = a.skyWeight * luminance(image.weight);
+                v.luminance = Rgb(luminance(v.luminance));  // daylight is grey
+            }
             mirrored.push_back(std::move(v));
         }
         m_imageAreaLights.push_back(std::move(mirrored));
@@ -239,6 +243,15 @@ Rgb DirectLight::fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Vi
     return fromAreaImage(i, k, x, n, MirrorPath(m_mirrors, m_images[i], vis), samples, rng);
 }
 
+Rgb DirectLight::fromOpeningWithSkyFactor(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
+                                          Random* rng, double skyFactor) const {
+    const AreaLight& light = areaSource(s);
+    if (s >= perChain() || !light.sky) return fromAreaSource(s, x, n, vis, samples, rng);
+    const double f = areaLightFormFactor(light, x, n);
+    if (f <= 0) return Rgb(0.0);
+    return light.luminance * (kPi * f * skyFactor * visibleFraction(light, x, n, &vis, samples, rng));
+}
+
 std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, const Vec3& x) const {
     const AreaLight& light = m_imageAreaLights[i][k];
     if (glm::dot(light.normal, x - light.centre) <= 0) return std::nullopt;  // behind the emitting side
@@ -246,7 +259,10 @@ std::optional<AreaLight> DirectLight::visiblePartOfImage(size_t i, size_t k, con
     if (!m_images[i].mayPassToPoint(light.centre, light.radius, x)) return std::nullopt;  // cheaper than clipping
     auto part = clipToApertures(m_images[i], light.vertices, x);
     if (part.empty()) return std::nullopt;
-    return makeAreaLight(std::move(part), light.normal, light.luminance);
+    AreaLight visible = makeAreaLight(std::move(part), light.normal, light.luminance);
+    visible.sky = light.sky, visible.transmittance = light.transmittance;
+    visible.skyFrame = light.skyFrame, visible.skyWeight = light.skyWeight;
+    return visible;
 }
 
 Rgb DirectLight::fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n, const MirrorPath& path, int samples,
@@ -365,10 +381,6 @@ double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const
     const double near = kAllSamplesDiameters * 2 * light.radius;  // m
     const double d2 = glm::dot(light.centre - x, light.centre - x);
     const double rays = d2 > near * near ? samples * near * near / d2 : samples;
-    if (light.sky) {  // E / (L̄ π F), F the sum of the parts' form factors
-        const double f = areaLightFormFactor(light, x, n);
-        return f > 0 ? throughOpening(light, x, n, vis, samples, rng, nullptr) / (light.luminance.g * kPi * f) : 0.0;
-    }
     CHECK(vis);
     double weightSum = 0, visibleSum = 0;
     RayBatch<double> shadowRays(*vis, x, n, visibleSum);  // the samples' rays, traced together
@@ -379,9 +391,10 @@ double DirectLight::visibleFraction(const AreaLight& light, const Vec3& x, const
         const Vec3 d = y - x;
         const double r2 = glm::dot(d, d);
         if (r2 <= 0) return;
-        // cosθ_x cosθ_y / r² = (n·d)(−N·d) / r⁴
-        const double w = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(light.normal, d)) / (r2 * r2);
+        // cosθ_x cosθ_y / r² = (n·d)(−N·d) / r⁴, for an opening times the sky's L τ along d
+        double w = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(light.normal, d)) / (r2 * r2);
         if (w <= 0) return;
+        if (light.sky) w *= light.skyLuminanceAlong(d / std::sqrt(r2));
         weightSum += w;
         shadowRays.add(y, w);
     };

@@ -32,8 +32,14 @@ struct AreaLight {
     /// ranking and the energy account use; null for a lamp.
     const scene::Daylight* sky = nullptr;
     double transmittance = 1;  ///< the opening's glazing at normal incidence (1: none)
+    /// An opening's mirror image: the direction beyond the real opening of a ray that
+    /// reaches the image along w is skyFrame · w (the reflections undone), and the mirrors
+    /// pass skyWeight (Y of Π Ks) of its light. The identity and 1 for a real opening.
+    glm::dmat3 skyFrame{1.0};
+    double skyWeight = 1;
     /// The luminance (cd/m²) that comes through toward a receiver along the unit direction
-    /// w (from the receiver through the opening): the sky's (or ground's), × the glazing's τ.
+    /// w (from the receiver through the opening): the sky's (or ground's), × the glazing's τ
+    /// (× skyWeight).
     double skyLuminanceAlong(const Vec3& w) const;
 };
 
@@ -150,6 +156,14 @@ class DirectLight {
     /// from `samples` shadow rays (through the mirror chain for an image).
     Rgb fromAreaSource(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
                        Random* rng = nullptr) const;
+    /// Opening s's illuminance (lx) at x, with the sky's luminance through it taken as
+    /// `skyFactor` times its mean (the factor at a point nearby: skyFactorAt), only its
+    /// shadows sampled: π L̄ F · skyFactor · visible fraction. Across a patch the sky seen
+    /// through an opening changes little and its shadows much; at each of the many points
+    /// a shadow's edge asks for, this costs a lamp's rays instead of the opening's pieces.
+    /// Any other source: fromAreaSource.
+    Rgb fromOpeningWithSkyFactor(size_t s, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
+                                 Random* rng, double skyFactor) const;
     /// The same without shadows: π L F, F the analytic form factor (to the part of an
     /// image that x sees through the mirror polygons). For an opening the sky's luminance
     /// through it (throughOpening), or with `withSky` false its mean: π L̄ F, which changes
@@ -216,15 +230,16 @@ class DirectLight {
     Rgb fromAreaLight(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility& vis, int samples,
                       Random* rng, Rgb* open = nullptr, double* visible = nullptr) const;
     /// The fraction of an area light x sees past occluders (`samples` stratified shadow
-    /// rays, fewer for a far light), weighted by the unoccluded integrand cosθ_x cosθ_y / r².
-    /// For an opening: its light at x (throughOpening) over L̄ π F, its luminance through
-    /// the visible parts over its mean. `vis` null: nothing occludes.
+    /// rays, fewer for a far light), weighted by the unoccluded integrand cosθ_x cosθ_y / r²,
+    /// for an opening also by the sky's luminance through it.
     double visibleFraction(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis, int samples,
                            Random* rng) const;
-    /// An opening's light at x (lx): its outline cut into about `samples` parts, each
-    /// delivering π F_c L(ω_c) τ(θ_c) (F_c the part's exact form factor, ω_c the direction
-    /// to its centroid) if its shadow ray, continued through it beyond the scene, is clear.
-    /// `open` gets the unshadowed sum; `vis` null: nothing occludes.
+    /// An opening's light at x (lx): its outline cut into about `samples` parts, split
+    /// further into pieces near x, each piece delivering π F_c L(ω_c) τ(θ_c) (F_c its form
+    /// factor, ω_c the direction to its centroid). One shadow ray per part, continued through
+    /// a point of one of its pieces (chosen in proportion to their light) beyond the scene,
+    /// says whether the part's light arrives. `open` gets the unshadowed sum; `vis` null:
+    /// nothing occludes.
     double throughOpening(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis, int samples,
                           Random* rng, double* open) const;
     /// Area light k's image i: the part of it x sees through the chain's mirror polygons

@@ -268,6 +268,20 @@ double integrateUnshadowed(const DirectLight& lights, size_t s, const std::array
     return sum;
 }
 
+/// The sky's factor over patch p for opening s (1 for a lamp): the 4-point means of its
+/// unshadowed light (`opens`) over π L̄ F at the same points (skyFactorAt over the patch).
+double patchSkyFactor(const DirectLight& lights, size_t s, const Vec3& normal, const std::array<Vec3, 4>& points,
+                      const Rgb* opens) {
+    if (!lights.areaSource(s).sky) return 1.0;
+    double geometric[4], open[4];
+    for (int k = 0; k < 4; ++k) {
+        geometric[k] = luminance(lights.unshadowedFromAreaSource(s, points[k], normal, false));
+        open[k] = luminance(opens[k]);
+    }
+    const double mean = fourPointMean(geometric[3], geometric);
+    return mean > 0 ? fourPointMean(open[3], open) / mean : 1.0;
+}
+
 /// Mean illuminance (lx) over patch p from area source s, or nullopt when the light is
 /// far enough for the 4-point rule. Near an emitter (a ceiling 1 cm above a lamp that
 /// faces it, a wall beside it) E = π L F changes from πL to 0 within a centimetre and the
@@ -308,12 +322,15 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
         shadowed = fourPointMean(values[3], values);
         open = rule;
     } else {
+        // An opening's sky at the points: the patch's factor (its pattern through the
+        // opening changes little across the patch, the shadows much), which cancels in the ratio.
         const Vec3 a = t[0], ab = t[1] - t[0], ac = t[2] - t[0];
+        const double sky = patchSkyFactor(lights, s, normal, points, opens);
         for (const auto& uv : refined) {
             Vec3 x = a + uv[0] * ab + uv[1] * ac;
             Random rng = pointRandom(x);
-            shadowed += lights.fromAreaSource(s, x, normal, vis, areaSamples, &rng);
-            open += luminance(lights.unshadowedFromAreaSource(s, x, normal));
+            shadowed += lights.fromOpeningWithSkyFactor(s, x, normal, vis, areaSamples, &rng, sky);
+            open += sky * luminance(lights.unshadowedFromAreaSource(s, x, normal, false));
         }
     }
     // The colour of the light (per channel) with the luminance of the exact mean.
@@ -337,17 +354,18 @@ bool sameVisibleFraction(const Rgb* values, const Rgb* opens) {
 }
 
 /// Mean illuminance (lx) over patch p from area source s over the first `count` of the
-/// `refined` points, for a patch that a shadow's edge crosses.
+/// `refined` points, for a patch that a shadow's edge crosses; an opening with the sky's
+/// factor `sky` over the patch (patchSkyFactor).
 Rgb refinedAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
                           size_t s, const Visibility& vis, int areaSamples,
-                          const std::vector<std::array<double, 2>>& refined, size_t count) {
+                          const std::vector<std::array<double, 2>>& refined, size_t count, double sky) {
     const Vec3 a = mesh.corner(p, 0), ab = mesh.corner(p, 1) - a, ac = mesh.corner(p, 2) - a;
     count = std::min(count, refined.size());
     Rgb sum(0.0);
     for (size_t k = 0; k < count; ++k) {
         const Vec3 x = a + refined[k][0] * ab + refined[k][1] * ac;
         Random rng = pointRandom(x);
-        sum += lights.fromAreaSource(s, x, normal, vis, areaSamples, &rng);
+        sum += lights.fromOpeningWithSkyFactor(s, x, normal, vis, areaSamples, &rng, sky);
     }
     return sum / static_cast<double>(count);
 }
@@ -429,7 +447,8 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
             const auto count = static_cast<size_t>(std::clamp(std::lround(kShadowSamples * ofStrongest),
                                                               static_cast<long>(kMinAreaShadowSamples),
                                                               static_cast<long>(kShadowSamples)));
-            sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined, count);
+            sourceMean = refinedAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, refined, count,
+                                               patchSkyFactor(lights, s, normal, points, opens));
         }
         out.mean += sourceMean - fourPoint;
         if (outdoorSun) out.outdoorSun = sourceMean;

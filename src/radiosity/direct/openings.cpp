@@ -32,7 +32,7 @@ struct NoOcclusion : Visibility {
 
 double AreaLight::skyLuminanceAlong(const Vec3& w) const {
     const double cosTheta = -glm::dot(w, normal);  // the opening's normal faces the receiver
-    return sky->luminance(w) * scene::glazingTransmittance(transmittance, cosTheta);
+    return skyWeight * sky->luminance(skyFrame * w) * scene::glazingTransmittance(transmittance, cosTheta);
 }
 
 double enteringIlluminance(const scene::Daylight& daylight, const Vec3& inward, double transmittance) {
@@ -134,9 +134,12 @@ double DirectLight::openingFormFactor(size_t k, const Vec3& x, const Vec3& n, co
 
 double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const Vec3& n, const Visibility* vis,
                                    int samples, Random* rng, double* open) const {
-    // Each triangle of the outline cut into m² equal parts (a barycentric grid); part c
-    // sees the sky along the direction to its centroid ω_c, and delivers π F_c L(ω_c) τ(θ_c),
-    // F_c its own form factor by Lambert's formula (exact however near x is).
+    // Each triangle of the outline cut into m² equal parts (a barycentric grid), each split
+    // further into pieces near x; piece c sees the sky along the direction to its centroid
+    // ω_c and delivers π F_c L(ω_c) τ(θ_c). The pieces resolve the sky's luminance; the
+    // shadows are sampled like a lamp's: one shadow ray per part (so about `samples`), through
+    // a point of one of its pieces chosen in proportion to its light, whose visibility
+    // the whole part takes.
     samples = std::max(samples, kOpeningSamples);
     const int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(samples) /
                                                                     static_cast<double>(light.triangles.size())))));
@@ -144,11 +147,18 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
     // form factors F_c: lx. Far ones share what the near ones leave of the opening's exact F,
     // in proportion to their point form factors w_c = A cosθ_x cosθ_y / (π r²): Σ w_c L_c V_c,
     // Σ w_c L_c and Σ w_c, in cd/m² (and sr).
-    double unshadowed = 0, shadowed = 0, nearF = 0;
-    double farWeights = 0, farOpen = 0, farShadowed = 0;
+    double unshadowed = 0, nearF = 0, farWeights = 0, farOpen = 0;
+    Vec2 shadowed(0.0);  // the visible parts' (near lx, far Σ w L)
     const NoOcclusion none;
-    RayBatch<double> shadowRays(vis ? *vis : none, x, n, shadowed);
-    RayBatch<double> farRays(vis ? *vis : none, x, n, farShadowed);
+    RayBatch<Vec2> shadowRays(vis ? *vis : none, x, n, shadowed);
+    // The current part's pieces: outline, and light (near: π F L, lx; far: w L).
+    struct Piece {
+        std::array<Vec3, 4> corner;
+        int count;
+        double light;
+    };
+    thread_local std::vector<Piece> pieces;
+    Vec2 partLight(0.0);  // the current part's (near, far) light
     // A piece of the opening (a triangle, or a part of one the horizon cut off) delivers
     // π F L(ω) τ along the direction ω to its centroid.
     auto deliver = [&](const Vec3* piece, int count) {
@@ -175,32 +185,49 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
         if (far) {
             farWeights += f;
             farOpen += f * l;
+            partLight.y += f * l;
         } else {
             nearF += f;
             unshadowed += kPi * f * l;
+            partLight.x += kPi * f * l;
         }
-        const double e = far ? f * l : kPi * f * l;
         if (!vis) return;
-        // The shadow ray through a point of the piece (jittered when rng: in one of its fan
-        // triangles, chosen by area), on beyond the scene.
-        Vec3 y = centroid;
-        if (rng) {
+        Piece p{{}, count, kPi * f * l};  // lx, about its share of the result (far: before rescaling)
+        for (int k = 0; k < count; ++k) p.corner[k] = piece[k];
+        pieces.push_back(p);
+    };
+    // The part's shadow ray: through a point of one of its pieces (chosen in proportion to
+    // its light; a uniform point of it when jittered, else its centroid), on beyond the
+    // scene; the part's light counts where it is clear.
+    auto shadowRay = [&]() {
+        double total = 0;
+        for (const Piece& p : pieces) total += p.light;
+        if (total <= 0) return;
+        double u = (rng ? rng->nextDouble() : 0.5) * total;
+        size_t c = 0;
+        while (c + 1 < pieces.size() && u >= pieces[c].light) u -= pieces[c++].light;
+        const Piece& p = pieces[c];
+        Vec3 y(0.0);
+        for (int k = 0; k < p.count; ++k) y += p.corner[k];
+        y /= static_cast<double>(p.count);
+        if (rng) {  // in one of its fan triangles, chosen by area
             int k = 1;
-            if (count == 4) {
-                const double a1 = glm::length(glm::cross(piece[1] - piece[0], piece[2] - piece[0]));
-                const double a2 = glm::length(glm::cross(piece[2] - piece[0], piece[3] - piece[0]));
+            if (p.count == 4) {
+                const double a1 = glm::length(glm::cross(p.corner[1] - p.corner[0], p.corner[2] - p.corner[0]));
+                const double a2 = glm::length(glm::cross(p.corner[2] - p.corner[0], p.corner[3] - p.corner[0]));
                 if (rng->nextDouble() * (a1 + a2) > a1) k = 2;
             }
-            double u = rng->nextDouble(), v = rng->nextDouble();
-            if (u + v > 1) u = 1 - u, v = 1 - v;
-            y = piece[0] + u * (piece[k] - piece[0]) + v * (piece[k + 1] - piece[0]);
+            double a = rng->nextDouble(), b = rng->nextDouble();
+            if (a + b > 1) a = 1 - a, b = 1 - b;
+            y = p.corner[0] + a * (p.corner[k] - p.corner[0]) + b * (p.corner[k + 1] - p.corner[0]);
         }
-        if (const auto through = unitDirection(y - x)) (far ? farRays : shadowRays).add(y + m_beyondScene * *through, e);
+        if (const auto through = unitDirection(y - x)) shadowRays.add(y + m_beyondScene * *through, partLight);
     };
     // A part: split in four while it spans more than kOpeningPartSpan of its distance from
     // x (near x the luminance and the glazing's τ change across a part faster than its
     // centroid's direction can say); a part the horizon crosses is cut there, so the sky
     // above and the ground below each get their own piece.
+    const Vec3 up = glm::transpose(light.skyFrame) * light.sky->up;  // as seen through a mirror image
     std::function<void(const std::array<Vec3, 3>&, int)> part = [&](const std::array<Vec3, 3>& t, int depth) {
         const Vec3 centroid = (t[0] + t[1] + t[2]) / 3.0;
         const double span = std::max({glm::length(t[1] - t[0]), glm::length(t[2] - t[1]), glm::length(t[0] - t[2])});
@@ -212,7 +239,7 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
             return;
         }
         double h[3];
-        for (int k = 0; k < 3; ++k) h[k] = glm::dot(light.sky->up, t[k] - x);  // m above x's horizon
+        for (int k = 0; k < 3; ++k) h[k] = glm::dot(up, t[k] - x);  // m above x's horizon
         if (std::min({h[0], h[1], h[2]}) >= 0 || std::max({h[0], h[1], h[2]}) <= 0) {
             deliver(t.data(), 3);
             return;
@@ -233,25 +260,31 @@ double DirectLight::throughOpening(const AreaLight& light, const Vec3& x, const 
         deliver(above, na);
         deliver(below, nb);
     };
+    auto topPart = [&](const std::array<Vec3, 3>& t) {
+        pieces.clear();
+        partLight = Vec2(0.0);
+        part(t, 0);
+        if (vis) shadowRay();
+    };
     for (const auto& t : light.triangles) {
         const Vec3 e1 = (t[1] - t[0]) / static_cast<double>(m), e2 = (t[2] - t[0]) / static_cast<double>(m);
         for (int i = 0; i < m; ++i)
             for (int j = 0; i + j < m; ++j) {
                 const Vec3 a = t[0] + static_cast<double>(i) * e1 + static_cast<double>(j) * e2;
-                part({a, a + e1, a + e2}, 0);
-                if (i + j + 1 < m) part({a + e1, a + e1 + e2, a + e2}, 0);  // the grid's downward triangles
+                topPart({a, a + e1, a + e2});
+                if (i + j + 1 < m) topPart({a + e1, a + e1 + e2, a + e2});  // the grid's downward triangles
             }
     }
     shadowRays.flush();
-    farRays.flush();
+    double result = shadowed.x;
     if (farWeights > 0) {
         // The far pieces' share of the exact F, π (F − Σ near F_c) Σ w L (V) / Σ w.
         const double rest = std::max(0.0, areaLightFormFactor(light, x, n) - nearF);
         unshadowed += kPi * rest * farOpen / farWeights;
-        shadowed += kPi * rest * farShadowed / farWeights;
+        result += kPi * rest * shadowed.y / farWeights;
     }
     if (open) *open = unshadowed;
-    return vis ? shadowed : unshadowed;
+    return vis ? result : unshadowed;
 }
 
 }  // namespace rayrad::radiosity

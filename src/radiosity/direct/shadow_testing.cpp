@@ -95,15 +95,15 @@ Rgb DirectLight::illuminanceForDisplay(const Vec3& x, const Vec3& n, const Visib
         Rgb v;
         if (c.light < points) {
             v = fromPointLight(m_pointLights[c.light], x, n, vis);
-        } else if (c.exact) {
+        } else if (c.exact && !m_areaLights[c.light - points].sky) {
             const AreaLight& light = m_areaLights[c.light - points];
             v = light.luminance * (c.factor * visibleFraction(light, x, n, &vis, samples, rng));
-        } else {  // far: its visible fraction is kept for the pixel's other samples
+        } else {  // an opening (the sky through its parts), or a far lamp: its visible fraction is kept
             double visible = 0;
             Rgb open(0.0);
             v = fromAreaLight(m_areaLights[c.light - points], x, n, vis, samples, rng, &open, &visible);
             // c.factor is its point approximation A cosθ_x cosθ_y / r² = π F_point (> 0: a candidate).
-            if (pixel)
+            if (pixel && !c.exact)
                 pixel->far.push_back({c.light, visible * luminance(open) / (luminance(colourOf(c.light)) * c.factor)});
         }
         if (pixel && (c.light < points || c.exact)) pixel->retested.push_back(c.light);
