@@ -3,6 +3,7 @@
 #include <radiosity/radiosity.h>
 #include <raytrace/embree_scene.h>
 #include <scene/daylight/glazing.h>
+#include <scene/daylight/perez.h>
 #include <scene/daylight/sky.h>
 #include <scene/daylight/sun_position.h>
 #include <scene/scene.h>
@@ -182,10 +183,33 @@ int validateDaylight() {
         const Vec3 toSun(std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt));
         const Vec3 n(0, -std::sin(tilt), std::cos(tilt));  // north is +y: tilted toward −y
         const Vec3 x(20, 0, 0);                              // outdoors, away from the opening
-        const double ref = 80000 * glm::dot(toSun, n);
-        const double sky = kPi * (1 + glm::dot(n, Vec3(0, 0, 1))) / 2;  // not through the opening: 0
-        (void)sky;
+        const double ref = 80000 * glm::dot(toSun, n);  // the sky reaches outdoors only through openings: none
         return 100 * (s.at(x, n) / ref - 1);
+    }));
+    // A clear hour (Perez all-weather sky, sun at 35°, south): the sky's horizontal
+    // illuminance by a quadrature in zenith angle and azimuth against the E_dh the Perez
+    // efficacy gives; and the same hour given as illuminances, its irradiances found back.
+    checks.push_back(timed("Perez sky, a clear hour: ∫ L cos Z dω (quadrature) against E_dh", 0.1, "%", [&] {
+        OpeningScene s(roof, R"("sky": {"type": "perez", "direct_normal_irradiance": 750,
+                                        "diffuse_horizontal_irradiance": 110}, "sun": {"altitude": 35, "azimuth": 180})");
+        const scene::Daylight& d = *s.scene.daylight;
+        const int nz = 900, na = 1800;
+        double sum = 0;
+        for (int i = 0; i < nz; ++i) {
+            const double z = (i + 0.5) * (kPi / 2) / nz;
+            for (int j = 0; j < na; ++j) {
+                const double a = (j + 0.5) * 2 * kPi / na;
+                sum += d.luminance({std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)}) * std::cos(z) *
+                       std::sin(z);
+            }
+        }
+        return 100 * (sum * (kPi / 2 / nz) * (2 * kPi / na) / d.perez->diffuseHorizontalIlluminance - 1);
+    }));
+    checks.push_back(timed("Perez sky, the hour given as illuminances: D found back (Perez 1990 efficacy)", 0.5, "%", [&] {
+        const scene::PerezConditions c{55 * kPi / 180, 172, 11};
+        const auto hour = scene::perezFromIrradiance(750, 110, c);
+        const auto back = scene::perezFromIlluminance(hour.directNormalIlluminance, hour.diffuseHorizontalIlluminance, c);
+        return 100 * (back.diffuseHorizontalIrradiance / 110 - 1);
     }));
 
     fmt::print("| check | error | bound | run time |\n|---|---:|---:|---:|\n");

@@ -40,7 +40,8 @@ void finishDaylight(Daylight& d, double zenithLuminance, double horizontal) {
     // Azimuth from north toward east: the local direction (sin az cos alt, cos az cos alt, sin alt).
     const Vec3 local(std::sin(azimuth) * std::cos(altitude), std::cos(azimuth) * std::cos(altitude), std::sin(altitude));
     d.sunDirection = glm::normalize(local.x * d.east + local.y * d.north + local.z * d.up);
-    d.distribution = SkyDistribution(d.kind, d.cieType, kPi / 2 - altitude);
+    d.distribution = d.perez ? SkyDistribution::perez(d.perez->coefficients, kPi / 2 - altitude)
+                             : SkyDistribution(d.kind, d.cieType, kPi / 2 - altitude);
     const double factor = d.distribution.horizontalFactor(local);  // sr
     d.zenithLuminance = zenithLuminance > 0 ? zenithLuminance : horizontal / factor;
     d.skyHorizontalIlluminance = d.zenithLuminance * factor;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <core/math.h>
+#include <scene/daylight/perez.h>
 #include <scene/daylight/sky.h>
 #include <scene/daylight/sun_position.h>
 
@@ -20,6 +21,7 @@ struct Daylight {
     Vec3 up{0, 1, 0}, north{0, 0, -1}, east{1, 0, 0};
     SkyKind kind = SkyKind::CieOvercast;
     int cieType = 0;  ///< 1 … 15 for SkyKind::CieStandard
+    std::optional<PerezSky> perez;  ///< for SkyKind::Perez: ε, Δ and a … e of the hour
     SkyDistribution distribution;
     double zenithLuminance = 0;            ///< L_z, cd/m²
     double skyHorizontalIlluminance = 0;   ///< E_dh: the unobstructed sky on a horizontal plane, lx

@@ -35,6 +35,22 @@ SkyDistribution::SkyDistribution(SkyKind kind, int cieType, double sunZenithRad)
     m_norm = indicatrix(sunZenithRad) * gradation(1.0);
 }
 
+SkyDistribution SkyDistribution::perez(const CieSkyParameters& coefficients, double sunZenithRad) {
+    SkyDistribution s;
+    s.m_kind = SkyKind::Perez;
+    s.m_p = coefficients;
+    const double zenith = s.perezLuminance(1.0, sunZenithRad);
+    s.m_norm = zenith > 0 ? zenith : 1.0;  // a zenith darker than nothing: the scale still comes from E_dh
+    return s;
+}
+
+double SkyDistribution::perezLuminance(double cosZ, double chi) const {
+    const double c = std::cos(chi);
+    const double l = (1 + m_p.a * std::exp(m_p.b / std::max(cosZ, 0.01))) *
+                     (1 + m_p.c * std::exp(m_p.d * chi) + m_p.e * c * c);
+    return std::max(0.0, l);
+}
+
 double SkyDistribution::gradation(double cosZ) const {
     if (cosZ <= 0) return 1.0;  // φ(π/2) = 1: the exponential vanishes at the horizon
     return 1 + m_p.a * std::exp(m_p.b / cosZ);
@@ -53,6 +69,10 @@ double SkyDistribution::relative(const Vec3& local, const Vec3& sunLocal) const 
         case SkyKind::CieStandard: {
             const double chi = std::acos(std::clamp(glm::dot(local, sunLocal), -1.0, 1.0));
             return indicatrix(chi) * gradation(cosZ) / m_norm;
+        }
+        case SkyKind::Perez: {
+            const double chi = std::acos(std::clamp(glm::dot(local, sunLocal), -1.0, 1.0));
+            return perezLuminance(cosZ, chi) / m_norm;
         }
     }
     return 1.0;
