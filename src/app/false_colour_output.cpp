@@ -10,9 +10,24 @@
 
 namespace rayrad::app {
 
-tonemap::Picture gridPicture(const std::vector<SensorResult>& results) {
+std::string gridPlanTitle(const GridStatistics& s) {
+    const std::string left =
+        s.excluded ? fmt::format(" ({} inside solids left out)", s.excluded) : std::string();
+    if (!s.dfMean)
+        return fmt::format("{}: Emin {:.0f}, Eavg {:.0f}, Emax {:.0f} lx, U0 {:.2f}{}", s.grid, s.minimum, s.mean,
+                           s.maximum, s.u0(), left);
+    std::string title = fmt::format("{}: daylight factor min {:.2f}, mean {:.2f}, median {:.2f} %, U0 {:.2f}{}", s.grid,
+                                    *s.dfMinimum, *s.dfMean, *s.dfMedian, s.u0(), left);
+    if (s.dfTarget && s.shareAboveTarget && s.dfTargetMinimum && s.shareAboveTargetMinimum)
+        title += fmt::format("\nEN 17037 method 1: DF >= {:.1f} % on {:.0f} % (50 % asked), >= {:.1f} % on {:.0f} % (95 % asked): {}",
+                             *s.dfTarget, 100 * *s.shareAboveTarget, *s.dfTargetMinimum,
+                             100 * *s.shareAboveTargetMinimum, s.meetsEn17037Minimum() ? "met" : "not met");
+    return title;
+}
+
+tonemap::Picture gridPicture(const std::vector<SensorResult>& results, std::optional<double> medianExternalIlluminance) {
     std::vector<tonemap::Picture> pictures;
-    for (const auto& stats : gridStatistics(results)) {
+    for (const auto& stats : gridStatistics(results, medianExternalIlluminance)) {
         int nu = 0, nv = 0;
         for (const auto& r : results)
             if (r.sensor.grid == stats.grid)
@@ -25,13 +40,11 @@ tonemap::Picture gridPicture(const std::vector<SensorResult>& results) {
         for (const auto& r : results)
             if (r.sensor.grid == stats.grid && r.sensor.gridU >= 0 && r.excluded.empty())  // inside a solid: blank
                 field.values[static_cast<size_t>(r.sensor.gridV) * nu + r.sensor.gridU] =
-                    luminance(r.value.direct + r.value.indirect);
+                    stats.dfMean && r.daylightFactor ? *r.daylightFactor : luminance(r.value.direct + r.value.indirect);
         tonemap::FalseColourOptions o;
-        o.unit = "lx";
+        o.unit = stats.dfMean ? "%" : "lx";
         o.pixelsPerValue = std::clamp(480 / std::max(nu, nv), 4, 64);
-        o.title = fmt::format("{}: Emin {:.0f}, Eavg {:.0f}, Emax {:.0f} lx, U0 {:.2f}{}", stats.grid, stats.minimum,
-                              stats.mean, stats.maximum, stats.u0(),
-                              stats.excluded ? fmt::format(" ({} inside solids left out)", stats.excluded) : "");
+        o.title = gridPlanTitle(stats);
         pictures.push_back(tonemap::renderFalseColour(field, o));
     }
     return pictures.empty() ? tonemap::Picture{} : tonemap::stackPictures(pictures);

@@ -121,7 +121,10 @@ void stageReports(const PipelineRun& run, const std::string& scene, const Report
     auto picture = [&](const std::string& path, const tonemap::Picture& p) {
         files.set(path, tonemap::encodeDisplayImage(path, p.width, p.height, p.rgb));
     };
-    if (!r.gridPicture.empty()) picture(r.gridPicture, gridPicture(run.sensors));
+    if (!r.gridPicture.empty())
+        picture(r.gridPicture, gridPicture(run.sensors, run.scene.daylight
+                                                            ? run.scene.daylight->medianExternalIlluminance
+                                                            : std::nullopt));
     if (!r.falseColour.empty() && run.image) picture(r.falseColour, luminancePicture(*run.image));
 }
 

@@ -89,7 +89,20 @@ Picture renderFalseColour(const ScalarField& field, const FalseColourOptions& o)
     // The field, each value an n × n block, bilinear between the values' centres.
     const int n = std::max(1, o.pixelsPerValue);
     const int fw = field.width * n, fh = field.height * n;
-    const int width = fw + kLegendWidth + 2 * kMargin, height = std::max(fh, 260) + 2 * kMargin + kFontSize * 2;
+    // The title's lines above the field (the picture widened to hold the longest, at about
+    // 0.56 font sizes a character).
+    std::vector<std::string> titleLines;
+    for (size_t start = 0; start <= o.title.size();) {
+        const size_t end = std::min(o.title.find('\n', start), o.title.size());
+        titleLines.push_back(o.title.substr(start, end - start));
+        start = end + 1;
+    }
+    size_t longest = 0;
+    for (const auto& line : titleLines) longest = std::max(longest, line.size());
+    const int fieldTop = kFontSize * (static_cast<int>(titleLines.size()) + 1);  // below the margin
+    const int width = std::max(fw + kLegendWidth + 2 * kMargin,
+                               static_cast<int>(0.56 * kFontSize * static_cast<double>(longest)) + 2 * kMargin);
+    const int height = std::max(fh, 260) + 2 * kMargin + fieldTop;
     Picture out;
     out.width = width;
     out.height = height;
@@ -136,11 +149,11 @@ Picture renderFalseColour(const ScalarField& field, const FalseColourOptions& o)
                         rgb[0] = rgb[1] = rgb[2] = 0.08f;
                 }
             }
-            set(kMargin + px, kMargin + kFontSize * 2 + py, rgb);
+            set(kMargin + px, kMargin + fieldTop + py, rgb);
         }
 
     // The legend: a colour bar with a tick and a number at every level, the title above.
-    const int barX = kMargin + fw + 20, barTop = kMargin + kFontSize * 2, barHeight = std::max(fh, 260) - kFontSize;
+    const int barX = kMargin + fw + 20, barTop = kMargin + fieldTop, barHeight = std::max(fh, 260) - kFontSize;
     for (int y = 0; y < barHeight; ++y) {
         float rgb[3];
         paletteColour(1.0 - static_cast<double>(y) / (barHeight - 1), rgb);
@@ -153,7 +166,9 @@ Picture renderFalseColour(const ScalarField& field, const FalseColourOptions& o)
         for (int x = 24; x < 30; ++x) set(barX + x, y, ink);
         labels.push_back({barX + 34, y, label(v) + " " + o.unit, TextLabel::Align::Left, true, kFontSize});
     }
-    labels.push_back({kMargin, kMargin + kFontSize, o.title, TextLabel::Align::Left, false, kFontSize});
+    for (size_t k = 0; k < titleLines.size(); ++k)
+        labels.push_back({kMargin, kMargin + kFontSize * static_cast<int>(k + 1), titleLines[k], TextLabel::Align::Left,
+                          false, kFontSize});
     drawText(out.rgb, width, height, labels);
     return out;
 }

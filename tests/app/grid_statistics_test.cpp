@@ -1,4 +1,5 @@
 // Grid statistics: Emin, Eavg, Emax, U0 = Emin/Eavg and Emin/Emax per grid.
+#include <app/false_colour_output.h>
 #include <app/grid_statistics.h>
 #include <app/pipeline.h>
 
@@ -64,6 +65,10 @@ TEST_CASE("grid statistics: daylight factors, their median and EN 17037's method
     CHECK(*grids[0].shareAboveTargetMinimum == Approx(0.75));
     CHECK_FALSE(grids[0].meetsEn17037Minimum());  // 95 % must reach D_TM
     CHECK_THAT(app::gridTable(grids), Catch::Contains("the minimum level is not met"));
+    // Its plan shows the daylight factor, the shares on a second line.
+    CHECK(app::gridPlanTitle(grids[0]) ==
+          "plane: daylight factor min 0.50, mean 1.62, median 1.50 %, U0 0.31\n"
+          "EN 17037 method 1: DF >= 2.0 % on 50 % (50 % asked), >= 0.7 % on 75 % (95 % asked): not met");
 }
 
 TEST_CASE("grid statistics leave out points inside solids and count them", "[app][grids]") {
