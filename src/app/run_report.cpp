@@ -65,6 +65,8 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
                           {"absorbed_by_mirrors", b.mirrorAbsorbed},
                           {"absorbed_on_backs", b.backAbsorbed},
                           {"unshot", b.unshot},
+                          {"left_through_openings", b.leftThroughOpenings},
+                          {"passed_through_openings", b.passedThrough},
                           {"not_accounted_pct", 100 * b.relativeError()}};
     }
     j["stages"] = json::array();

@@ -59,7 +59,10 @@ void printSolveSummary(const PipelineRun& run) {
                "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
                daylight ? "daylight in (through the openings, and the sun outdoors)" : "emitted", balance.emitted, balance.absorbed,
                alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
-               daylight ? fmt::format(", left again (through the openings, to the sky) {:.6g} lm", balance.leftThroughOpenings) : "",
+               daylight ? fmt::format(", left again (through the openings, to the sky) {:.6g} lm, passed straight "
+                                      "through (in at one opening, out at another) {:.6g} lm",
+                                      balance.leftThroughOpenings, balance.passedThrough)
+                        : "",
                balance.unshot, 100 * balance.relativeError(), 100 * balance.directError(),
                100 * balance.secondaryError());
     const auto& st = run.lighting.shooting;

@@ -65,6 +65,7 @@ Lighting solveDirect(const scene::Scene& scene, const PatchMesh& mesh, const Vis
     Progress progress("direct light", log.quiet);
     computeDirect(scene, mesh, *lighting.lights, vis, scene.direct.areaLightSamples, lighting.solution,
                   [&](double f) { progress.update(f); });
+    lighting.solution.passedThrough = lighting.lights->passingThrough();
     return lighting;
 }
 

@@ -186,8 +186,12 @@ class DirectLight {
     /// outside them (frames, overhangs, the wall around a hole smaller than the opening):
     /// per opening, rays outward from 8 × 8 points on each of its triangles in 16 × 32
     /// cosine-distributed directions (and toward the sun), Φ = A ∫ L τ cosθ V dω. From then
-    /// on emittedFlux() counts it instead of the unobstructed sky's.
+    /// on emittedFlux() counts it instead of the unobstructed sky's. The same rays continued
+    /// inward measure passingThrough().
     void measureEntering(const Visibility& vis);
+    /// lm of what comes in through the openings that meets no surface and leaves again
+    /// through an opening (from one window straight out of another), measured with it.
+    double passingThrough() const { return m_passingThrough; }
     /// The sun as a point source (its index), or −1 without direct sun.
     int sunSource() const { return m_sun; }
     /// The product of the glazings' transmittances τ(θ) the ray from x along the unit
@@ -263,6 +267,7 @@ class DirectLight {
     std::vector<size_t> m_openings;                 ///< the openings' indices in m_areaLights
     double m_beyondScene = 0;                       ///< m: a distance that leaves the scene from anywhere in it
     std::optional<double> m_enteringMeasured;       ///< lm through the openings, measured (sky, ground and sun)
+    double m_passingThrough = 0;                    ///< lm of it that leaves again untouched
     bool m_anyGlazing = false;                      ///< some opening is glazed (transmittance < 1)
     std::vector<scene::Mirror> m_mirrors;
     bool m_convexMirrors = true;  ///< every mirror polygon convex: images are clipped exactly

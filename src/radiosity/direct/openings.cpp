@@ -61,7 +61,7 @@ void DirectLight::measureEntering(const Visibility& vis) {
     // (L τ, 16 × 32 cosine-distributed directions outward) whose ray is clear, times the
     // unobstructed sky's exact Φ; and the share of the points the sun reaches, times its Φ.
     constexpr int kPoints = 8, kRings = 16, kSectors = 32;
-    double flux = 0;
+    double flux = 0, through = 0;
     for (size_t i : m_openings) {
         const AreaLight& o = m_areaLights[i];
         const Vec3 out = -o.normal;
@@ -74,8 +74,8 @@ void DirectLight::measureEntering(const Visibility& vis) {
         const double skyIlluminance = kPi * o.luminance.g;  // lx, the unobstructed sky and ground through it
         for (size_t t = 0; t < o.triangles.size(); ++t) {
             const auto& tri = o.triangles[t];
-            double seen = 0, all = 0;
-            int sunlit = 0;
+            double seen = 0, all = 0, straight = 0;
+            int sunlit = 0, sunThrough = 0;
             for (int a = 0; a < kPoints; ++a)
                 for (int b = 0; b < kPoints; ++b) {
                     double u = (a + 0.5) / kPoints, v = (b + 0.5) / kPoints;
@@ -88,16 +88,26 @@ void DirectLight::measureEntering(const Visibility& vis) {
                             const Vec3 w = c * out + sn * (std::cos(phi) * t1 + std::sin(phi) * t2);
                             const double l = m_daylight->luminance(w) * scene::glazingTransmittance(o.transmittance, c);
                             all += l;
-                            if (vis.visible(y, y + m_beyondScene * w)) seen += l;
+                            if (!vis.visible(y, y + m_beyondScene * w)) continue;
+                            seen += l;
+                            // Light that comes in along −w and meets nothing leaves again
+                            // through another opening (or the same bay's) untouched.
+                            if (vis.visible(y, y - m_beyondScene * w)) straight += l;
                         }
-                    if (sunIlluminance > 0 && vis.visible(y, y + m_beyondScene * m_daylight->sunDirection)) ++sunlit;
+                    const Vec3& toSun = m_daylight->sunDirection;
+                    if (sunIlluminance > 0 && vis.visible(y, y + m_beyondScene * toSun)) {
+                        ++sunlit;
+                        if (vis.visible(y, y - m_beyondScene * toSun)) ++sunThrough;
+                    }
                 }
-            const double share = all > 0 ? seen / all : 0.0;
-            flux += o.triangleAreas[t] *
-                    (skyIlluminance * share + sunIlluminance * sunlit / static_cast<double>(kPoints * kPoints));
+            const double share = all > 0 ? seen / all : 0.0, straightShare = all > 0 ? straight / all : 0.0;
+            const double points = kPoints * kPoints;
+            flux += o.triangleAreas[t] * (skyIlluminance * share + sunIlluminance * sunlit / points);
+            through += o.triangleAreas[t] * (skyIlluminance * straightShare + sunIlluminance * sunThrough / points);
         }
     }
     m_enteringMeasured = flux;
+    m_passingThrough = through;
 }
 
 double DirectLight::glazingFor(const scene::PointLight& l, const Vec3& x) const {

@@ -19,6 +19,7 @@ EnergyBalance energyBalance(const scene::Scene& scene, const PatchMesh& mesh, co
     b.mirrorAbsorbedDirect = s.mirrorAbsorbedDirect;
     b.backAbsorbed = s.backAbsorbedDirect;
     b.leftThroughOpenings = s.leftThroughOpenings;
+    b.passedThrough = s.passedThrough;
     b.mirrorAbsorbed = s.mirrorAbsorbedDirect + s.mirrorAbsorbedSecondary;
     return b;
 }

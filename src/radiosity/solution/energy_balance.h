@@ -22,10 +22,15 @@ struct EnergyBalance {
     double backAbsorbed = 0;
     /// lm reflected out of the scene through its openings (daylight).
     double leftThroughOpenings = 0;
+    /// lm that came in through an opening and left through one without meeting a surface.
+    double passedThrough = 0;
     double relativeError() const {
-        return relative(absorbed + mirrorAbsorbed + backAbsorbed + unshot + leftThroughOpenings - emitted);
+        return relative(absorbed + mirrorAbsorbed + backAbsorbed + unshot + leftThroughOpenings + passedThrough -
+                        emitted);
     }
-    double directError() const { return relative(directReceived + mirrorAbsorbedDirect + backAbsorbed - emitted); }
+    double directError() const {
+        return relative(directReceived + mirrorAbsorbedDirect + backAbsorbed + passedThrough - emitted);
+    }
     /// What the secondary pass lost or made.
     double secondaryError() const {
         return relative(absorbed + mirrorAbsorbed + unshot + leftThroughOpenings - directReceived -

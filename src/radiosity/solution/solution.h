@@ -45,6 +45,8 @@ struct RadiositySolution {
     double mirrorAbsorbedDirect = 0, mirrorAbsorbedSecondary = 0;
     /// lm the surfaces reflect out through the openings (daylight), over the whole solution.
     double leftThroughOpenings = 0;
+    /// lm that comes in through an opening and leaves through one without meeting a surface.
+    double passedThrough = 0;
     /// lm the sun delivers onto surfaces from outdoors (not through an opening): light
     /// that enters the account there, besides what enters through the openings.
     double outdoorDirect = 0;

@@ -19,8 +19,8 @@ namespace {
 
 constexpr char kMagic[] = "RAYRADSOL";  // 9 bytes and a NUL
 constexpr uint32_t kVersion =
-    6;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux; 5: unshot net flux, not ΔL per patch;
-        // 6: the daylight's account (left through the openings, the sun outdoors)
+    7;  // 2: light groups' parts; 3: seam profiles; 4: emitted flux; 5: unshot net flux, not ΔL per patch;
+        // 6: the daylight's account (left through the openings, the sun outdoors); 7: daylight passing through
 constexpr uint32_t kByteOrder = 0x01020304;
 
 /// Appends values to a byte string; reads them back with bounds checks.
@@ -233,7 +233,8 @@ std::string encodeSolution(const RadiositySolution& sol, const SolutionFingerpri
         w.put(sol.unshotNetFlux);
     w.put(static_cast<uint8_t>(sol.converged));
     w.put(sol.seconds), w.put(sol.mirrorAbsorbedDirect), w.put(sol.mirrorAbsorbedSecondary),
-        w.put(sol.backAbsorbedDirect), w.put(sol.leftThroughOpenings), w.put(sol.outdoorDirect);
+        w.put(sol.backAbsorbedDirect), w.put(sol.leftThroughOpenings), w.put(sol.outdoorDirect),
+        w.put(sol.passedThrough);
     w.putArray(sol.backFlux);
     putProfiles(w, sol.seamProfiles);
     // The light groups' parts (the arrays the renderer reads), with the strengths they had.
@@ -317,6 +318,7 @@ RadiositySolution decodeSolution(const std::string& bytes, const std::string& pa
     sol.backAbsorbedDirect = r.get<double>("the statistics");
     sol.leftThroughOpenings = r.get<double>("the statistics");
     sol.outdoorDirect = r.get<double>("the statistics");
+    sol.passedThrough = r.get<double>("the statistics");
     // One back flux per surface group, as many as were written (the checksum vouches for n).
     sol.backFlux = r.getAnyArray<double>("the back fluxes");  // bounded by the file's size
     sol.seamProfiles = getProfiles(r, vertexCount, path);
