@@ -68,6 +68,22 @@ double openingQuadrature(const Vec3& x, double h, Luminance L, int n = 800) {
     return sum * cell * cell;
 }
 
+/// ∫ L(ω) cosθ_x cosθ_y / r² dA over the roof opening z = 3, |x|, |y| ≤ 1, seen from x on a
+/// plane facing −x (cosθ_x = −ω_x, 0 behind it), by the midpoint rule on a 1600² grid.
+template <class Luminance>
+double roofOpeningFacingMinusX(const Vec3& x, Luminance L) {
+    const int n = 1600;
+    const double cell = 2.0 / n;
+    double sum = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const Vec3 d = Vec3(-1 + (i + 0.5) * cell, -1 + (j + 0.5) * cell, 3) - x;
+            const double r2 = glm::dot(d, d), r = std::sqrt(r2);
+            if (d.x < 0) sum += L(d / r) * (-d.x / r) * (d.z / r) / r2;
+        }
+    return sum * cell * cell;
+}
+
 }  // namespace
 
 TEST_CASE("daylight: a uniform sky through a roof opening gives pi L F", "[daylight]") {
@@ -100,16 +116,7 @@ TEST_CASE("daylight: a glazed opening seen from beside its edge, against a quadr
     };
     for (double depth : {0.5, 0.1, 0.02}) {
         const Vec3 x(1.0, 0.0, 3 - depth);  // on the plane x = 1 through the opening's edge, facing −x
-        double reference = 0;
-        const int n = 1600;
-        const double cell = 2.0 / n;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) {
-                const Vec3 y(-1 + (i + 0.5) * cell, -1 + (j + 0.5) * cell, 3);
-                const Vec3 d = y - x;
-                const double r2 = glm::dot(d, d), r = std::sqrt(r2);
-                reference += glazed(d / r) * (-d.x / r) * (d.z / r) / r2 * cell * cell;
-            }
+        const double reference = roofOpeningFacingMinusX(x, glazed);
         const double e = s.at(x, {-1, 0, 0});
         INFO("reveal depth " << depth << ": " << e << " vs " << reference << " " << (e / reference - 1));
         CHECK(e == Approx(reference).epsilon(5e-3));
@@ -133,17 +140,8 @@ TEST_CASE("daylight: the sky seen through an opening in a mirror", "[daylight]")
     Setup plain(roofOpening(3, sky));
     for (const Vec3& x : {Vec3(0.5, 0, 0), Vec3(1.2, 0.7, 1.5)}) {
         const Vec3 image(3.0 - x.x, x.y, x.z);  // x mirrored in the plane x = 1.5, facing −x
-        double reference = 0;
-        const int n = 1600;
-        const double cell = 2.0 / n;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) {
-                const Vec3 y(-1 + (i + 0.5) * cell, -1 + (j + 0.5) * cell, 3);
-                const Vec3 d = y - image;
-                const double r2 = glm::dot(d, d), r = std::sqrt(r2);
-                if (d.x < 0)
-                    reference += 0.9 * plain.scene.daylight->luminance(d / r) * (-d.x / r) * (d.z / r) / r2 * cell * cell;
-            }
+        const double reference =
+            0.9 * roofOpeningFacingMinusX(image, [&](const Vec3& w) { return plain.scene.daylight->luminance(w); });
         const double viaMirror = mirrored.at(x, {1, 0, 0}) - plain.at(x, {1, 0, 0});
         INFO("at " << x.x << ", " << x.y << ", " << x.z << ": " << viaMirror << " vs " << reference);
         CHECK(viaMirror == Approx(reference).epsilon(5e-3));
