@@ -100,6 +100,20 @@ double standardSky(const scene::CieSkyParameters& p, double Z, double chi, doubl
 
 }  // namespace
 
+double skyOnHorizontalPlane(const scene::Daylight& d) {
+    const int nz = 900, na = 1800;
+    double sum = 0;
+    for (int i = 0; i < nz; ++i) {
+        const double z = (i + 0.5) * (kPi / 2) / nz;
+        for (int j = 0; j < na; ++j) {
+            const double a = (j + 0.5) * 2 * kPi / na;
+            const Vec3 local(std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z));
+            sum += d.luminance(local.x * d.east + local.y * d.north + local.z * d.up) * std::cos(z) * std::sin(z);
+        }
+    }
+    return sum * (kPi / 2 / nz) * (2 * kPi / na);
+}
+
 int validateDaylight() {
     std::vector<Check> checks;
 
@@ -193,17 +207,7 @@ int validateDaylight() {
         OpeningScene s(roof, R"("sky": {"type": "perez", "direct_normal_irradiance": 750,
                                         "diffuse_horizontal_irradiance": 110}, "sun": {"altitude": 35, "azimuth": 180})");
         const scene::Daylight& d = *s.scene.daylight;
-        const int nz = 900, na = 1800;
-        double sum = 0;
-        for (int i = 0; i < nz; ++i) {
-            const double z = (i + 0.5) * (kPi / 2) / nz;
-            for (int j = 0; j < na; ++j) {
-                const double a = (j + 0.5) * 2 * kPi / na;
-                sum += d.luminance({std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z)}) * std::cos(z) *
-                       std::sin(z);
-            }
-        }
-        return 100 * (sum * (kPi / 2 / nz) * (2 * kPi / na) / d.perez->diffuseHorizontalIlluminance - 1);
+        return 100 * (skyOnHorizontalPlane(d) / d.perez->diffuseHorizontalIlluminance - 1);
     }));
     checks.push_back(timed("Perez sky, the hour given as illuminances: D found back (Perez 1990 efficacy)", 0.5, "%", [&] {
         const scene::PerezConditions c{55 * kPi / 180, 172, 11};

@@ -1,5 +1,6 @@
 // The Perez all-weather sky: the 1990 indices and efficacies, the 1993 distribution, and
 // the sky a scene gets from one hour's weather.
+#include <app/validate_daylight.h>
 #include <scene/daylight/perez.h>
 #include <scene/scene_parser.h>
 
@@ -26,21 +27,6 @@ std::string refused(const std::string& daylight) {
         return e.what();
     }
     return {};
-}
-
-/// ∫ L cos Z dω over the sky by the midpoint rule in zenith angle and azimuth (dω = sin Z dZ dφ).
-double horizontalIlluminance(const scene::Daylight& d) {
-    const int nz = 900, na = 1800;
-    double sum = 0;
-    for (int i = 0; i < nz; ++i) {
-        const double z = (i + 0.5) * (kPi / 2) / nz;
-        for (int j = 0; j < na; ++j) {
-            const double a = (j + 0.5) * 2 * kPi / na;
-            const Vec3 local(std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z));
-            sum += d.luminance(local.x * d.east + local.y * d.north + local.z * d.up) * std::cos(z) * std::sin(z);
-        }
-    }
-    return sum * (kPi / 2 / nz) * (2 * kPi / na);
 }
 
 }  // namespace
@@ -94,7 +80,7 @@ TEST_CASE("perez: a scene's Perez sky sends its diffuse illuminance onto a horiz
                                   R"(}, "sun": {"latitude": 48.1, "longitude": 11.6, "utc_offset": 2, "date": "2026-06-21", "time": "15:00"}})");
         REQUIRE(d.perez);
         INFO(hour << ": ε " << d.perez->clearness << ", Δ " << d.perez->brightness);
-        CHECK(horizontalIlluminance(d) == Approx(d.perez->diffuseHorizontalIlluminance).epsilon(1e-3));
+        CHECK(app::skyOnHorizontalPlane(d) == Approx(d.perez->diffuseHorizontalIlluminance).epsilon(1e-3));
         CHECK(d.sunNormalIlluminance == Approx(d.perez->directNormalIlluminance));
     }
 }

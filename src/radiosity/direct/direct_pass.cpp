@@ -325,7 +325,7 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
         // An opening's sky at the points: the patch's factor (its pattern through the
         // opening changes little across the patch, the shadows much), which cancels in the ratio.
         const Vec3 a = t[0], ab = t[1] - t[0], ac = t[2] - t[0];
-        const double sky = patchSkyFactor(lights, s, normal, points, opens);
+        const double sky = light.sky && geometricRule > 0 ? rule / geometricRule : 1.0;  // patchSkyFactor, from the above
         for (const auto& uv : refined) {
             Vec3 x = a + uv[0] * ab + uv[1] * ac;
             Random rng = pointRandom(x);
