@@ -18,6 +18,7 @@
 #include <atomic>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -268,18 +269,37 @@ double integrateUnshadowed(const DirectLight& lights, size_t s, const std::array
     return sum;
 }
 
-/// The sky's factor over patch p for opening s (1 for a lamp): the 4-point means of its
-/// unshadowed light (`opens`) over π L̄ F at the same points (skyFactorAt over the patch).
-double patchSkyFactor(const DirectLight& lights, size_t s, const Vec3& normal, const std::array<Vec3, 4>& points,
-                      const Rgb* opens) {
+/// Above this spread of the sky's factor between a patch's four points ((max − min) / max),
+/// the sky's pattern through the opening changes across the patch — a bright part of the
+/// sky seen through a window lights a sharp-edged footprint, as a sky patch of the daylight
+/// coefficients does — and is not kept constant over it.
+constexpr double kSkyFactorSpread = 0.2;
+
+/// The sky's factor over a patch for an opening: the 4-point means of its unshadowed light
+/// (`open`) over π L̄ F at the same points (`geometric`); nothing when the factors of the
+/// four points spread more than kSkyFactorSpread.
+std::optional<double> skyFactorOver(const double* open, const double* geometric) {
+    double lo = std::numeric_limits<double>::max(), hi = 0;
+    for (int k = 0; k < 4; ++k) {
+        if (!(geometric[k] > 0)) continue;
+        const double f = open[k] / geometric[k];
+        lo = std::min(lo, f), hi = std::max(hi, f);
+    }
+    if (hi > 0 && hi - lo > kSkyFactorSpread * hi) return std::nullopt;
+    const double mean = fourPointMean(geometric[3], geometric);
+    return mean > 0 ? fourPointMean(open[3], open) / mean : 1.0;
+}
+
+/// The sky's factor over patch p for opening s (1 for a lamp): skyFactorOver its four points.
+std::optional<double> patchSkyFactor(const DirectLight& lights, size_t s, const Vec3& normal,
+                                     const std::array<Vec3, 4>& points, const Rgb* opens) {
     if (!lights.areaSource(s).sky) return 1.0;
     double geometric[4], open[4];
     for (int k = 0; k < 4; ++k) {
         geometric[k] = luminance(lights.unshadowedFromAreaSource(s, points[k], normal, false));
         open[k] = luminance(opens[k]);
     }
-    const double mean = fourPointMean(geometric[3], geometric);
-    return mean > 0 ? fourPointMean(open[3], open) / mean : 1.0;
+    return skyFactorOver(open, geometric);
 }
 
 /// Mean illuminance (lx) over patch p from area source s, or nullopt when the light is
@@ -325,12 +345,18 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
         // An opening's sky at the points: the patch's factor (its pattern through the
         // opening changes little across the patch, the shadows much), which cancels in the ratio.
         const Vec3 a = t[0], ab = t[1] - t[0], ac = t[2] - t[0];
-        const double sky = light.sky && geometricRule > 0 ? rule / geometricRule : 1.0;  // patchSkyFactor, from the above
+        // Where it does change (skyFactorOver: nothing), each point takes the opening whole.
+        const std::optional<double> sky = light.sky ? skyFactorOver(unshadowed, geometric) : 1.0;
         for (const auto& uv : refined) {
             Vec3 x = a + uv[0] * ab + uv[1] * ac;
             Random rng = pointRandom(x);
-            shadowed += lights.fromOpeningWithSkyFactor(s, x, normal, vis, areaSamples, &rng, sky);
-            open += sky * luminance(lights.unshadowedFromAreaSource(s, x, normal, false));
+            if (sky) {
+                shadowed += lights.fromOpeningWithSkyFactor(s, x, normal, vis, areaSamples, &rng, *sky);
+                open += *sky * luminance(lights.unshadowedFromAreaSource(s, x, normal, false));
+            } else {
+                shadowed += lights.fromAreaSource(s, x, normal, vis, areaSamples, &rng);
+                open += luminance(lights.unshadowedFromAreaSource(s, x, normal));
+            }
         }
     }
     // The colour of the light (per channel) with the luminance of the exact mean.
@@ -355,17 +381,19 @@ bool sameVisibleFraction(const Rgb* values, const Rgb* opens) {
 
 /// Mean illuminance (lx) over patch p from area source s over the first `count` of the
 /// `refined` points, for a patch that a shadow's edge crosses; an opening with the sky's
-/// factor `sky` over the patch (patchSkyFactor).
+/// factor `sky` over the patch (patchSkyFactor), or taken whole at each point without one.
 Rgb refinedAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
                           size_t s, const Visibility& vis, int areaSamples,
-                          const std::vector<std::array<double, 2>>& refined, size_t count, double sky) {
+                          const std::vector<std::array<double, 2>>& refined, size_t count,
+                          std::optional<double> sky) {
     const Vec3 a = mesh.corner(p, 0), ab = mesh.corner(p, 1) - a, ac = mesh.corner(p, 2) - a;
     count = std::min(count, refined.size());
     Rgb sum(0.0);
     for (size_t k = 0; k < count; ++k) {
         const Vec3 x = a + refined[k][0] * ab + refined[k][1] * ac;
         Random rng = pointRandom(x);
-        sum += lights.fromOpeningWithSkyFactor(s, x, normal, vis, areaSamples, &rng, sky);
+        sum += sky ? lights.fromOpeningWithSkyFactor(s, x, normal, vis, areaSamples, &rng, *sky)
+                   : lights.fromAreaSource(s, x, normal, vis, areaSamples, &rng);
     }
     return sum / static_cast<double>(count);
 }
