@@ -222,7 +222,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
     return runPipeline(sceneFile, scene::loadScene(sceneFile, options.overrides), options);
 }
 
-PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options) {
+PipelineRun preparePipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options,
+                            std::vector<std::string>* inSolid) {
     PipelineRun run;
     const radiosity::StageLog log = stageLog(run, options);
     run.report.begin("parse + build scene");
@@ -240,11 +241,17 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
     run.report.begin("visibility (Embree BVH)");
     run.embree = raytrace::buildEmbreeScene(run.scene, run.mesh);
     radiosity::findContacts(run.mesh, run.scene, *run.embree);
-    std::vector<std::string> inSolid;  // per sensor: why it is no measurement, or ""
-    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors, &inSolid)) {
+    for (auto& w : sceneWarnings(run.scene, run.mesh, *run.embree, options.wantSensors, inSolid)) {
         if (!options.quiet) fmt::print(stderr, "warning: {}: {}\n", sceneFile, w);
         run.warnings.push_back(std::move(w));
     }
+    return run;
+}
+
+PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options) {
+    std::vector<std::string> inSolid;  // per sensor: why it is no measurement, or ""
+    PipelineRun run = preparePipeline(sceneFile, desc, options, &inSolid);
+    const radiosity::StageLog log = stageLog(run, options);
 
     if (options.solutionFile.empty()) {
         solveLighting(run, sceneFile, options);

@@ -85,6 +85,12 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 /// again (a grid of 10⁶ sensors took 0.45 s to parse).
 PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options);
 
+/// The stages before the lighting (parse and build, premesh, visibility, the scene's
+/// warnings), for a caller that solves the lighting itself (the annual study solves it
+/// once per sky patch). `inSolid` (if given) gets, per sensor, why it is no measurement.
+PipelineRun preparePipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options,
+                            std::vector<std::string>* inSolid = nullptr);
+
 /// Ray traces one more view of a solved run (stage "ray trace (NAME)"): a second camera
 /// costs a ray trace, not a solve. Throws InputError for a name the scene does not have.
 RenderedView renderView(PipelineRun& run, const std::string& view, const PipelineOptions& options);

@@ -27,4 +27,10 @@ void keepLightGroup(Scene& scene, const std::string& group) {
         if (m.isEmissive() && m.lightGroup != group) m.emission = Rgb(0.0);
 }
 
+void removeElectricLight(Scene& scene) {
+    scene.lights.clear();
+    for (auto& m : scene.materials)
+        if (m.isEmissive()) m.emission = Rgb(0.0);
+}
+
 }  // namespace rayrad::scene

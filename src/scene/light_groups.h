@@ -19,4 +19,8 @@ std::vector<std::string> lightGroups(const Scene& scene);
 /// other emissive materials no longer emitting (they still reflect).
 void keepLightGroup(Scene& scene, const std::string& group);
 
+/// Removes every electric light (point lights, luminaires, emissive materials stop
+/// emitting): the daylight alone is left.
+void removeElectricLight(Scene& scene);
+
 }  // namespace rayrad::scene

@@ -67,7 +67,8 @@ DirectLight::DirectLight(const scene::Scene& scene) : m_pointLights(scene.lights
             // An opening: the sky behind it, seen from its front; its mean luminance
             // Φ_in / (π A) from what the unobstructed sky and ground send in.
             const double mean = enteringIlluminance(*m_daylight, normal, mat.transmittance) / kPi;
-            if (!(mean > 0)) continue;
+            // A dark sky behind it: no light of its own, but the sun still comes through it.
+            if (!(mean > 0) && !m_daylight->hasDirectSun()) continue;
             AreaLight light = makeAreaLight(std::move(vertices), normal, Rgb(mean));
             light.sky = m_daylight.get();
             light.transmittance = mat.transmittance;
@@ -278,6 +279,7 @@ Rgb DirectLight::fromAreaImage(size_t i, size_t k, const Vec3& x, const Vec3& n,
 
 Rgb DirectLight::unshadowedFromAreaSource(size_t s, const Vec3& x, const Vec3& n, bool withSky) const {
     auto open = [&](const AreaLight& light) {
+        if (light.luminance == Rgb(0.0)) return Rgb(0.0);
         if (light.sky && withSky) {
             double sky = 0;
             throughOpening(light, x, n, nullptr, 0, nullptr, &sky);  // at least kOpeningSamples parts

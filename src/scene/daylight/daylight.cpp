@@ -1,5 +1,6 @@
 #include <scene/daylight/daylight.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayrad::scene {
@@ -10,6 +11,10 @@ double Daylight::sunHorizontalIlluminance() const {
 
 double Daylight::luminance(const Vec3& w) const {
     const Vec3 local = toLocal(w);
+    if (channel) {
+        if (local.z < 0) return channel->patch == SkyChannel::kGround ? 1.0 : 0.0;
+        return channel->patch >= 0 ? channel->patches->weight(channel->patch, local) : 0.0;
+    }
     if (local.z < 0) return groundReflectance * (skyHorizontalIlluminance + sunHorizontalIlluminance()) / kPi;
     return zenithLuminance * distribution.relative(local, toLocal(sunDirection));
 }
@@ -21,6 +26,28 @@ double Daylight::sunDiskLuminance() const {
 
 bool Daylight::inSunDisk(const Vec3& w) const {
     return hasDirectSun() && glm::dot(w, sunDirection) >= std::cos(kSunAngularRadius);
+}
+
+Daylight channelDaylight(const Daylight& d, const SkyChannel& channel) {
+    Daylight c = d;
+    c.channel = channel;
+    c.sun.reset();
+    c.sunNormalIlluminance = 0;
+    c.perez.reset();
+    c.zenithLuminance = 0;
+    c.skyHorizontalIlluminance = 0;
+    c.medianExternalIlluminance.reset();
+    return c;
+}
+
+Daylight sunChannelDaylight(const Daylight& d, const Vec3& local) {
+    Daylight c = channelDaylight(d, {nullptr, SkyChannel::kDark});
+    const double altitude = std::asin(std::clamp(local.z, -1.0, 1.0)) * 180 / kPi;
+    const double azimuth = std::atan2(local.x, local.y) * 180 / kPi;
+    c.sun = SunPosition{altitude, azimuth < 0 ? azimuth + 360 : azimuth};
+    c.sunDirection = glm::normalize(local.x * c.east + local.y * c.north + local.z * c.up);
+    c.sunNormalIlluminance = 1;
+    return c;
 }
 
 bool setSkyAxes(Daylight& d, const Vec3& up, const Vec3& north) {
