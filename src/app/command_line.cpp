@@ -104,6 +104,35 @@ void addSolve(CLI::App& cli, SolveArgs& a) {
     addReports(solve, a.reports);
 }
 
+void addAnnual(CLI::App& cli, AnnualArgs& a) {
+    auto* annual = cli.add_subcommand(
+        "annual", "A year of daylight at the sensors from a weather file: daylight coefficients (one solve per sky "
+                  "patch), then every hour; DA, sDA, ASE, UDI and EN 17037");
+    addCommon(annual, a.common);
+    annual->add_option("--weather", a.weather, "The EnergyPlus weather file (.epw): place, time zone, hourly light")
+        ->required();
+    annual
+        ->add_option("--sky-patches", a.skyPatches,
+                     "Sky patches of the coefficients: 145 (Tregenza), 577 or 2305 (Reinhart's subdivisions)")
+        ->default_str("145");
+    annual->add_option("--occupancy", a.occupancy, "Occupied hours on the clock, START-END in h, every day")
+        ->default_str("8-18");
+    annual
+        ->add_option("--daylight-saving", a.daylightSaving,
+                     "Summer time of the occupancy's clock: none, us (2nd Sunday of March to 1st of November) or eu "
+                     "(last Sunday of March to last of October)")
+        ->default_str("none");
+    annual->add_option("--metrics", a.metrics, "Write each sensor's metrics as CSV");
+    annual->add_option("--hourly", a.hourly,
+                       "Write every hour's illuminance and direct sun at every sensor (binary float32, layout in "
+                       "docs/cli.md)");
+    annual->add_option("--plan", a.plan, "Write each grid's DA, ASE sun hours and UDI as false-colour plans (.png/.jpg)");
+    annual->add_option("--report", a.report, "Write the study as JSON");
+    annual->add_option("--hour", a.hour,
+                       "MM-DDTHH: also print that hour's illuminance at the single sensors, by part (the weather "
+                       "file's hour ending at HH:00 standard time), to hold against a solve of that hour's sky");
+}
+
 void addExport(CLI::App& cli, ExportArgs& a) {
     auto* exporter = cli.add_subcommand("export",
                                         "Write the lit mesh as binary glTF (.glb) for walkthroughs: light baked into "
@@ -237,6 +266,7 @@ void addValidate(CLI::App& cli, CommandLine& args) {
 void defineCommandLine(CLI::App& cli, CommandLine& args) {
     addRender(cli, args.render);
     addSolve(cli, args.solve);
+    addAnnual(cli, args.annual);
     addExport(cli, args.exporter);
     addSweep(cli, args.sweep);
     addInfo(cli, args.info);
@@ -257,6 +287,7 @@ void noteChosenCommand(const CLI::App& cli, CommandLine& args) {
     }
     const std::pair<const char*, Command> names[] = {
         {"render", Command::Render}, {"solve", Command::Solve}, {"export", Command::Export},  {"sweep", Command::Sweep},
+        {"annual", Command::Annual},
         {"info", Command::Info},     {"merge", Command::Merge}, {"compare", Command::Compare}};
     for (const auto& [name, command] : names)
         if (cli.got_subcommand(name)) args.command = command;
@@ -268,6 +299,8 @@ const CommonArgs* CommandLine::common() const {
             return &render.common;
         case Command::Solve:
             return &solve.common;
+        case Command::Annual:
+            return &annual.common;
         case Command::Export:
             return &exporter.common;
         case Command::Info:

@@ -49,6 +49,17 @@ struct SolveArgs {
     ReportArgs reports;
 };
 
+/// rayrad annual: a year of daylight from a weather file.
+struct AnnualArgs {
+    CommonArgs common;
+    std::string weather;          ///< the EPW file
+    int skyPatches = 145;         ///< 145, 577 or 2305
+    std::string occupancy = "8-18";
+    std::string daylightSaving = "none";
+    std::string metrics, hourly, plan, report;  ///< outputs
+    std::string hour;  ///< "MM-DDTHH": print that hour's illuminance at the sensors, by part
+};
+
 struct ExportArgs {
     CommonArgs common;
     std::string output, solution, exposure = "auto", tone = "exposure", whiteBalance = "none";
@@ -71,11 +82,13 @@ struct CommandLine {
         ValidateCube,
         ValidateSphere,
         ValidateLuminaire,
-        ValidateDaylight
+        ValidateDaylight,
+        Annual
     };
     Command command = Command::Info;
     RenderArgs render;
     SolveArgs solve;
+    AnnualArgs annual;
     ExportArgs exporter;
     CommonArgs info;
     SweepOptions sweep;

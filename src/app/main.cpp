@@ -1,4 +1,5 @@
 // rayrad: parse, build, solve, render, write — one call per stage (see app/pipeline.h).
+#include <app/annual/annual_command.h>
 #include <app/command_line.h>
 #include <app/compare.h>
 #include <app/image_output.h>
@@ -327,6 +328,8 @@ int runCommand(const app::CommandLine& args) {
             return runRender(args.render);
         case Command::Solve:
             return runSolve(args.solve);
+        case Command::Annual:
+            return app::runAnnual(args.annual);
         case Command::Export:
             return runExport(args.exporter);
         case Command::Info:
