@@ -227,12 +227,20 @@ int runAnnual(const AnnualArgs& args) {
     const std::vector<std::string> outputs{args.metrics, args.hourly, args.plan, args.report};
     addOutputs(files, outputs);
     const scene::WeatherFile weather = scene::readWeatherFile(args.weather);
+    const int year = weather.hours.size() == 8784 ? 2020 : 2021;  // the weekdays of summer time
+    if (std::none_of(weather.hours.begin(), weather.hours.end(), [&](const scene::WeatherHour& h) {
+            return isOccupied(year, h.month, h.day, h.hour - 0.5, occupancy);
+        }))
+        throw InputError(placeMessage("--occupancy", "",
+                                      fmt::format("the schedule {}–{} h takes no hour of the year (the weather file's "
+                                                  "hours are taken at their middles, 0:30, 1:30 …)",
+                                                  occupancy.start, occupancy.end)));
 
-    std::vector<std::string> excluded;
-    PipelineRun run = preparePipeline(a.scene, desc, o, &excluded);
-    if (!run.scene.daylight)
+    if (!desc.daylight)
         throw InputError(placeMessage(a.scene, "", "an annual study needs the scene's \"daylight\" (its axes, ground "
                                                    "and openings); the weather file gives the sky and the sun"));
+    std::vector<std::string> excluded;
+    PipelineRun run = preparePipeline(a.scene, desc, o, &excluded);
     if (run.scene.sensors.empty())
         throw InputError(placeMessage(a.scene, "", "an annual study needs sensors or grids to report at"));
     if (auto w = weatherPlaceWarning(weather, *run.scene.daylight)) fmt::print(stderr, "warning: {}: {}\n", a.scene, *w);
@@ -250,8 +258,7 @@ int runAnnual(const AnnualArgs& args) {
     const DaylightCoefficients dc = solveDaylightCoefficients(run, patches, fine, suns, a.quiet);
     run.report.begin(fmt::format("annual illuminance ({} sensors)", run.scene.sensors.size()));
     const AnnualThresholds thresholds;
-    const AnnualStudy study = runAnnualStudy(run, dc, skies, occupancy, thresholds, excluded,
-                                             weather.hours.size() == 8784 ? 2020 : 2021);
+    const AnnualStudy study = runAnnualStudy(run, dc, skies, occupancy, thresholds, excluded, year);
     run.report.end();
 
     // A broken result is no result.

@@ -23,14 +23,14 @@ scene::Daylight hourDaylight(const scene::WeatherHour& w, const scene::Daylight&
     const double direct = sun.altitudeDeg > 0 ? w.directNormalIrradiance : 0.0;
     d.perez = scene::perezFromIrradiance(direct, w.diffuseHorizontalIrradiance, {zenith, dayOfYear, w.dewPointC});
     d.sunNormalIlluminance = d.perez->directNormalIlluminance;
-    // finishDaylight's scale with a coarser quadrature (one per hour of the year).
+    // As finishDaylight, but the zenith luminance left for skyHourOf to find with the
+    // quadrature it makes anyway (one per hour of the year).
     const double altitude = sun.altitudeDeg * kPi / 180, azimuth = sun.azimuthDeg * kPi / 180;
     const Vec3 local(std::sin(azimuth) * std::cos(altitude), std::cos(azimuth) * std::cos(altitude), std::sin(altitude));
     d.sunDirection = glm::normalize(local.x * d.east + local.y * d.north + local.z * d.up);
     d.distribution = scene::SkyDistribution::perez(d.perez->coefficients, kPi / 2 - altitude);
-    const double factor = d.distribution.horizontalFactor(local, 96);
     d.skyHorizontalIlluminance = d.perez->diffuseHorizontalIlluminance;
-    d.zenithLuminance = factor > 0 ? d.skyHorizontalIlluminance / factor : 0.0;
+    d.zenithLuminance = 0;
     return d;
 }
 
@@ -49,21 +49,27 @@ SkyHour skyHourOf(const scene::Daylight& d, const scene::SkyPatches& patches, co
     }
     // L_j = ∫ tent_j L dω / Ω_j: the tents' sum keeps the sky's light (∫ Σ L_j tent_j dω =
     // ∫ L dω) and a narrow brightening (the sun's corona) is spread, not sampled.
+    // One quadrature over the sky (about 2° fine for 145 patches): the tents' means and,
+    // when the zenith luminance is still to be found, ∫ (L/L_z) cos Z dω.
     const Vec3 sunLocal = d.toLocal(d.sunDirection);
     std::vector<double> sum(static_cast<size_t>(patches.count()), 0.0);
+    double horizontal = 0;  // sr
     patches.forEachDirection(48 * patches.multiplicationFactor(), [&](const Vec3& l, double dOmega) {
         const double relative = d.distribution.relative(l, sunLocal) * dOmega;
+        horizontal += relative * l.z;
         const auto w = patches.weights(l);
         for (int k = 0; k < w.count; ++k) sum[static_cast<size_t>(w.patch[k])] += w.weight[k] * relative;
     });
+    const double zenith =
+        d.zenithLuminance > 0 ? d.zenithLuminance : horizontal > 0 ? d.skyHorizontalIlluminance / horizontal : 0.0;
     h.patchLuminance.resize(sum.size());
     for (int p = 0; p < patches.count(); ++p)
         h.patchLuminance[static_cast<size_t>(p)] =
-            static_cast<float>(d.zenithLuminance * sum[static_cast<size_t>(p)] / patches.tentSolidAngle(p));
+            static_cast<float>(zenith * sum[static_cast<size_t>(p)] / patches.tentSolidAngle(p));
     h.fineLuminance.resize(static_cast<size_t>(fine.count()));
     for (int p = 0; p < fine.count(); ++p)
         h.fineLuminance[static_cast<size_t>(p)] =
-            static_cast<float>(d.zenithLuminance * d.distribution.relative(fine.centre(p), sunLocal));
+            static_cast<float>(zenith * d.distribution.relative(fine.centre(p), sunLocal));
     return h;
 }
 

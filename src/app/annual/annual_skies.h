@@ -28,13 +28,15 @@ struct SkyHour {
 
 /// One hour's daylight `d` (its sky's distribution and scale, sun, ground) as the
 /// coefficients see it: each patch's luminance the sky's mean weighted by its tent,
-/// ∫ tent_j L dω / Ω_j (a quadrature about 2° fine for 145 patches).
+/// ∫ tent_j L dω / Ω_j (a quadrature about 2° fine for 145 patches), each fine patch's the
+/// sky's at its centre. With d.zenithLuminance 0 the zenith luminance is found from d's
+/// E_dh by the same quadrature.
 SkyHour skyHourOf(const scene::Daylight& d, const scene::SkyPatches& patches, const scene::SkyPatches& fine);
 
 /// Every hour of `weather` at its own place and time zone (the sun at each hour's middle),
 /// with the scene's axes and ground reflectance from `axes`: the Perez all-weather sky from
 /// the hour's direct normal and diffuse horizontal irradiance and dew point (Perez 1990
-/// efficacies), its zenith luminance from E_dh = L_z ∫ (L/L_z) cos Z dω (a 96-ring
+/// efficacies), its zenith luminance from E_dh = L_z ∫ (L/L_z) cos Z dω (skyHourOf's
 /// quadrature), the patches' luminance as skyHourOf.
 std::vector<SkyHour> annualSkies(const scene::WeatherFile& weather, const scene::Daylight& axes,
                                  const scene::SkyPatches& patches, const scene::SkyPatches& fine);
