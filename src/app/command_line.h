@@ -57,7 +57,7 @@ struct AnnualArgs {
     std::string occupancy = "8-18";
     std::string daylightSaving = "none";
     std::string metrics, hourly, plan, report;  ///< outputs
-    std::string hour;  ///< "MM-DDTHH": print that hour's illuminance at the sensors, by part
+    std::vector<std::string> hours;  ///< "MM-DDTHH": print those hours' illuminance at the sensors, by part
 };
 
 struct ExportArgs {

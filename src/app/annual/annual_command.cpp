@@ -252,6 +252,8 @@ int runAnnual(const AnnualArgs& args) {
     const auto patches = std::make_shared<const scene::SkyPatches>(mf);
     const auto fine = std::make_shared<const scene::SkyPatches>(kDirectSkyMultiplication);
     const auto skies = annualSkies(weather, *run.scene.daylight, *patches, *fine);
+    std::vector<size_t> printedHours;
+    for (const auto& hour : args.hours) printedHours.push_back(parseYearHour(hour, skies));
     const std::vector<char> suns = sunNodes(skies, *patches);
     run.report.begin(fmt::format("daylight coefficients ({} sky patches + ground, {} suns)", args.skyPatches,
                                  std::count(suns.begin(), suns.end(), 1)));
@@ -278,7 +280,7 @@ int runAnnual(const AnnualArgs& args) {
                dc.channels(), dc.solvedChannels, dc.solvedSuns, dc.solveCpuSeconds, dc.solveWallSeconds, study.cpuSeconds,
                study.wallSeconds, peakMemoryBytes() / 1048576.0);
 
-    if (!args.hour.empty()) printHour(run, dc, skies, parseYearHour(args.hour, skies));
+    for (size_t h : printedHours) printHour(run, dc, skies, h);
 
     if (!args.metrics.empty()) files.set(args.metrics, annualMetricsCsv(run.scene.sensors, study, excluded));
     if (!args.hourly.empty()) files.set(args.hourly, annualHourlyFile(study));

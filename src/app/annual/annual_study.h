@@ -5,6 +5,7 @@
 #include <app/annual/annual_metrics.h>
 #include <app/annual/annual_skies.h>
 #include <app/annual/daylight_coefficients.h>
+#include <app/annual/sun_light.h>
 
 #include <string>
 #include <vector>

@@ -1,9 +1,9 @@
-// Daylight coefficients: what each sky patch (and the ground) of 1 cd/m² does at every
-// sensor, direct and interreflected, and what a sun of 1 lx at each patch's centre adds by
-// interreflection, from one radiosity solve per channel; and the sun's direct light at a
-// sensor from any direction, exactly.
+// Daylight coefficients: what each sky patch's tent (and the ground) of 1 cd/m² and a sun
+// of 1 lx at each patch's centre add at every sensor by interreflection, from one radiosity
+// solve per channel; the sky's direct light beside them (sky_direct.h).
 #pragma once
 
+#include <app/annual/sky_direct.h>
 #include <app/pipeline.h>
 #include <scene/daylight/sky_patches.h>
 
@@ -11,29 +11,6 @@
 #include <vector>
 
 namespace rayrad::app {
-
-/// An opening of the scene, with points evenly over it (a barycentric grid on each of
-/// its triangles, `perSide` across for a triangle of average size).
-struct OpeningSamples {
-    Vec3 out{0.0};                 ///< unit, toward the sky
-    double transmittance = 1;      ///< normal τ
-    double area = 0;               ///< m²
-    std::vector<Vec3> points;
-    std::vector<double> pointArea;  ///< m² each stands for
-};
-std::vector<OpeningSamples> openingSamples(const scene::Scene& scene, int perSide);
-
-/// The sky's direct light at each sensor by direction, finer than the solves' channels:
-/// what each tent of a fine sky subdivision (and the ground) of 1 cd/m² gives the point
-/// straight through the openings, E = Σ_y τ cosθ_x cosθ_y / r² ΔA V over points y on the
-/// openings (32 × 32 a triangle), each direction shared among the tents around it.
-struct DirectSkyCoefficients {
-    std::shared_ptr<const scene::SkyPatches> patches;
-    /// Per point: (tent, lx per cd/m²), the ground as tent patches->count().
-    std::vector<std::vector<std::pair<uint32_t, float>>> terms;
-    double cpuSeconds = 0;
-};
-DirectSkyCoefficients directSkyCoefficients(const PipelineRun& run, std::shared_ptr<const scene::SkyPatches> fine);
 
 struct DaylightCoefficients {
     std::shared_ptr<const scene::SkyPatches> patches;
@@ -69,31 +46,5 @@ struct DaylightCoefficients {
 DaylightCoefficients solveDaylightCoefficients(PipelineRun& run, std::shared_ptr<const scene::SkyPatches> patches,
                                                std::shared_ptr<const scene::SkyPatches> fine,
                                                const std::vector<char>& sunNear, bool quiet);
-
-/// The sun's light in an hour of the year: its direct light at a sensor, exactly, and the
-/// factor its interreflected light from the suns around it takes.
-class SunLight {
-  public:
-    SunLight(const PipelineRun& run, const scene::SkyPatches& patches);
-    ~SunLight();
-    /// Direct light at the unit normal n of point x per lx of direct normal illuminance,
-    /// toward the unit world direction `toSun`: cosθ · τ of the glazings on the way ·
-    /// whether the way out is clear (one ray; the sun as a point).
-    double directAt(const Vec3& x, const Vec3& n, const Vec3& toSun) const;
-    /// The sun's interreflected light is interpolated between the suns at the centres of
-    /// the patches around it (weights w_j); k = Φ(s) / Σ_j w_j Φ(s_j) makes it bring in what
-    /// the sun itself lets in through the openings: Φ(s) = Σ_o A_o τ(θ) cosθ V_o(s), V_o the
-    /// share of 8 × 8 points on opening o whose way toward s is clear.
-    double sunScale(const Vec3& toSun, const scene::SkyPatches::Weights& w) const;
-    /// Φ(s), lm per lx of direct normal illuminance toward the unit world direction s.
-    double entering(const Vec3& toSky) const;
-
-  private:
-    const PipelineRun& m_run;
-    std::unique_ptr<radiosity::DirectLight> m_openingLights;  ///< every opening (under a uniform sky)
-    std::vector<OpeningSamples> m_openings;                   ///< 8 × 8 points a triangle
-    std::vector<double> m_nodeEntering;  ///< Φ at each patch's centre
-    double m_far = 0;                    ///< m: beyond the scene from anywhere in it
-};
 
 }  // namespace rayrad::app

@@ -62,24 +62,6 @@ class SkyPatches {
         }
     }
 
-    /// The mean of f(direction) over the patch (n × n points evenly in sin(altitude) and
-    /// azimuth, so each point stands for an equal solid angle).
-    template <class F>
-    double mean(int patch, F&& f, int n = 4) const {
-        double a0, a1, z0, z1;
-        bounds(patch, a0, a1, z0, z1);
-        const double s0 = std::sin(a0), s1 = std::sin(a1);
-        double sum = 0;
-        for (int i = 0; i < n; ++i) {
-            const double s = s0 + (s1 - s0) * (i + 0.5) / n, c = std::sqrt(std::max(0.0, 1 - s * s));
-            for (int j = 0; j < n; ++j) {
-                const double az = z0 + (z1 - z0) * (j + 0.5) / n;
-                sum += f(Vec3(std::sin(az) * c, std::cos(az) * c, s));
-            }
-        }
-        return sum / (n * n);
-    }
-
   private:
     /// Adds band `band`'s two patches around azimuth `az` (rad from north) with weight w.
     void addBand(size_t band, double az, double w, Weights& out) const;
