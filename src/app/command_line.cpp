@@ -128,6 +128,11 @@ void addAnnual(CLI::App& cli, AnnualArgs& a) {
                        "docs/cli.md)");
     annual->add_option("--plan", a.plan, "Write each grid's DA, ASE sun hours and UDI as false-colour plans (.png/.jpg)");
     annual->add_option("--report", a.report, "Write the study as JSON");
+    annual
+        ->add_option("--dimming", a.dimming,
+                     "LX: daylight-linked dimming: per sensor, the share of the scene's lamps' full-output energy "
+                     "needed to make up the daylight to LX in the occupied hours (ideal continuous dimming)")
+        ->check(CLI::Range(1e-6, 1e6));
     annual->add_option("--hour", a.hours,
                        "MM-DDTHH: also print that hour's illuminance at the single sensors, by part (the weather "
                        "file's hour ending at HH:00 standard time), to hold against a solve of that hour's sky "

@@ -58,6 +58,7 @@ struct AnnualArgs {
     std::string daylightSaving = "none";
     std::string metrics, hourly, plan, report;  ///< outputs
     std::vector<std::string> hours;  ///< "MM-DDTHH": print those hours' illuminance at the sensors, by part
+    double dimming = 0;              ///< lx: daylight-linked dimming of the lamps to this target (0: none)
 };
 
 struct ExportArgs {

@@ -19,18 +19,21 @@ plane='"sensors": [{"name": "floor", "position": [1,0.05,1], "normal": [0,1,0]}]
   "work_planes": [{"name": "floor plane", "outline": [[0,0],[2,0],[2,2],[0,2]], "height": 0.5, "border": 0.2, "spacing": 0.4}],
   "radiosity": {"max_edge": 0.5}'
 # The sun placed at Munich: the weather file's Chicago is far from it (a warning, not an error).
-scene court "{$materials, $walls, $plane, \"daylight\": {\"up\": [0,1,0], \"north\": [0,0,-1],
+# A lamp under the opening, for --dimming.
+lamp='"lights": [{"type": "point", "position": [1,1.8,1], "intensity_cd": 100}]'
+scene court "{$materials, $walls, $plane, $lamp, \"daylight\": {\"up\": [0,1,0], \"north\": [0,0,-1],
   \"sky\": {\"type\": \"cie_overcast\", \"diffuse_horizontal_illuminance\": 10000},
   \"sun\": {\"latitude\": 48.14, \"longitude\": 11.58, \"utc_offset\": 1, \"date\": \"2021-06-21\", \"time\": \"12:00\"}}}"
 
 # The year: every output, the grid's figures, the warning about the place.
 out=$("$rayrad" annual "$work/court.json" --weather "$epw" --metrics "$work/m.csv" --hourly "$work/h.bin" \
-      --plan "$work/plan.png" --report "$work/r.json" --hour 06-21T13 -q 2>"$work/err")
+      --plan "$work/plan.png" --report "$work/r.json" --hour 06-21T13 --dimming 500 -q 2>"$work/err")
 check "annual exits 0" [ $? -eq 0 ]
 check "warns of the place" grep -q "the weather file is for Chicago Ohare Intl Ap (41.98°, -87.92°) but the scene's sun is placed at (48.14°, 11.58°)" "$work/err"
 check "prints the grid" grep -q "^floor plane *16 *100.0%" <<<"$out"
 check "prints the hour by part" grep -q "^floor " <<<"$out"
-check "metrics CSV header" grep -q "^sensor,grid,da_pct,cda_pct,udi_below_pct,udi_useful_pct,udi_above_pct,sun_hours" "$work/m.csv"
+check "prints the dimming" grep -q "^daylight-linked dimming to 500 lx" <<<"$out"
+check "metrics CSV header" grep -q "^sensor,grid,da_pct,cda_pct,udi_below_pct,udi_useful_pct,udi_above_pct,sun_hours,en17037_target_pct,en17037_minimum_pct,excluded,lamp_energy_pct$" "$work/m.csv"
 check "metrics CSV rows" [ "$(wc -l < "$work/m.csv")" -eq 18 ]
 check "hourly header" bash -c "head -1 '$work/h.bin' | grep -q 'rayrad hourly illuminance 1 points=17 hours=8760 layout=point-major float32-le total-then-sun'"
 header=$(head -1 "$work/h.bin" | wc -c)
@@ -52,6 +55,9 @@ expect 2 "unknown summer time" "--daylight-saving: expected none, us or eu" -- a
 expect 2 "sky patch count" "--sky-patches: expected 145, 577 or 2305 sky patches, got 200" -- annual "$work/court.json" --weather "$epw" --sky-patches 200 --metrics "$work/out.csv"
 scene nosky "{$materials, $walls, $plane, \"lights\": [{\"type\": \"point\", \"position\": [1,1,1], \"intensity_cd\": 10}]}"
 expect 2 "scene without daylight" "nosky.json: an annual study needs the scene's \"daylight\"" -- annual "$work/nosky.json" --weather "$epw" --metrics "$work/out.csv"
+scene nolamp "{$materials, $walls, $plane, \"daylight\": {\"up\": [0,1,0], \"north\": [0,0,-1],
+  \"sky\": {\"type\": \"cie_overcast\", \"diffuse_horizontal_illuminance\": 10000}}}"
+expect 2 "dimming without lamps" "nolamp.json: --dimming: the scene has no lamps to dim" -- annual "$work/nolamp.json" --weather "$epw" --dimming 500 --metrics "$work/out.csv" -q
 expect 3 "plan as HDR" "a false-colour plan is a display image" -- annual "$work/court.json" --weather "$epw" --plan "$work/out.exr"
 
 finish "annual"

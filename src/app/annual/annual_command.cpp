@@ -2,6 +2,7 @@
 
 #include <app/annual/annual_skies.h>
 #include <app/annual/daylight_coefficients.h>
+#include <app/annual/daylight_dimming.h>
 #include <app/run_outputs.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
@@ -19,6 +20,7 @@
 #include <cstring>
 #include <iostream>
 #include <limits>
+#include <map>
 
 namespace rayrad::app {
 
@@ -68,15 +70,19 @@ std::optional<std::string> weatherPlaceWarning(const scene::WeatherFile& weather
 }
 
 std::string annualMetricsCsv(const std::vector<scene::Sensor>& sensors, const AnnualStudy& study,
-                             const std::vector<std::string>& excluded) {
+                             const std::vector<std::string>& excluded,
+                             const std::vector<std::optional<double>>& lampShares) {
     std::string s = "sensor,grid,da_pct,cda_pct,udi_below_pct,udi_useful_pct,udi_above_pct,sun_hours,"
-                    "en17037_target_pct,en17037_minimum_pct,excluded\n";
+                    "en17037_target_pct,en17037_minimum_pct,excluded";
+    s += lampShares.empty() ? "\n" : ",lamp_energy_pct\n";
     for (size_t i = 0; i < study.points; ++i) {
         const PointYear& p = study.pointYears[i];
-        s += fmt::format("{},{},{:.2f},{:.2f},{:.2f},{:.2f},{:.2f},{},{:.2f},{:.2f},{}\n", csvField(sensors[i].name),
+        s += fmt::format("{},{},{:.2f},{:.2f},{:.2f},{:.2f},{:.2f},{},{:.2f},{:.2f},{}", csvField(sensors[i].name),
                          csvField(sensors[i].grid), 100 * p.da, 100 * p.cda, 100 * p.udiBelow, 100 * p.udiUseful,
                          100 * p.udiAbove, p.sunHours, 100 * p.enTarget, 100 * p.enMinimum,
                          csvField(i < excluded.size() ? excluded[i] : std::string()));
+        if (!lampShares.empty()) s += lampShares[i] ? fmt::format(",{:.2f}", 100 * *lampShares[i]) : std::string(",");
+        s += "\n";
     }
     return s;
 }
@@ -144,7 +150,8 @@ tonemap::Picture annualPlans(const std::vector<scene::Sensor>& sensors, const An
 
 std::string annualReportJson(const std::string& sceneFile, const scene::WeatherFile& weather, int patches,
                              const Occupancy& occupancy, const DaylightCoefficients& dc, const AnnualStudy& study,
-                             const std::vector<scene::Sensor>& sensors, const std::vector<std::string>& excluded) {
+                             const std::vector<scene::Sensor>& sensors, const std::vector<std::string>& excluded,
+                             double dimming, const std::vector<std::optional<double>>& lampShares) {
     nlohmann::json j;
     j["scene"] = sceneFile;
     j["weather"] = {{"file", weather.path},      {"place", weather.city},
@@ -153,6 +160,7 @@ std::string annualReportJson(const std::string& sceneFile, const scene::WeatherF
     j["sky_patches"] = patches;
     j["occupancy"] = {{"start_h", occupancy.start}, {"end_h", occupancy.end}, {"hours", study.occupiedHours}};
     j["hours_with_daylight"] = study.litHours;
+    if (dimming > 0) j["dimming_target_lx"] = dimming;
     j["en17037_hours"] = study.en17037HourCount;
     j["coefficients"] = {{"channels", dc.channels()},
                          {"solved_channels", dc.solvedChannels},
@@ -178,9 +186,33 @@ std::string annualReportJson(const std::string& sceneFile, const scene::WeatherF
                             {"en17037_target", p.enTarget}, {"en17037_minimum", p.enMinimum}};
         if (!sensors[i].grid.empty()) e["grid"] = sensors[i].grid;
         if (i < excluded.size() && !excluded[i].empty()) e["excluded"] = excluded[i];
+        if (i < lampShares.size() && lampShares[i]) e["lamp_energy_share"] = *lampShares[i];
         j["sensors"].push_back(std::move(e));
     }
     return j.dump(2) + "\n";
+}
+
+/// Daylight-linked dimming: the lamps' energy share per single sensor and per grid (its
+/// points' mean).
+void printDimming(const std::vector<scene::Sensor>& sensors, const std::vector<std::optional<double>>& shares,
+                  double target) {
+    std::vector<std::string> order;
+    std::map<std::string, std::pair<double, int>> grids;
+    fmt::print("daylight-linked dimming to {:g} lx, the lamps' energy over the occupied hours (100 %: always full):\n",
+               target);
+    for (size_t i = 0; i < sensors.size(); ++i) {
+        if (!shares[i]) continue;
+        if (sensors[i].grid.empty()) {
+            fmt::print("  {:<16} {:6.1f} %\n", sensors[i].name, 100 * *shares[i]);
+            continue;
+        }
+        auto [it, added] = grids.try_emplace(sensors[i].grid, 0.0, 0);
+        if (added) order.push_back(sensors[i].grid);
+        it->second.first += *shares[i], ++it->second.second;
+    }
+    for (const auto& g : order)
+        fmt::print("  {:<16} {:6.1f} % (mean of {} points)\n", g, 100 * grids[g].first / grids[g].second,
+                   grids[g].second);
 }
 
 /// One hour at the single sensors (not the grids' points), by part.
@@ -248,6 +280,11 @@ int runAnnual(const AnnualArgs& args) {
         std::none_of(run.scene.sensors.begin(), run.scene.sensors.end(), [](const auto& s) { return !s.grid.empty(); }))
         throw InputError(placeMessage(a.scene, "", "--plan: the scene has no sensor grid or work plane"));
 
+    std::vector<double> lamps;  // lx at full output, for --dimming
+    if (args.dimming > 0) {
+        run.report.begin("lamps (for --dimming)");
+        lamps = lampIlluminance(run);
+    }
     run.report.begin(fmt::format("annual skies ({} hours)", weather.hours.size()));
     const auto patches = std::make_shared<const scene::SkyPatches>(mf);
     const auto fine = std::make_shared<const scene::SkyPatches>(kDirectSkyMultiplication);
@@ -271,10 +308,14 @@ int runAnnual(const AnnualArgs& args) {
                                        "no sensor receives any daylight in the whole year: does any opening face the "
                                        "sky? Nothing was written"));
 
+    const std::vector<std::optional<double>> lampShares =
+        args.dimming > 0 ? dimmingShares(study, lamps, args.dimming) : std::vector<std::optional<double>>{};
+
     fmt::print("{}, {} ({:.2f}°, {:.2f}°): {} hours with daylight, {} occupied ({:g}–{:g} h), {} EN 17037 hours\n",
                weather.city, weather.country, weather.latitudeDeg, weather.longitudeDeg, study.litHours,
                study.occupiedHours, occupancy.start, occupancy.end, study.en17037HourCount);
     if (!study.grids.empty()) fmt::print("{}", annualGridTable(study, thresholds));
+    if (args.dimming > 0) printDimming(run.scene.sensors, lampShares, args.dimming);
     fmt::print("coefficients: {} sky channels ({} solved) and {} suns in {:.1f} CPU-s ({:.1f} s wall); the year: {:.1f} CPU-s ({:.1f} s "
                "wall); peak memory {:.0f} MiB\n",
                dc.channels(), dc.solvedChannels, dc.solvedSuns, dc.solveCpuSeconds, dc.solveWallSeconds, study.cpuSeconds,
@@ -282,7 +323,8 @@ int runAnnual(const AnnualArgs& args) {
 
     for (size_t h : printedHours) printHour(run, dc, skies, h);
 
-    if (!args.metrics.empty()) files.set(args.metrics, annualMetricsCsv(run.scene.sensors, study, excluded));
+    if (!args.metrics.empty())
+        files.set(args.metrics, annualMetricsCsv(run.scene.sensors, study, excluded, lampShares));
     if (!args.hourly.empty()) files.set(args.hourly, annualHourlyFile(study));
     if (!args.plan.empty()) {
         const tonemap::Picture p = annualPlans(run.scene.sensors, study, excluded, thresholds);
@@ -290,7 +332,7 @@ int runAnnual(const AnnualArgs& args) {
     }
     if (!args.report.empty())
         files.set(args.report, annualReportJson(a.scene, weather, args.skyPatches, occupancy, dc, study,
-                                                run.scene.sensors, excluded));
+                                                run.scene.sensors, excluded, args.dimming, lampShares));
     files.commit();
     reportWritten(outputs);
     std::cerr << stagesSummary(run) << run.report.toString();

@@ -28,9 +28,11 @@ int patchMultiplicationFactor(int patches);
 std::optional<std::string> weatherPlaceWarning(const scene::WeatherFile& weather, const scene::Daylight& daylight);
 
 /// The per-sensor metrics as CSV: sensor,grid,da_pct,cda_pct,udi_below_pct,udi_useful_pct,
-/// udi_above_pct,sun_hours,en17037_target_pct,en17037_minimum_pct,excluded.
+/// udi_above_pct,sun_hours,en17037_target_pct,en17037_minimum_pct,excluded, and with
+/// `lampShares` (daylight-linked dimming) lamp_energy_pct (empty where no lamp reaches).
 std::string annualMetricsCsv(const std::vector<scene::Sensor>& sensors, const AnnualStudy& study,
-                             const std::vector<std::string>& excluded);
+                             const std::vector<std::string>& excluded,
+                             const std::vector<std::optional<double>>& lampShares = {});
 
 /// The hourly values: one text line "rayrad hourly illuminance 1 points=N hours=H
 /// layout=point-major float32-le total-then-sun\n", then N·H float32 of the total

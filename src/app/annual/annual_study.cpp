@@ -51,7 +51,8 @@ AnnualStudy runAnnualStudy(const PipelineRun& run, const DaylightCoefficients& d
     AnnualStudy s;
     s.points = dc.points;
     s.hours = hours.size();
-    std::vector<char> occupied(hours.size(), 0);
+    std::vector<char>& occupied = s.occupied;
+    occupied.assign(hours.size(), 0);
     for (size_t h = 0; h < hours.size(); ++h) {
         occupied[h] = isOccupied(year, hours[h].month, hours[h].day, hours[h].clockHour, occupancy);
         s.occupiedHours += occupied[h];

@@ -36,6 +36,7 @@ struct AnnualStudy {
     std::vector<float> total, sun;
     std::vector<PointYear> pointYears;
     std::vector<GridYear> grids;
+    std::vector<char> occupied;  ///< per hour
     int occupiedHours = 0, litHours = 0, en17037HourCount = 0;
     double cpuSeconds = 0, wallSeconds = 0;
 };
