@@ -108,7 +108,7 @@ double skyOnHorizontalPlane(const scene::Daylight& d) {
         for (int j = 0; j < na; ++j) {
             const double a = (j + 0.5) * 2 * kPi / na;
             const Vec3 local(std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z));
-            sum += d.luminance(local.x * d.east + local.y * d.north + local.z * d.up) * std::cos(z) * std::sin(z);
+            sum += d.luminance(d.toWorld(local)) * std::cos(z) * std::sin(z);
         }
     }
     return sum * (kPi / 2 / nz) * (2 * kPi / na);

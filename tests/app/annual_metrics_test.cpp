@@ -29,7 +29,6 @@ std::vector<SkyHour> hoursOf2021() {
         for (int d = 1; d <= kDays[m - 1]; ++d)
             for (int h = 1; h <= 24; ++h) {
                 SkyHour s;
-                s.hourOfYear = static_cast<int>(hours.size());
                 s.month = m, s.day = d, s.clockHour = h - 0.5;
                 hours.push_back(s);
             }

@@ -216,9 +216,9 @@ void printDimming(const std::vector<scene::Sensor>& sensors, const std::vector<s
 }
 
 /// One hour at the single sensors (not the grids' points), by part.
-void printHour(const PipelineRun& run, const DaylightCoefficients& dc, const std::vector<SkyHour>& skies, size_t h) {
+void printHour(const PipelineRun& run, const DaylightCoefficients& dc, const SunLight& sun,
+               const std::vector<SkyHour>& skies, size_t h) {
     const SkyHour& hour = skies[h];
-    const SunLight sun(run, *dc.patches);
     const double k = hour.sunNormal > 0 ? sun.sunScale(hour.toSun, hour.sunWeights) : 0.0;
     fmt::print("hour {} ({:02d}-{:02d}, {:.1f} h standard time): sun altitude {:.2f}°, azimuth {:.2f}°, E_n {:.0f} lx, "
                "E_dh {:.0f} lx; the sun's tents scaled by {:.3f}\n",
@@ -297,7 +297,8 @@ int runAnnual(const AnnualArgs& args) {
     const DaylightCoefficients dc = solveDaylightCoefficients(run, patches, fine, suns, a.quiet);
     run.report.begin(fmt::format("annual illuminance ({} sensors)", run.scene.sensors.size()));
     const AnnualThresholds thresholds;
-    const AnnualStudy study = runAnnualStudy(run, dc, skies, occupancy, thresholds, excluded, year);
+    const SunLight sun(run, *dc.patches);
+    const AnnualStudy study = runAnnualStudy(run, dc, sun, skies, occupancy, thresholds, excluded, year);
     run.report.end();
 
     // A broken result is no result.
@@ -321,7 +322,7 @@ int runAnnual(const AnnualArgs& args) {
                dc.channels(), dc.solvedChannels, dc.solvedSuns, dc.solveCpuSeconds, dc.solveWallSeconds, study.cpuSeconds,
                study.wallSeconds, peakMemoryBytes() / 1048576.0);
 
-    for (size_t h : printedHours) printHour(run, dc, skies, h);
+    for (size_t h : printedHours) printHour(run, dc, sun, skies, h);
 
     if (!args.metrics.empty())
         files.set(args.metrics, annualMetricsCsv(run.scene.sensors, study, excluded, lampShares));

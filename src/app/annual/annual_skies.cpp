@@ -26,8 +26,7 @@ scene::Daylight hourDaylight(const scene::WeatherHour& w, const scene::Daylight&
     // As finishDaylight, but the zenith luminance left for skyHourOf to find with the
     // quadrature it makes anyway (one per hour of the year).
     const double altitude = sun.altitudeDeg * kPi / 180, azimuth = sun.azimuthDeg * kPi / 180;
-    const Vec3 local(std::sin(azimuth) * std::cos(altitude), std::cos(azimuth) * std::cos(altitude), std::sin(altitude));
-    d.sunDirection = glm::normalize(local.x * d.east + local.y * d.north + local.z * d.up);
+    d.sunDirection = glm::normalize(d.toWorld(scene::skyDirection(altitude, azimuth)));
     d.distribution = scene::SkyDistribution::perez(d.perez->coefficients, kPi / 2 - altitude);
     d.skyHorizontalIlluminance = d.perez->diffuseHorizontalIlluminance;
     d.zenithLuminance = 0;
@@ -91,7 +90,6 @@ std::vector<SkyHour> annualSkies(const scene::WeatherFile& weather, const scene:
         SkyHour& h = hours[k];
         if (w.diffuseHorizontalIrradiance > 0 && sun.altitudeDeg > -6)  // civil twilight and day
             h = skyHourOf(hourDaylight(w, axes, sun, static_cast<int>(k / 24) + 1), patches, fine);
-        h.hourOfYear = static_cast<int>(k);
         h.month = w.month, h.day = w.day;
         h.clockHour = w.hour - 0.5;
         h.sunAltitudeDeg = sun.altitudeDeg, h.sunAzimuthDeg = sun.azimuthDeg;

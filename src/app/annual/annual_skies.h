@@ -12,7 +12,6 @@ namespace rayrad::app {
 
 /// One hour's daylight, reduced to what the coefficients need.
 struct SkyHour {
-    int hourOfYear = 0;          ///< 0 … 8759 (8783)
     int month = 1, day = 1;
     double clockHour = 0.5;      ///< local standard time of the hour's middle, h (EPW hour − ½)
     bool lit = false;            ///< some daylight: the sky's diffuse light or the sun

@@ -43,9 +43,9 @@ size_t parseYearHour(const std::string& text, const std::vector<SkyHour>& hours)
                                               text)));
 }
 
-AnnualStudy runAnnualStudy(const PipelineRun& run, const DaylightCoefficients& dc, const std::vector<SkyHour>& hours,
-                           const Occupancy& occupancy, const AnnualThresholds& thresholds,
-                           const std::vector<std::string>& excluded, int year) {
+AnnualStudy runAnnualStudy(const PipelineRun& run, const DaylightCoefficients& dc, const SunLight& sunLight,
+                           const std::vector<SkyHour>& hours, const Occupancy& occupancy,
+                           const AnnualThresholds& thresholds, const std::vector<std::string>& excluded, int year) {
     const auto start = std::chrono::steady_clock::now();
     const double cpuStart = processCpuSeconds();
     AnnualStudy s;
@@ -68,7 +68,6 @@ AnnualStudy runAnnualStudy(const PipelineRun& run, const DaylightCoefficients& d
     s.total.assign(s.points * s.hours, 0.0f);
     s.sun.assign(s.points * s.hours, 0.0f);
     s.pointYears.resize(s.points);
-    const SunLight sunLight(run, *dc.patches);
     std::vector<double> sunScale(hours.size(), 0.0);
     tbb::parallel_for(size_t(0), hours.size(), [&](size_t h) {
         if (hours[h].sunNormal > 0) sunScale[h] = sunLight.sunScale(hours[h].toSun, hours[h].sunWeights);

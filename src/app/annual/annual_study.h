@@ -44,8 +44,8 @@ struct AnnualStudy {
 /// Every hour at every sensor of `run`, and the metrics; `excluded` per sensor (inside a
 /// solid, buried: left out of the grids' shares, as in grid statistics). `year` places
 /// the occupancy's summer time. Throws InputError when the schedule takes no hour.
-AnnualStudy runAnnualStudy(const PipelineRun& run, const DaylightCoefficients& dc, const std::vector<SkyHour>& hours,
-                           const Occupancy& occupancy, const AnnualThresholds& thresholds,
+AnnualStudy runAnnualStudy(const PipelineRun& run, const DaylightCoefficients& dc, const SunLight& sunLight,
+                           const std::vector<SkyHour>& hours, const Occupancy& occupancy, const AnnualThresholds& thresholds,
                            const std::vector<std::string>& excluded, int year);
 
 }  // namespace rayrad::app

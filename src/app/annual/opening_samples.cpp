@@ -40,16 +40,22 @@ std::vector<OpeningSamples> openingSamples(const scene::Scene& scene, int perSid
 }
 
 std::unique_ptr<radiosity::DirectLight> openingGlazings(const scene::Scene& s) {
-    scene::Scene copy = s;
-    scene::Daylight& d = *copy.daylight;
+    // The openings alone (no other surface, lamp or mirror), seen from the whole scene.
+    scene::Scene copy;
+    copy.file = s.file;
+    copy.materials = s.materials;
+    copy.boundsMin = s.boundsMin, copy.boundsMax = s.boundsMax;
+    for (const auto& g : s.groups)
+        if (s.materials[g.material].isOpening()) copy.groups.push_back(g);
+    scene::Daylight d = *s.daylight;
     d.channel.reset();
     d.sun.reset();
     d.sunNormalIlluminance = 0;
     d.perez.reset();
     d.kind = scene::SkyKind::Uniform;
     scene::finishDaylight(d, 1.0, 0.0);
+    copy.daylight = std::move(d);
     return std::make_unique<radiosity::DirectLight>(copy);
 }
-
 
 }  // namespace rayrad::app

@@ -1,7 +1,6 @@
 #include <app/annual/sky_direct.h>
 
 #include <app/annual/opening_samples.h>
-#include <core/stage_report.h>
 
 #include <tbb/parallel_for.h>
 
@@ -12,7 +11,6 @@
 namespace rayrad::app {
 
 DirectSkyCoefficients directSkyCoefficients(const PipelineRun& run, std::shared_ptr<const scene::SkyPatches> fine) {
-    const double cpuStart = processCpuSeconds();
     DirectSkyCoefficients out;
     out.patches = std::move(fine);
     const scene::Scene& sc = run.scene;
@@ -49,7 +47,6 @@ DirectSkyCoefficients directSkyCoefficients(const PipelineRun& run, std::shared_
             if (e > 0) terms.emplace_back(tent, static_cast<float>(e));
         std::sort(terms.begin(), terms.end());
     });
-    out.cpuSeconds = processCpuSeconds() - cpuStart;
     return out;
 }
 

@@ -18,7 +18,6 @@ struct DirectSkyCoefficients {
     std::shared_ptr<const scene::SkyPatches> patches;
     /// Per point: (tent, lx per cd/m²), the ground as tent patches->count().
     std::vector<std::vector<std::pair<uint32_t, float>>> terms;
-    double cpuSeconds = 0;
 };
 DirectSkyCoefficients directSkyCoefficients(const PipelineRun& run, std::shared_ptr<const scene::SkyPatches> fine);
 

@@ -15,7 +15,7 @@ SunLight::SunLight(const PipelineRun& run, const scene::SkyPatches& patches)
     const scene::Daylight& d = *sc.daylight;
     for (int j = 0; j < patches.count(); ++j) {
         const Vec3 l = patches.centre(j);
-        m_nodeEntering.push_back(entering(glm::normalize(l.x * d.east + l.y * d.north + l.z * d.up)));
+        m_nodeEntering.push_back(entering(glm::normalize(d.toWorld(l))));
     }
 }
 

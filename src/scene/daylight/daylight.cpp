@@ -45,7 +45,7 @@ Daylight sunChannelDaylight(const Daylight& d, const Vec3& local) {
     const double altitude = std::asin(std::clamp(local.z, -1.0, 1.0)) * 180 / kPi;
     const double azimuth = std::atan2(local.x, local.y) * 180 / kPi;
     c.sun = SunPosition{altitude, azimuth < 0 ? azimuth + 360 : azimuth};
-    c.sunDirection = glm::normalize(local.x * c.east + local.y * c.north + local.z * c.up);
+    c.sunDirection = glm::normalize(c.toWorld(local));
     c.sunNormalIlluminance = 1;
     return c;
 }
@@ -64,9 +64,8 @@ bool setSkyAxes(Daylight& d, const Vec3& up, const Vec3& north) {
 void finishDaylight(Daylight& d, double zenithLuminance, double horizontal) {
     const double altitude = d.sun ? d.sun->altitudeDeg * kPi / 180 : kPi / 2;
     const double azimuth = d.sun ? d.sun->azimuthDeg * kPi / 180 : 0;
-    // Azimuth from north toward east: the local direction (sin az cos alt, cos az cos alt, sin alt).
-    const Vec3 local(std::sin(azimuth) * std::cos(altitude), std::cos(azimuth) * std::cos(altitude), std::sin(altitude));
-    d.sunDirection = glm::normalize(local.x * d.east + local.y * d.north + local.z * d.up);
+    const Vec3 local = skyDirection(altitude, azimuth);
+    d.sunDirection = glm::normalize(d.toWorld(local));
     d.distribution = d.perez ? SkyDistribution::perez(d.perez->coefficients, kPi / 2 - altitude)
                              : SkyDistribution(d.kind, d.cieType, kPi / 2 - altitude);
     const double factor = d.distribution.horizontalFactor(local);  // sr

@@ -7,6 +7,7 @@
 #include <scene/daylight/sky_patches.h>
 #include <scene/daylight/sun_position.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,7 +40,6 @@ struct Daylight {
     double skyHorizontalIlluminance = 0;   ///< E_dh: the unobstructed sky on a horizontal plane, lx
     std::optional<SunPosition> sun;        ///< where the sun is (given, or from a place and time)
     std::optional<Site> site;              ///< the place, when the sun is placed by place and time
-    double utcOffsetHours = 0;             ///< with `site`: the clock's offset from UTC, h
     Vec3 sunDirection{0, 0, 1};            ///< toward the sun, world space
     double sunNormalIlluminance = 0;       ///< E_n, lx on a plane facing the sun (0: no direct sun)
     double groundReflectance = 0.2;        ///< of the ground below the horizon
@@ -52,6 +52,8 @@ struct Daylight {
 
     /// A world direction in the sky frame (x east, y north, z up).
     Vec3 toLocal(const Vec3& w) const { return {glm::dot(w, east), glm::dot(w, north), glm::dot(w, up)}; }
+    /// A direction of the sky frame in world space.
+    Vec3 toWorld(const Vec3& l) const { return l.x * east + l.y * north + l.z * up; }
     /// Whether the sun shines on the scene: a direct illuminance and the sun above the horizon.
     bool hasDirectSun() const { return sunNormalIlluminance > 0 && sun && sun->altitudeDeg > 0; }
     /// The direct sun on a horizontal plane, E_n sin(altitude), lx (0 without direct sun).
@@ -65,6 +67,12 @@ struct Daylight {
     /// Whether the unit direction w points into the sun's disk.
     bool inSunDisk(const Vec3& w) const;
 };
+
+/// The unit direction (x east, y north, z up) of altitude and azimuth (from north toward
+/// east), rad: (sin az cos alt, cos az cos alt, sin alt).
+inline Vec3 skyDirection(double altitude, double azimuth) {
+    return {std::sin(azimuth) * std::cos(altitude), std::cos(azimuth) * std::cos(altitude), std::sin(altitude)};
+}
 
 /// The sky frame's axes from `up` and `north` (north made perpendicular to up), nothing
 /// when they are parallel or zero.

@@ -58,7 +58,6 @@ void parseSun(JsonObject s, Daylight& d, int& dayOfYear) {
     if (s.context().errors == 0) {
         d.sun = sunPosition(time, site);
         d.site = site;
-        d.utcOffsetHours = time.utcOffsetHours;
         dayOfYear = static_cast<int>(julianDay(time.year, time.month, time.day, 12) -
                                      julianDay(time.year, 1, 1, 12)) + 1;
     }

@@ -78,12 +78,13 @@ double SkyDistribution::relative(const Vec3& local, const Vec3& sunLocal) const 
     return 1.0;
 }
 
-double SkyDistribution::horizontalFactor(const Vec3& sunLocal, int rings) const {
+double SkyDistribution::horizontalFactor(const Vec3& sunLocal) const {
     if (m_kind == SkyKind::Uniform) return kPi;
     if (m_kind == SkyKind::CieOvercast) return 7 * kPi / 9;  // ∫ (1 + 2 cos Z)/3 cos Z dω
     // Midpoint rule in (cos Z, azimuth): dω = d(cos Z) dφ, so the cosine weight is the
-    // coordinate itself. 720 rings resolve the sun's corona (exp(d χ), d ≥ −3) to 10⁻⁴.
-    const int kRings = rings, kSectors = 2 * rings;
+    // coordinate itself. Fine enough that the sun's corona (exp(d χ), d ≥ −3) is resolved
+    // to better than 10⁻⁴.
+    constexpr int kRings = 720, kSectors = 1440;
     double sum = 0;
     for (int i = 0; i < kRings; ++i) {
         const double cosZ = (i + 0.5) / kRings, sinZ = std::sqrt(1 - cosZ * cosZ);

@@ -42,9 +42,8 @@ class SkyDistribution {
     double relative(const Vec3& local, const Vec3& sunLocal) const;
     /// ∫ (L / L_z) cos Z dω over the sky hemisphere, sr: the horizontal illuminance of the
     /// sky (lx) per cd/m² of zenith luminance. Analytic for the uniform (π) and the
-    /// traditional overcast sky (7π / 9); numerical (a midpoint rule over `rings` rings of
-    /// cos Z and twice as many sectors; the default 720 resolves the sun's corona to 10⁻⁴) otherwise.
-    double horizontalFactor(const Vec3& sunLocal, int rings = 720) const;
+    /// traditional overcast sky (7π / 9); numerical (a fine midpoint rule) otherwise.
+    double horizontalFactor(const Vec3& sunLocal) const;
     /// Whether the distribution depends on where the sun is (types with c or e ≠ 0).
     bool needsSun() const {
         return m_kind == SkyKind::Perez || (m_kind == SkyKind::CieStandard && (m_p.c != 0 || m_p.e != 0));
