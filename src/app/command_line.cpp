@@ -178,10 +178,19 @@ void addSweep(CLI::App& cli, SweepOptions& a) {
     sweep->add_option("--rayrad", a.rayrad, "The rayrad the jobs run (default: this one's absolute path)");
 }
 
-void addInfo(CLI::App& cli, CommonArgs& a) {
-    auto* info =
-        cli.add_subcommand("info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry");
-    addCommon(info, a);
+void addInfo(CLI::App& cli, InfoArgs& a) {
+    auto* info = cli.add_subcommand(
+        "info", "Counts, and the stages the scene needs; for an .ies or .ldt file, its photometry and UGR table");
+    addCommon(info, a.common);
+    info->add_flag("--ugr-table", a.ugrTable,
+                   "For an .ies or .ldt file: its UGR table (CIE 190 tabular method: rooms 2H to 12H, five "
+                   "reflectance combinations, viewed crosswise and endwise)");
+    info->add_option("--ugr-spacing", a.ugrSpacing,
+                     "The table's luminaire spacing S / H (0.25 as most catalogues; 1 as CIE 190's standard-condition "
+                     "table)")
+        ->default_str("0.25")
+        ->check(CLI::Range(0.05, 4.0));
+    info->add_option("--ugr-csv", a.ugrCsv, "Also write the UGR table as CSV");
 }
 
 void addMerge(CLI::App& cli, MergeArgs& a) {
@@ -310,7 +319,7 @@ const CommonArgs* CommandLine::common() const {
         case Command::Export:
             return &exporter.common;
         case Command::Info:
-            return &info;
+            return &info.common;
         default:
             return nullptr;
     }

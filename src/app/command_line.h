@@ -43,6 +43,14 @@ struct RenderArgs {
     std::string solution, tile, frames;
 };
 
+/// rayrad info: the scene (or photometric file), and for a photometric file its UGR table.
+struct InfoArgs {
+    CommonArgs common;
+    bool ugrTable = false;     ///< --ugr-table
+    double ugrSpacing = 0.25;  ///< --ugr-spacing, S / H
+    std::string ugrCsv;        ///< --ugr-csv FILE
+};
+
 struct SolveArgs {
     CommonArgs common;
     std::string csv, save;
@@ -91,7 +99,7 @@ struct CommandLine {
     SolveArgs solve;
     AnnualArgs annual;
     ExportArgs exporter;
-    CommonArgs info;
+    InfoArgs info;
     SweepOptions sweep;
     MergeArgs merge;
     CompareOptions compare;

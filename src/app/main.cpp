@@ -333,7 +333,7 @@ int runCommand(const app::CommandLine& args) {
         case Command::Export:
             return runExport(args.exporter);
         case Command::Info:
-            return app::printSceneInfo(args.info.scene, overridesOf(args.info));
+            return app::printSceneInfo(args.info, overridesOf(args.info.common));
     }
     return kExitInternalError;
 }

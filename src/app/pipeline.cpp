@@ -279,6 +279,12 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
         run.skipped.push_back("sensors (not asked for: --sensors, --report or --grid-picture)");
     }
 
+    if (options.wantSensors && !run.scene.observers.empty()) {
+        run.glare = observerGlare(run);
+    } else if (!run.scene.observers.empty()) {
+        run.skipped.push_back("glare (not asked for: --sensors or --report)");
+    }
+
     if (options.wantImage) {
         run.report.begin(run.scene.render.gatherIndirect ? "ray trace (indirect: a final gather at each hit)"
                                                          : "ray trace");

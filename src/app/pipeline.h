@@ -1,6 +1,7 @@
 // The pipeline, one call per stage: scene → patches → direct → secondary → sensors → image.
 #pragma once
 
+#include <app/glare/observer_glare.h>
 #include <app/sensor_table.h>
 #include <core/hdr_image.h>
 #include <core/output_file.h>
@@ -66,6 +67,7 @@ struct PipelineRun {
     std::unique_ptr<raytrace::EmbreeScene> embree;
     radiosity::Lighting lighting;  ///< the lights, clusters and solution, and the solve's counts
     std::vector<SensorResult> sensors;
+    std::vector<ObserverGlare> glare;  ///< UGR at the scene's observers
     std::optional<HdrImage> image;         ///< cd/m², the plain average of each pixel's samples (EXR, numbers)
     std::optional<HdrImage> displayImage;  ///< the range-compressed average display images are made from
     StageReport report;

@@ -61,7 +61,7 @@ void addOutputs(OutputFiles& files, const std::vector<std::string>& paths) {
 
 std::vector<std::string> SensorFiles::all() const {
     std::vector<std::string> out;
-    for (const auto* p : {&points, &grids, &groups})
+    for (const auto* p : {&points, &grids, &groups, &glare})
         if (!p->empty()) out.push_back(*p);
     return out;
 }
@@ -72,6 +72,7 @@ SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath
     f.points = csvPath;
     if (hasSensorGrids(desc)) f.grids = gridSummaryPath(csvPath);
     if ((!desc.sensors.empty() || !desc.surfaceGrids.empty()) && hasLightGroups(desc)) f.groups = lightGroupPath(csvPath);
+    if (!desc.observers.empty()) f.glare = observerGlarePath(csvPath);
     return f;
 }
 
@@ -85,6 +86,9 @@ std::optional<LightGroupParts> reportSensors(PipelineRun& run, const std::string
     if (!run.sensors.empty()) std::cout << sensorTable(run.sensors) << gridTable(grids);
     if (!f.points.empty()) files.set(f.points, sensorCsv(run.sensors));
     if (!f.grids.empty()) files.set(f.grids, gridCsv(grids));
+    if (!run.glare.empty()) std::cout << "\nglare at the observers (UGR, CIE 117; L_b = E_ind / pi):\n"
+                                      << observerGlareTable(run.glare);
+    if (!f.glare.empty()) files.set(f.glare, observerGlareCsv(run.glare));
     const auto groups = scene::lightGroups(run.scene);
     if (groups.empty() || (run.sensors.empty() && !forSavedSolution)) return std::nullopt;
     run.report.begin(fmt::format("light groups ({} solves)", groups.size()));

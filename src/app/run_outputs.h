@@ -22,9 +22,10 @@ OutputFiles filesOf(const scene::SceneDesc& desc);
 void addOutputs(OutputFiles& files, const std::vector<std::string>& paths);
 
 /// What `--sensors FILE.csv` writes: the points and, beside them, the grid statistics
-/// (when the scene has grids) and each light group's part (when its emitters name groups).
+/// (when the scene has grids), each light group's part (when its emitters name groups) and
+/// the glare at the observers (when it has observers).
 struct SensorFiles {
-    std::string points, grids, groups;
+    std::string points, grids, groups, glare;
     std::vector<std::string> all() const;
 };
 SensorFiles sensorFiles(const scene::SceneDesc& desc, const std::string& csvPath);

@@ -104,6 +104,7 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
         j["grids"].push_back(e);
     }
     if (groups) j["light_groups"] = lightGroupJson(run.sensors, *groups);
+    if (!run.glare.empty()) j["observers"] = observerGlareJson(run.glare);
     return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) +
            "\n";  // names may come from --set or mesh files
 }

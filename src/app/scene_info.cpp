@@ -1,6 +1,9 @@
 #include <app/scene_info.h>
 
+#include <app/glare/ugr_table.h>
 #include <app/photometry_report.h>
+#include <core/input_error.h>
+#include <core/output_file.h>
 #include <app/pipeline.h>
 #include <app/problem_size.h>
 #include <app/scene_warnings.h>
@@ -15,11 +18,28 @@
 
 namespace rayrad::app {
 
-int printSceneInfo(const std::string& file, const std::vector<scene::Override>& overrides) {
+int printSceneInfo(const InfoArgs& args, const std::vector<scene::Override>& overrides) {
+    const std::string& file = args.common.scene;
     if (scene::isPhotometricFile(file)) {
-        fmt::print("{}", app::photometryReport(scene::readPhotometry(file)));
+        OutputFiles files;
+        files.addInput(file);
+        if (!args.ugrCsv.empty()) files.add(args.ugrCsv);
+        const scene::Photometry p = scene::readPhotometry(file);
+        fmt::print("{}", app::photometryReport(p));
+        if (args.ugrTable || !args.ugrCsv.empty()) {
+            const UgrTable table = ugrTable(p, args.ugrSpacing);
+            fmt::print("\n{}", ugrTableText(table, p));
+            if (!args.ugrCsv.empty()) {
+                files.set(args.ugrCsv, ugrTableCsv(table));
+                files.commit();
+                fmt::print(stderr, "wrote {}\n", args.ugrCsv);
+            }
+        }
         return 0;
     }
+    if (args.ugrTable || !args.ugrCsv.empty())
+        throw InputError(placeMessage("", "--ugr-table", "a UGR table is made for a photometric file (.ies, .ldt), not a "
+                                                          "scene: use observers in the scene for UGR in a room"));
     auto scene = app::loadSceneFile(file, overrides);
     const double estimate = app::checkPatchCount(file, scene);
     auto mesh = radiosity::prepareMesh(scene, {});

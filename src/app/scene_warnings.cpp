@@ -222,6 +222,14 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
     return out;
 }
 
+std::optional<std::string> insideSolid(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                                       const raytrace::EmbreeScene& embree, const Vec3& point) {
+    const double diagonal = scene.diagonal();
+    const Probe p = Prober(mesh, embree, diagonal).probe(point, Vec3(0.0), std::max(5e-3, 1e-4 * diagonal));
+    if (p.fraction(p.backFaces) < kEnclosedFraction) return std::nullopt;
+    return fmt::format("{} of {} rays from it hit the inside of surfaces", p.backFaces, p.rays);
+}
+
 std::optional<std::string> backLightWarning(const scene::Scene& scene, const radiosity::RadiositySolution& solution,
                                             double emittedFlux) {
     if (emittedFlux <= 0 || solution.backAbsorbedDirect < kBackLightShare * emittedFlux) return std::nullopt;

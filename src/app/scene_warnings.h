@@ -26,6 +26,11 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
                                        const raytrace::EmbreeScene& embree, bool checkSensors = true,
                                        std::vector<std::string>* inSolid = nullptr);
 
+/// Why a point is inside a closed solid — "N of 64 rays from it hit the inside of
+/// surfaces" — or nothing when it is not (the probe sceneWarnings uses for lights).
+std::optional<std::string> insideSolid(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                                       const raytrace::EmbreeScene& embree, const Vec3& point);
+
 /// Above this share of the emitted flux, light on the backs of one-sided surfaces is
 /// worth a warning.
 constexpr double kBackLightShare = 1e-3;

@@ -159,6 +159,7 @@ struct Scene : Settings {
     std::vector<Camera> pathFrames;  ///< the walkthrough's frames ("camera_path"), in order
     std::vector<Sensor> sensors;
     std::optional<Daylight> daylight;  ///< the sky and the sun, lighting through the openings
+    std::vector<Observer> observers;   ///< eyes where glare is reported
     BuildWarnings warnings;
 
     /// Axis-aligned bounds of all geometry.

@@ -151,6 +151,7 @@ class Builder {
             s.sensors.push_back(
                 {d.name, d.grid, d.gridU, d.gridV, d.position, d.normal, d.refDirect, d.refIndirect, d.refTotal});
         addSurfaceGrids(s);
+        s.observers = m_desc.observers;
         if (m_desc.camera) s.camera = camera(s, *m_desc.camera);
         for (const auto& [name, c] : m_desc.views) s.views.push_back({name, camera(s, c)});
         if (m_desc.cameraPath) s.pathFrames = pathFrames(s, *m_desc.cameraPath);

@@ -3,6 +3,7 @@
 
 #include <core/math.h>
 #include <scene/daylight/daylight.h>
+#include <scene/observers.h>
 #include <scene/settings.h>
 
 #include <glm/mat4x4.hpp>
@@ -146,6 +147,7 @@ struct SceneDesc : Settings {
     std::vector<SensorDesc> sensors;            ///< points, with grids already expanded
     std::vector<SurfaceGridDesc> surfaceGrids;  ///< expanded into sensors by the builder
     std::optional<Daylight> daylight;           ///< "daylight": the sky and the sun
+    std::vector<Observer> observers;            ///< "observers": eyes where glare is reported
 };
 
 }  // namespace rayrad::scene

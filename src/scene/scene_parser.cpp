@@ -722,7 +722,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     top.string("provenance");
     // Unknown top-level keys first: a misspelt "Materials" explains the errors it causes.
     top.finish({"materials", "objects", "lights", "camera", "cameras", "sensors", "sensor_grids", "work_planes",
-                "surface_grids", "camera_path", "radiosity", "clusters", "render", "daylight"});
+                "surface_grids", "camera_path", "radiosity", "clusters", "render", "daylight", "observers"});
 
     std::map<std::string, int> materialIndex;
     if (auto mats = top.object("materials")) {
@@ -782,6 +782,7 @@ SceneDesc parseScene(const std::string& text, const std::string& fileName, const
     eachObject("sensor_grids", [&](JsonObject o, int i) { parseSensorGrid(o, i, desc.sensors); });
     eachObject("work_planes", [&](JsonObject o, int i) { parseWorkPlane(o, i, desc.sensors); });
     eachObject("surface_grids", [&](JsonObject o, int i) { desc.surfaceGrids.push_back(parseSurfaceGrid(o, i)); });
+    eachObject("observers", [&](JsonObject o, int i) { desc.observers.push_back(parseObserver(o, i)); });
     if (auto r = top.object("radiosity")) parseRadiosity(*r, desc);
     if (auto c = top.object("clusters")) parseClusters(*c, desc);
     if (auto r = top.object("render")) parseRender(*r, desc);

@@ -1,5 +1,6 @@
 #include <scene/sensor_parser.h>
 
+#include <scene/observers.h>
 #include <scene/polygon.h>
 
 #include <fmt/format.h>
@@ -161,6 +162,43 @@ SurfaceGridDesc parseSurfaceGrid(JsonObject g, int index) {
     d.offset = g.nonNegative("offset", 0.0);
     d.minArea = g.nonNegative("min_area", d.minArea);
     g.finish();
+    return d;
+}
+
+Observer parseObserver(JsonObject o, int index) {
+    Observer d;
+    d.where = o.path();
+    d.name = o.string("name").value_or("O" + std::to_string(index));
+    o.required("position");
+    d.position = o.vec3("position").value_or(Vec3(0.0));
+    const auto direction = o.vec3("direction");
+    const auto lookAt = o.vec3("look_at");
+    if (direction && lookAt) o.error("look_at", "give \"direction\" or \"look_at\", not both");
+    if (!direction && !lookAt) o.error("direction", "missing: where the observer looks (\"direction\" or \"look_at\")");
+    const Vec3 sight = direction ? *direction : lookAt ? *lookAt - d.position : Vec3(0, 0, -1);
+    if (auto unit = unitDirection(sight)) d.direction = *unit;
+    else o.error(direction ? "direction" : "look_at", "the view direction has zero length");
+    if (auto up = o.vec3("up")) {
+        if (auto unit = unitDirection(*up)) d.up = *unit;
+        else o.error("up", "up must not be zero");
+    }
+    if (std::abs(glm::dot(d.up, d.direction)) > 1 - 1e-9)
+        o.error(o.has("up") ? "up" : "direction", "up must not be parallel to the view direction");
+    if (auto limit = o.number("ugr_limit")) {
+        if (!(*limit > 0) || !(*limit < 40))
+            o.error("ugr_limit", fmt::format("expected a UGR between 0 and 40, got {:g}", *limit));
+        d.ugrLimit = *limit;
+    }
+    if (auto task = o.string("task")) {
+        d.task = *task;
+        if (auto limit = ugrTaskLimit(*task)) {
+            if (d.ugrLimit) o.error("task", "give \"ugr_limit\" or \"task\", not both");
+            d.ugrLimit = limit;
+        } else {
+            o.error("task", fmt::format("unknown task \"{}\": one of {}", *task, ugrTaskNames()));
+        }
+    }
+    o.finish();
     return d;
 }
 

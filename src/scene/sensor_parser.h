@@ -1,4 +1,4 @@
-// Sensors, sensor grids and work planes: the scene parser's part for where illuminance is
+// Sensors, sensor grids, work planes and observers: the scene parser's part for where illuminance is
 // reported (scene_parser.cpp reads the rest).
 #pragma once
 
@@ -23,6 +23,10 @@ void parseWorkPlane(JsonObject w, int index, std::vector<SensorDesc>& out);
 /// A grid on surfaces of the scene (a material's faces), checked here and expanded by
 /// the builder (scene/surface_grids.h).
 SurfaceGridDesc parseSurfaceGrid(JsonObject g, int index);
+
+/// One observer: "name" (default "O<index>"), "position", "direction" or "look_at", "up"
+/// (default [0, 1, 0]), and "ugr_limit" or "task" (ugrTaskLimit's names).
+Observer parseObserver(JsonObject o, int index);
 
 /// EN 12464-1 (after EN 12193): the grid spacing for an area whose longer side is d
 /// metres, p = 0.2 · 5^log10(d) m (0.2 m at 1 m, 1 m at 10 m, 5 m at 100 m), at most 10 m.
