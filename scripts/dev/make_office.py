@@ -2,7 +2,8 @@
 """Writes scenes/office/office.json: a 6 x 8 x 2.8 m office lit by eight recessed LED
 luminaires (the CIE 190:2010 example luminaire, tests/data/luminaires/
 eulumdatugr_sample_11.ldt, scaled to 3 600 lm each), with four desks, a cabinet, a work
-plane at 0.75 m (0.5 m border, EN 12464-1 spacing) and a camera.
+plane at 0.75 m (0.5 m border, EN 12464-1 spacing), four seated observers (UGR, EN 12464-1's
+limit for offices) and a camera.
 
 Usage: scripts/dev/make_office.py > scenes/office/office.json
 """
@@ -31,7 +32,7 @@ def main():
                            "flux_lm": 3600, "maintenance_factor": 0.8, "cct_k": 4000})
     scene = {
         "description": "Office, 6 x 8 x 2.8 m, eight recessed LED luminaires (CIE 190 example distribution, "
-                       "3 600 lm, maintenance factor 0.8, 4 000 K), four desks, a cabinet; work plane at 0.75 m. "
+                       "3 600 lm, maintenance factor 0.8, 4 000 K), four desks, a cabinet; work plane at 0.75 m; four seated observers. "
                        "Written by scripts/dev/make_office.py.",
         "materials": {
             "wall": {"reflectance": 0.7},
@@ -42,6 +43,10 @@ def main():
         "lights": lights,
         "work_planes": [{"name": "office", "outline": [[0, 0], [W, 0], [W, L], [0, L]], "height": 0.75, "border": 0.5}],
         "surface_grids": [{"name": "desk", "material": "desk", "facing": [0, 1, 0]}],
+        # Seated at each desk (eye 1.2 m), looking along the room over the desk.
+        "observers": [{"name": name, "position": [x, 1.2, z], "direction": [0, 0, dz], "task": "office"}
+                      for name, x, z, dz in (("desk-1", 1.8, 1.1, 1), ("desk-2", 4.4, 1.1, 1),
+                                             ("desk-3", 1.8, 6.3, -1), ("desk-4", 4.4, 6.3, -1))],
         "camera": {"position": [0.4, 1.6, 0.4], "look_at": [4.0, 0.9, 6.5], "up": [0, 1, 0], "vfov_deg": 65,
                    "resolution": [640, 480]},
         "radiosity": {"max_edge": 0.25},

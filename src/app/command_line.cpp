@@ -234,6 +234,21 @@ void addCompare(CLI::App& cli, CompareOptions& a) {
         "p95_delta_e2000, mean_flip)");
 }
 
+void addGlare(CLI::App& cli, GlareArgs& a) {
+    auto* glare = cli.add_subcommand(
+        "glare", "Glare from a 180° fisheye rendering (EXR in cd/m²): its glare sources, UGR and DGP with its class");
+    glare->add_option("image", a.image, "The fisheye image, as rayrad renders a camera with \"projection\": \"fisheye\"")
+        ->required();
+    glare->add_option("--threshold", a.threshold, "A glare source is brighter than this luminance, cd/m²");
+    glare
+        ->add_option("--threshold-factor", a.thresholdFactor,
+                     "Without --threshold: a glare source is this many times brighter than the field's mean luminance")
+        ->default_str("5")
+        ->check(CLI::Range(1.0, 1e6));
+    glare->add_option("--marked", a.marked, "Write the fisheye with the glare sources tinted and numbered (.png/.jpg)");
+    glare->add_option("--report", a.report, "Write the figures and the sources as JSON");
+}
+
 /// A validation's output directory and, when `threads` is given, its worker threads per run.
 void addValidationRun(CLI::App* cmd, std::string& outDir, int* threads) {
     cmd->add_option("--out", outDir, "Output directory")->default_str(outDir);
@@ -287,6 +302,7 @@ void defineCommandLine(CLI::App& cli, CommandLine& args) {
     addInfo(cli, args.info);
     addMerge(cli, args.merge);
     addCompare(cli, args.compare);
+    addGlare(cli, args.glare);
     addValidate(cli, args);
 }
 
@@ -303,7 +319,8 @@ void noteChosenCommand(const CLI::App& cli, CommandLine& args) {
     const std::pair<const char*, Command> names[] = {
         {"render", Command::Render}, {"solve", Command::Solve}, {"export", Command::Export},  {"sweep", Command::Sweep},
         {"annual", Command::Annual},
-        {"info", Command::Info},     {"merge", Command::Merge}, {"compare", Command::Compare}};
+        {"info", Command::Info},     {"merge", Command::Merge}, {"compare", Command::Compare},
+        {"glare", Command::Glare}};
     for (const auto& [name, command] : names)
         if (cli.got_subcommand(name)) args.command = command;
 }

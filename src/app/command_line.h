@@ -2,6 +2,7 @@
 #pragma once
 
 #include <app/compare.h>
+#include <app/glare/glare_command.h>
 #include <app/run_outputs.h>
 #include <app/sweep.h>
 #include <app/validate_cube.h>
@@ -92,7 +93,8 @@ struct CommandLine {
         ValidateSphere,
         ValidateLuminaire,
         ValidateDaylight,
-        Annual
+        Annual,
+        Glare
     };
     Command command = Command::Info;
     RenderArgs render;
@@ -103,6 +105,7 @@ struct CommandLine {
     SweepOptions sweep;
     MergeArgs merge;
     CompareOptions compare;
+    GlareArgs glare;
     ValidateOptions validateCube;
     ValidateSphereOptions validateSphere;
     ValidateLuminaireOptions validateLuminaire;

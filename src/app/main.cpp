@@ -312,6 +312,8 @@ int runCommand(const app::CommandLine& args) {
     switch (args.command) {
         case Command::Compare:
             return app::compareImages(args.compare);
+        case Command::Glare:
+            return app::runGlare(args.glare);
         case Command::Merge:
             return app::mergeTiles(args.merge.outputs, args.merge.tiles);
         case Command::Sweep:
