@@ -42,6 +42,23 @@ check "prints DGP and its class" grep -qE "^DGP 0\.[0-9]+ \((imperceptible|perce
 check "marked picture is a PNG" bash -c "head -c 8 '$work/marked.png' | grep -q PNG"
 check "glare report" python3 -c "import json,sys; j=json.load(open('$work/g.json')); sys.exit(0 if j['ev_lx']>0 and 'dgp_class' in j else 1)"
 
+# Under a daylight each observer also gets DGP, from a fisheye rendered at its eye: a
+# courtyard open to an overcast sky, the observer looking up at it.
+court='"objects": [
+  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,0,2],[2,0,2],[2,0,0]]},
+  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,2,0],[0,2,2],[0,0,2]]},
+  {"type": "quad", "material": "white", "vertices": [[2,0,0],[2,0,2],[2,2,2],[2,2,0]]},
+  {"type": "quad", "material": "white", "vertices": [[0,0,0],[2,0,0],[2,2,0],[0,2,0]]},
+  {"type": "quad", "material": "white", "vertices": [[0,0,2],[0,2,2],[2,2,2],[2,0,2]]},
+  {"type": "quad", "material": "sky", "vertices": [[0,2,0],[2,2,0],[2,2,2],[0,2,2]]}]'
+scene court "{\"materials\": {\"white\": {\"reflectance\": 0.5}, \"sky\": {\"type\": \"opening\"}}, $court,
+  \"daylight\": {\"sky\": {\"type\": \"cie_overcast\", \"diffuse_horizontal_illuminance\": 20000}},
+  \"observers\": [{\"name\": \"up\", \"position\": [1,1,0.3], \"direction\": [0,1,1]}], \"radiosity\": {\"max_edge\": 0.5}}"
+out=$("$rayrad" solve "$work/court.json" --sensors "$work/c.csv" -q 2>/dev/null)
+check "daylight solve exits 0" [ $? -eq 0 ]
+check "prints DGP per observer" grep -qE "^up +- .* 0\.[0-9]{3}  (imperceptible|perceptible|disturbing|intolerable)" <<<"$out"
+check "DGP in the CSV" grep -qE "^up,.*,0\.[0-9]{4},(imperceptible|perceptible|disturbing|intolerable)$" "$work/c.glare.csv"
+
 # Bad input: one line naming the place, exit 2 (3 for an output), nothing written.
 scene inside "{$materials, \"objects\": [$room, {\"type\": \"box\", \"min\": [1,0,3], \"max\": [3,2,5],
   \"facing\": \"outward\", \"material\": \"white\"}], $luminaires,

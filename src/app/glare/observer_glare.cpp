@@ -1,5 +1,6 @@
 #include <app/glare/observer_glare.h>
 
+#include <app/glare/fisheye_glare.h>
 #include <app/pipeline.h>
 #include <app/scene_warnings.h>
 #include <app/sensor_table.h>
@@ -197,17 +198,37 @@ std::vector<ObserverGlare> observerGlare(PipelineRun& run) {
     const auto gatherer = radiosity::sensorGatherer(run.scene, run.mesh, *run.embree, run.lighting, log);
     run.report.begin(fmt::format("glare ({} observers)", scene.observers.size()));
     for (const auto& o : scene.observers) out.push_back(glareAt(run, *gatherer, o));
+    if (!scene.daylight) return out;
+    // Daylight glare: the sky and the sun as the eye sees them, in a fisheye from the eye.
+    PipelineOptions quiet;
+    quiet.quiet = true;
+    for (auto& g : out) {
+        const scene::Observer& o = g.observer;
+        scene::Camera eye;
+        eye.position = o.position;
+        eye.lookAt = o.position + o.direction;
+        eye.up = o.up;
+        eye.projection = scene::Projection::Fisheye;
+        eye.width = eye.height = kObserverFisheyePixels;
+        const RenderedView view = renderCamera(run, "fisheye of observer " + o.name, eye, quiet);
+        const FisheyeGlare f = analyseFisheye(view.image, {}, "the fisheye of observer " + o.name);
+        g.dgp = daylightGlareProbability(g.directVertical + g.indirectVertical, f.sources);
+        g.dgpSources = f.sources.size();
+    }
     return out;
 }
 
 std::string observerGlareTable(const std::vector<ObserverGlare>& observers) {
-    std::string s = fmt::format("{:<20} {:>6} {:>6} {:>6} {:>8} {:>10} {:>10} {:>10}\n", "observer", "UGR", "limit",
+    const bool daylight = std::any_of(observers.begin(), observers.end(), [](const auto& g) { return g.dgp.has_value(); });
+    std::string s = fmt::format("{:<20} {:>6} {:>6} {:>6} {:>8} {:>10} {:>10} {:>10}", "observer", "UGR", "limit",
                                 "check", "sources", "L_b cd/m2", "Ev dir lx", "Ev ind lx");
+    s += daylight ? fmt::format(" {:>6}  {}\n", "DGP", "class") : "\n";
     for (const auto& g : observers) {
-        s += fmt::format("{:<20} {:>6} {:>6} {:>6} {:>8} {:>10.4g} {:>10.4g} {:>10.4g}{}\n", g.observer.name,
+        s += fmt::format("{:<20} {:>6} {:>6} {:>6} {:>8} {:>10.4g} {:>10.4g} {:>10.4g}", g.observer.name,
                          g.ugr ? fmt::format("{:.1f}", *g.ugr) : std::string("-"), limitText(g), checkText(g),
-                         g.sources.size(), g.backgroundLuminance, g.directVertical, g.indirectVertical,
-                         g.note.empty() ? "" : "  (" + g.note + ")");
+                         g.sources.size(), g.backgroundLuminance, g.directVertical, g.indirectVertical);
+        if (g.dgp) s += fmt::format(" {:>6.3f}  {}", *g.dgp, dgpClass(*g.dgp));
+        s += g.note.empty() ? "\n" : "  (" + g.note + ")\n";
         for (const auto& src : g.sources)
             s += fmt::format("    {:<40} L {:>10.4g} cd/m2  omega {:>9.3g} sr  P {:>5.2f}  L2w/P2 {:.4g}\n", src.name,
                              src.luminance, src.solidAngle, src.positionIndex, src.term());
@@ -217,14 +238,16 @@ std::string observerGlareTable(const std::vector<ObserverGlare>& observers) {
 
 std::string observerGlareCsv(const std::vector<ObserverGlare>& observers) {
     std::string s =
-        "observer,x,y,z,dx,dy,dz,ugr,ugr_limit,task,check,background_cd_m2,ev_direct_lx,ev_indirect_lx,sources\n";
+        "observer,x,y,z,dx,dy,dz,ugr,ugr_limit,task,check,background_cd_m2,ev_direct_lx,ev_indirect_lx,sources,dgp,"
+        "dgp_class\n";
     for (const auto& g : observers) {
         const auto& o = g.observer;
-        s += fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{:.6g},{:.6g},{:.6g},{}\n",
+        s += fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{:.6g},{:.6g},{:.6g},{},{},{}\n",
                          csvField(o.name), o.position.x, o.position.y, o.position.z, o.direction.x, o.direction.y,
                          o.direction.z, g.ugr ? fmt::format("{:.2f}", *g.ugr) : std::string(), limitText(g),
                          csvField(o.task), checkText(g), g.backgroundLuminance, g.directVertical, g.indirectVertical,
-                         g.sources.size());
+                         g.sources.size(), g.dgp ? fmt::format("{:.4f}", *g.dgp) : std::string(),
+                         g.dgp ? dgpClass(*g.dgp) : std::string());
     }
     return s;
 }
@@ -247,6 +270,11 @@ nlohmann::json observerGlareJson(const std::vector<ObserverGlare>& observers) {
         if (o.ugrLimit) e["ugr_limit"] = *o.ugrLimit;
         if (!o.task.empty()) e["task"] = o.task;
         if (!g.note.empty()) e["note"] = g.note;
+        if (g.dgp) {
+            e["dgp"] = *g.dgp;
+            e["dgp_class"] = dgpClass(*g.dgp);
+            e["dgp_sources"] = g.dgpSources;
+        }
         for (const auto& s : g.sources)
             e["sources"].push_back({{"name", s.name},
                                     {"luminance_cd_m2", s.luminance},

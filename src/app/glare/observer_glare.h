@@ -27,6 +27,11 @@ struct ObserverGlare {
     double backgroundLuminance = 0;  ///< L_b = E_ind / π, cd/m²
     std::optional<double> ugr;       ///< nothing when no source is seen, or no background
     std::string note;                ///< why there is no UGR, or ""
+    /// Under a daylight: DGP from the sources of a fisheye rendered at the eye
+    /// (kObserverFisheyePixels square, analyseFisheye's default threshold) and the gathered
+    /// E_v (direct + indirect); the sources it found.
+    std::optional<double> dgp;
+    size_t dgpSources = 0;
     /// Within the observer's limit (true when it has none or sees no source).
     bool passes() const { return !observer.ugrLimit || !ugr || *ugr <= *observer.ugrLimit; }
 };
@@ -42,21 +47,27 @@ struct ObserverGlare {
 double projectedLuminousArea(const scene::Photometry& p, const Vec3& w);
 constexpr double kMinProjectedShare = 0.087;  // cos 85°
 
-/// Every observer of a solved run (stage "glare (N observers)"). Throws InputError for an
-/// observer inside a solid, and for a light the eye sees that has no luminous area (a
-/// point light, a spot, a luminaire file without one): its luminance is unknown.
+/// The fisheye an observer's DGP is found in: this many pixels square.
+constexpr int kObserverFisheyePixels = 360;
+
+/// Every observer of a solved run (stage "glare (N observers)", and under a daylight a ray
+/// trace of each observer's fisheye). Throws InputError for an observer inside a solid, and
+/// for a light the eye sees that has no luminous area (a point light, a spot, a luminaire
+/// file without one): its luminance is unknown.
 std::vector<ObserverGlare> observerGlare(PipelineRun& run);
 
 /// The observers as an aligned text table for the terminal, each observer's sources below.
 std::string observerGlareTable(const std::vector<ObserverGlare>& observers);
 
 /// CSV: observer,x,y,z,dx,dy,dz,ugr,ugr_limit,task,check,background_cd_m2,
-/// ev_direct_lx,ev_indirect_lx,sources (ugr empty when no source is seen).
+/// ev_direct_lx,ev_indirect_lx,sources,dgp,dgp_class (ugr empty when no source is seen;
+/// dgp empty without a daylight).
 std::string observerGlareCsv(const std::vector<ObserverGlare>& observers);
 
 /// The observers for the JSON report: name, position, direction, ugr, ugr_limit, task,
-/// passes, background_cd_m2, ev_direct_lx, ev_indirect_lx and each source's name,
-/// luminance_cd_m2, solid_angle_sr, position_index.
+/// passes, background_cd_m2, ev_direct_lx, ev_indirect_lx, each source's name,
+/// luminance_cd_m2, solid_angle_sr, position_index, and under a daylight dgp, dgp_class and
+/// dgp_sources.
 nlohmann::json observerGlareJson(const std::vector<ObserverGlare>& observers);
 
 /// Where `--sensors FILE.csv` puts the observers' glare: FILE.glare.csv.
