@@ -73,6 +73,9 @@ scene = {
                      "border": 0.5}],
     "camera": {"position": [3.6, 1.5, 5.7], "look_at": [1.8, 1.2, 0.0], "up": [0, 1, 0], "vfov_deg": 70,
                "resolution": [480, 360]},
+    # A seated eye at the middle of the room, looking at the window: the view for DGP.
+    "cameras": [{"name": "desk-eye", "position": [3.0, 1.2, 2.6], "look_at": [1.5, 1.2, 0.0], "up": [0, 1, 0],
+                 "projection": "fisheye", "resolution": [480, 480]}],
 }
 
 with open("daylight-office.json", "w") as f:

@@ -186,7 +186,7 @@ MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare)
                                   glare.verticalIlluminance),
                       tonemap::TextLabel::Align::Left, false, 15});
     labels.push_back({8, image.height + 40,
-                      fmt::format("{} sources above {:.0f} cd/m2 (white)", glare.sources.size(), glare.threshold),
+                      fmt::format("{} source{} above {:.0f} cd/m2 (white)", glare.sources.size(), glare.sources.size() == 1 ? "" : "s", glare.threshold),
                       tonemap::TextLabel::Align::Left, false, 13});
     tonemap::drawText(m.rgb, m.width, m.height, labels);
     return m;
