@@ -179,4 +179,10 @@ std::vector<SensorValue> gatherSensors(const scene::Scene& scene, const PatchMes
         &lighting.sensorGathers);
 }
 
+SensorValue evaluatePoint(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,
+                          const Lighting& lighting, const Gatherer& gatherer, const scene::Sensor& point) {
+    GatherMemo memo;
+    return evaluateSensor(scene, mesh, lighting.solution, *lighting.lights, vis, gatherer, memo, point);
+}
+
 }  // namespace rayrad::radiosity

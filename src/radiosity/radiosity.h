@@ -128,5 +128,10 @@ std::unique_ptr<Gatherer> sensorGatherer(const scene::Scene& scene, const PatchM
 std::vector<SensorValue> gatherSensors(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,
                                        Lighting& lighting, const StageLog& log);
 
+/// One point that is not among the scene's sensors (an observer's eye), as a sensor reads
+/// it, with `gatherer` (sensorGatherer's).
+SensorValue evaluatePoint(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,
+                          const Lighting& lighting, const Gatherer& gatherer, const scene::Sensor& point);
+
 
 }  // namespace rayrad::radiosity

@@ -5,7 +5,7 @@
 #include <app/scene_warnings.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
-#include <radiosity/gather/sensors.h>
+#include <radiosity/radiosity.h>
 #include <scene/polygon.h>
 
 #include <fmt/format.h>
@@ -154,9 +154,7 @@ ObserverGlare glareAt(PipelineRun& run, const radiosity::Gatherer& gatherer, con
     eye.name = o.name;
     eye.position = o.position;
     eye.normal = o.direction;
-    radiosity::GatherMemo memo;
-    const radiosity::SensorValue value = radiosity::evaluateSensor(
-        scene, run.mesh, run.lighting.solution, *run.lighting.lights, *run.embree, gatherer, memo, eye);
+    const radiosity::SensorValue value = radiosity::evaluatePoint(scene, run.mesh, *run.embree, run.lighting, gatherer, eye);
     out.directVertical = luminance(value.direct);
     out.indirectVertical = luminance(value.indirect);
     out.backgroundLuminance = out.indirectVertical / kPi;
