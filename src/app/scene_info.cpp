@@ -18,25 +18,32 @@
 
 namespace rayrad::app {
 
+namespace {
+
+/// info FILE.ies|FILE.ldt: its photometry and, asked, its UGR table.
+int printPhotometryInfo(const InfoArgs& args) {
+    const std::string& file = args.common.scene;
+    OutputFiles files;
+    files.addInput(file);
+    if (!args.ugrCsv.empty()) files.add(args.ugrCsv);
+    const scene::Photometry p = scene::readPhotometry(file);
+    fmt::print("{}", app::photometryReport(p));
+    if (!args.ugrTable && args.ugrCsv.empty()) return 0;
+    const UgrTable table = ugrTable(p, args.ugrSpacing);
+    fmt::print("\n{}", ugrTableText(table, p));
+    if (!args.ugrCsv.empty()) {
+        files.set(args.ugrCsv, ugrTableCsv(table));
+        files.commit();
+        fmt::print(stderr, "wrote {}\n", args.ugrCsv);
+    }
+    return 0;
+}
+
+}  // namespace
+
 int printSceneInfo(const InfoArgs& args, const std::vector<scene::Override>& overrides) {
     const std::string& file = args.common.scene;
-    if (scene::isPhotometricFile(file)) {
-        OutputFiles files;
-        files.addInput(file);
-        if (!args.ugrCsv.empty()) files.add(args.ugrCsv);
-        const scene::Photometry p = scene::readPhotometry(file);
-        fmt::print("{}", app::photometryReport(p));
-        if (args.ugrTable || !args.ugrCsv.empty()) {
-            const UgrTable table = ugrTable(p, args.ugrSpacing);
-            fmt::print("\n{}", ugrTableText(table, p));
-            if (!args.ugrCsv.empty()) {
-                files.set(args.ugrCsv, ugrTableCsv(table));
-                files.commit();
-                fmt::print(stderr, "wrote {}\n", args.ugrCsv);
-            }
-        }
-        return 0;
-    }
+    if (scene::isPhotometricFile(file)) return printPhotometryInfo(args);
     if (args.ugrTable || !args.ugrCsv.empty())
         throw InputError(placeMessage("", "--ugr-table", "a UGR table is made for a photometric file (.ies, .ldt), not a "
                                                           "scene: use observers in the scene for UGR in a room"));

@@ -23,6 +23,46 @@ struct SourceSums {
 constexpr uint8_t kTints[][3] = {{230, 40, 40},  {40, 120, 230}, {40, 180, 60},  {240, 160, 20},
                                  {160, 60, 200}, {20, 190, 190}, {220, 80, 160}, {140, 140, 40}};
 
+/// The sources: 8-connected regions of pixels above `threshold` (lum −1 outside the
+/// field), the peaks (above kPeakLuminance) apart from the rest; `sourceOfPixel` gets each
+/// pixel's region, or −1.
+std::vector<SourceSums> findSources(const std::vector<double>& lum, const std::vector<FisheyePixel>& px, int w, int h,
+                                    double threshold, std::vector<int>& sourceOfPixel) {
+    auto peak = [](double L) { return L > kPeakLuminance; };
+    sourceOfPixel.assign(lum.size(), -1);
+    std::vector<SourceSums> sums;
+    std::vector<size_t> stack;
+    for (size_t seed = 0; seed < lum.size(); ++seed) {
+        if (lum[seed] <= threshold || sourceOfPixel[seed] >= 0) continue;
+        const int id = static_cast<int>(sums.size());
+        SourceSums s;
+        stack.assign(1, seed);
+        sourceOfPixel[seed] = id;
+        while (!stack.empty()) {
+            const size_t i = stack.back();
+            stack.pop_back();
+            const FisheyePixel& p = px[i];
+            s.solidAngle += p.solidAngle;
+            s.luminanceOmega += lum[i] * p.solidAngle;
+            s.illuminance += lum[i] * p.direction.z * p.solidAngle;
+            s.direction += p.solidAngle * p.direction;
+            const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    const size_t n = static_cast<size_t>(ny) * w + nx;
+                    if (lum[n] > threshold && sourceOfPixel[n] < 0 && peak(lum[n]) == peak(lum[seed])) {
+                        sourceOfPixel[n] = id;
+                        stack.push_back(n);
+                    }
+                }
+        }
+        sums.push_back(s);
+    }
+    return sums;
+}
+
 }  // namespace
 
 std::optional<FisheyePixel> fisheyePixel(int width, int height, int x, int y) {
@@ -72,40 +112,7 @@ FisheyeGlare analyseFisheye(const HdrImage& image, const GlareThreshold& thresho
     out.meanLuminance = lOmega / omega;
     out.threshold = threshold.luminance ? *threshold.luminance : threshold.factor * out.meanLuminance;
 
-    // The sources: 8-connected regions of pixels above the threshold, the peaks (above
-    // kPeakLuminance) apart from the rest.
-    auto peak = [](double L) { return L > kPeakLuminance; };
-    out.sourceOfPixel.assign(image.pixels.size(), -1);
-    std::vector<SourceSums> sums;
-    std::vector<size_t> stack;
-    for (size_t seed = 0; seed < lum.size(); ++seed) {
-        if (lum[seed] <= out.threshold || out.sourceOfPixel[seed] >= 0) continue;
-        const int id = static_cast<int>(sums.size());
-        SourceSums s;
-        stack.assign(1, seed);
-        out.sourceOfPixel[seed] = id;
-        while (!stack.empty()) {
-            const size_t i = stack.back();
-            stack.pop_back();
-            const FisheyePixel& p = px[i];
-            s.solidAngle += p.solidAngle;
-            s.luminanceOmega += lum[i] * p.solidAngle;
-            s.illuminance += lum[i] * p.direction.z * p.solidAngle;
-            s.direction += p.solidAngle * p.direction;
-            const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int nx = x + dx, ny = y + dy;
-                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-                    const size_t n = static_cast<size_t>(ny) * w + nx;
-                    if (lum[n] > out.threshold && out.sourceOfPixel[n] < 0 && peak(lum[n]) == peak(lum[seed])) {
-                        out.sourceOfPixel[n] = id;
-                        stack.push_back(n);
-                    }
-                }
-        }
-        sums.push_back(s);
-    }
+    std::vector<SourceSums> sums = findSources(lum, px, w, h, out.threshold, out.sourceOfPixel);
     std::vector<GlareSource> found;
     for (const SourceSums& s : sums) {
         GlareSource g;
