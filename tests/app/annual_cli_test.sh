@@ -7,13 +7,7 @@ src="$2"
 source "$(dirname "$0")/test_lib.sh"
 epw="$src/scenes/weather/USA_IL_Chicago-OHare.Intl.AP.725300_TMY3.epw"
 
-walls='"objects": [
-  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,0,2],[2,0,2],[2,0,0]]},
-  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,2,0],[0,2,2],[0,0,2]]},
-  {"type": "quad", "material": "white", "vertices": [[2,0,0],[2,0,2],[2,2,2],[2,2,0]]},
-  {"type": "quad", "material": "white", "vertices": [[0,0,0],[2,0,0],[2,2,0],[0,2,0]]},
-  {"type": "quad", "material": "white", "vertices": [[0,0,2],[0,2,2],[2,2,2],[2,0,2]]},
-  {"type": "quad", "material": "sky", "vertices": [[0,2,0],[2,2,0],[2,2,2],[0,2,2]]}]'
+walls="$court_objects"
 materials='"materials": {"white": {"reflectance": 0.5}, "sky": {"type": "opening"}}'
 plane='"sensors": [{"name": "floor", "position": [1,0.05,1], "normal": [0,1,0]}],
   "work_planes": [{"name": "floor plane", "outline": [[0,0],[2,0],[2,2],[0,2]], "height": 0.5, "border": 0.2, "spacing": 0.4}],

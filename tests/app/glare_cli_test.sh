@@ -44,14 +44,7 @@ check "glare report" python3 -c "import json,sys; j=json.load(open('$work/g.json
 
 # Under a daylight each observer also gets DGP, from a fisheye rendered at its eye: a
 # courtyard open to an overcast sky, the observer looking up at it.
-court='"objects": [
-  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,0,2],[2,0,2],[2,0,0]]},
-  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,2,0],[0,2,2],[0,0,2]]},
-  {"type": "quad", "material": "white", "vertices": [[2,0,0],[2,0,2],[2,2,2],[2,2,0]]},
-  {"type": "quad", "material": "white", "vertices": [[0,0,0],[2,0,0],[2,2,0],[0,2,0]]},
-  {"type": "quad", "material": "white", "vertices": [[0,0,2],[0,2,2],[2,2,2],[2,0,2]]},
-  {"type": "quad", "material": "sky", "vertices": [[0,2,0],[2,2,0],[2,2,2],[0,2,2]]}]'
-scene court "{\"materials\": {\"white\": {\"reflectance\": 0.5}, \"sky\": {\"type\": \"opening\"}}, $court,
+scene court "{\"materials\": {\"white\": {\"reflectance\": 0.5}, \"sky\": {\"type\": \"opening\"}}, $court_objects,
   \"daylight\": {\"sky\": {\"type\": \"cie_overcast\", \"diffuse_horizontal_illuminance\": 20000}},
   \"observers\": [{\"name\": \"up\", \"position\": [1,1,0.3], \"direction\": [0,1,1]}], \"radiosity\": {\"max_edge\": 0.5}}"
 out=$("$rayrad" solve "$work/court.json" --sensors "$work/c.csv" -q 2>/dev/null)

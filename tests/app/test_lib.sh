@@ -45,3 +45,12 @@ scene() {  # scene NAME JSON: writes $work/NAME.json
 good_materials='"materials": {"white": {"type": "diffuse", "reflectance": 0.5}}'
 good_box='"objects": [{"type": "box", "min": [0,0,0], "max": [1,1,1], "facing": "inward", "material": "white"}]'
 good_light='"lights": [{"type": "point", "position": [0.5,0.5,0.5], "intensity_cd": 10}]'
+
+# A 2 m courtyard of white walls open to the sky above (materials "white" and "sky", an opening).
+court_objects='"objects": [
+  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,0,2],[2,0,2],[2,0,0]]},
+  {"type": "quad", "material": "white", "vertices": [[0,0,0],[0,2,0],[0,2,2],[0,0,2]]},
+  {"type": "quad", "material": "white", "vertices": [[2,0,0],[2,0,2],[2,2,2],[2,2,0]]},
+  {"type": "quad", "material": "white", "vertices": [[0,0,0],[2,0,0],[2,2,0],[0,2,0]]},
+  {"type": "quad", "material": "white", "vertices": [[0,0,2],[0,2,2],[2,2,2],[2,0,2]]},
+  {"type": "quad", "material": "sky", "vertices": [[0,2,0],[2,2,0],[2,2,2],[0,2,2]]}]'
