@@ -69,6 +69,14 @@ Lighting solveDirect(const scene::Scene& scene, const PatchMesh& mesh, const Vis
     return lighting;
 }
 
+Lighting lightingWith(const scene::Scene& scene, const Visibility& vis, RadiositySolution solution) {
+    Lighting lighting;
+    lighting.lights = std::make_unique<DirectLight>(scene);
+    lighting.lights->measureEntering(vis);
+    lighting.solution = std::move(solution);
+    return lighting;
+}
+
 const Clustering& clustersOf(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,
                              Lighting& lighting, const StageLog& log) {
     if (lighting.clustering.clusters.empty() && !mesh.patches.empty()) {

@@ -100,6 +100,11 @@ void solveIndirect(const scene::Scene& scene, const PatchMesh& mesh, const Visib
 Lighting loadSolution(const scene::Scene& scene, const PatchMesh& mesh, const std::string& bytes,
                       const std::string& path, const StageLog& log);
 
+/// The lights of `scene` as it is now, with a solution computed elsewhere in place of a solve
+/// (an hour's weighted sum of daylight channels' solutions): what reconstructDisplay and the
+/// ray tracer need. The openings' entering light is measured as solveDirect does.
+Lighting lightingWith(const scene::Scene& scene, const Visibility& vis, RadiositySolution solution);
+
 // 3. The display values.
 
 /// What the image interpolates between (stage "reconstruct vertices"): vertex values from

@@ -5,6 +5,7 @@
 #include <app/annual/annual_skies.h>
 #include <app/annual/annual_study.h>
 #include <app/annual/daylight_coefficients.h>
+#include <app/annual/hour_images.h>
 #include <scene/scene_parser.h>
 
 #include "pipeline_test_util.h"
@@ -69,10 +70,18 @@ TEST_CASE("annual: one hour from the daylight coefficients against a solve of th
     const std::string file = officeUnder("coefficients", fmt::format(R"({{{}, "sky": {{"type": "uniform",
         "zenith_luminance": 1}}, "ground_reflectance": 0.2}})", kAxes));
     app::PipelineRun run = app::preparePipeline(file, scene::loadScene(file, {}), test::quiet());
-    const app::DaylightCoefficients dc =
-        app::solveDaylightCoefficients(run, patches, fine, app::sunNodes(hours, *patches), true);
+    const app::SunLight sun(run, *patches);
+    // Each hour's whole solution summed as the channels are solved, for its image.
+    std::vector<app::HourImage> images;
+    for (size_t n = 0; n < hours.size(); ++n) images.push_back({fmt::format("case {}", n), {}, n});
+    app::HourSolutions hourSolutions(images, hours, sun, patches->count(), run.mesh.patches.size());
+    const app::DaylightCoefficients dc = app::solveDaylightCoefficients(
+        run, patches, fine, app::sunNodes(hours, *patches), true,
+        [&](int c, int j, const radiosity::RadiositySolution& s) { hourSolutions.add(c, j, s); });
     REQUIRE(dc.points == 3);
-    const app::SunLight sun(run, *dc.patches);
+    scene::Camera camera = *run.scene.camera;  // the office from its back corner, smaller
+    camera.width = 96;
+    camera.height = 72;
 
     for (size_t n = 0; n < std::size(cases); ++n) {
         const Case& c = cases[n];
@@ -90,5 +99,22 @@ TEST_CASE("annual: one hour from the daylight coefficients against a solve of th
                         << ", indirect " << luminance(solved1.sensors[i].value.indirect) << ")");
             CHECK(parts.total() == Approx(want).epsilon(c.bound));
         }
+        // The hour's image from the coefficients against the image of its solve: the mean
+        // relative difference over the pixels.
+        const HdrImage fromCoefficients =
+            app::renderWithSolution(run, *solved1.scene.daylight, hourSolutions.solution(n), camera, "coefficients")
+                .image;
+        const HdrImage fromSolve = app::renderCamera(solved[n], "solve", camera, test::quiet()).image;
+        double sum = 0;
+        size_t count = 0;
+        for (size_t p = 0; p < fromSolve.pixels.size(); ++p) {
+            const double want = luminance(fromSolve.pixels[p]);
+            if (!(want > 0)) continue;
+            sum += std::abs(luminance(fromCoefficients.pixels[p]) / want - 1);
+            ++count;
+        }
+        INFO(c.name << ": the image from the coefficients differs from the solve's by " << 100 * sum / count
+                    << " % on average over " << count << " pixels");
+        CHECK(sum / count < 0.02);
     }
 }

@@ -1,8 +1,11 @@
 #include <app/annual/annual_command.h>
 
+#include <app/annual/hour_images.h>
+
 #include <app/annual/annual_skies.h>
 #include <app/annual/daylight_coefficients.h>
 #include <app/annual/daylight_dimming.h>
+#include <app/annual/hour_images.h>
 #include <app/run_outputs.h>
 #include <app/sensor_table.h>
 #include <core/input_error.h>
@@ -256,8 +259,13 @@ int runAnnual(const AnnualArgs& args) {
         if (tonemap::isHdrFormat(*picture))
             throw OutputError(placeMessage(*picture, "", "a false-colour plan is a display image: use .png or .jpg"));
     }
-    const std::vector<std::string> outputs{args.metrics, args.hourly, args.plan, args.report};
+    std::vector<std::string> outputs{args.metrics, args.hourly, args.plan, args.report};
     addOutputs(files, outputs);
+    std::vector<HourImage> images;
+    for (const auto& text : args.images) addHourImage(text, images, files);
+    for (const auto& image : images) outputs.insert(outputs.end(), image.paths.begin(), image.paths.end());
+    if (!images.empty() && !desc.camera)
+        throw InputError(placeMessage(a.scene, "", "--image: the scene has no camera to render"));
     const scene::WeatherFile weather = scene::readWeatherFile(args.weather);
     const int year = weather.hours.size() == 8784 ? 2020 : 2021;  // the weekdays of summer time
     if (std::none_of(weather.hours.begin(), weather.hours.end(), [&](const scene::WeatherHour& h) {
@@ -291,13 +299,25 @@ int runAnnual(const AnnualArgs& args) {
     const auto skies = annualSkies(weather, *run.scene.daylight, *patches, *fine);
     std::vector<size_t> printedHours;
     for (const auto& hour : args.hours) printedHours.push_back(parseYearHour(hour, skies));
+    for (auto& image : images) {
+        image.hour = parseYearHour(image.hourText, skies, "--image");
+        if (!skies[image.hour].lit)
+            throw InputError(placeMessage("--image", "", fmt::format("the weather file's hour {} has no daylight: "
+                                                                     "nothing to render",
+                                                                     image.hourText)));
+    }
     const std::vector<char> suns = sunNodes(skies, *patches);
+    const SunLight sun(run, *patches);
+    HourSolutions hourSolutions(images, skies, sun, patches->count(), run.mesh.patches.size());
     run.report.begin(fmt::format("daylight coefficients ({} sky patches + ground, {} suns)", args.skyPatches,
                                  std::count(suns.begin(), suns.end(), 1)));
-    const DaylightCoefficients dc = solveDaylightCoefficients(run, patches, fine, suns, a.quiet);
+    const DaylightCoefficients dc = solveDaylightCoefficients(
+        run, patches, fine, suns, a.quiet,
+        images.empty() ? ChannelSolutionHook{} : [&](int c, int j, const radiosity::RadiositySolution& s) {
+            hourSolutions.add(c, j, s);
+        });
     run.report.begin(fmt::format("annual illuminance ({} sensors)", run.scene.sensors.size()));
     const AnnualThresholds thresholds;
-    const SunLight sun(run, *dc.patches);
     const AnnualStudy study = runAnnualStudy(run, dc, sun, skies, occupancy, thresholds, excluded, year);
     run.report.end();
 
@@ -323,6 +343,8 @@ int runAnnual(const AnnualArgs& args) {
                study.wallSeconds, peakMemoryBytes() / 1048576.0);
 
     for (size_t h : printedHours) printHour(run, dc, sun, skies, h);
+    for (size_t k = 0; k < images.size(); ++k)
+        renderHourImage(run, weather, skies[images[k].hour], images[k], hourSolutions.solution(k), files);
 
     if (!args.metrics.empty())
         files.set(args.metrics, annualMetricsCsv(run.scene.sensors, study, excluded, lampShares));

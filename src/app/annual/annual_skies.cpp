@@ -61,6 +61,7 @@ SkyHour skyHourOf(const scene::Daylight& d, const scene::SkyPatches& patches, co
     });
     const double zenith =
         d.zenithLuminance > 0 ? d.zenithLuminance : horizontal > 0 ? d.skyHorizontalIlluminance / horizontal : 0.0;
+    h.zenithLuminance = zenith;
     h.patchLuminance.resize(sum.size());
     for (int p = 0; p < patches.count(); ++p)
         h.patchLuminance[static_cast<size_t>(p)] =
@@ -72,21 +73,30 @@ SkyHour skyHourOf(const scene::Daylight& d, const scene::SkyPatches& patches, co
     return h;
 }
 
-std::vector<SkyHour> annualSkies(const scene::WeatherFile& weather, const scene::Daylight& axes,
-                                 const scene::SkyPatches& patches, const scene::SkyPatches& fine) {
-    const bool leap = weather.hours.size() == 8784;
+namespace {
+
+/// The sun at the middle of hour k of `weather`, at its place and time zone.
+scene::SunPosition sunOfHour(const scene::WeatherFile& weather, size_t k) {
     scene::Site site;
     site.latitudeDeg = weather.latitudeDeg;
     site.longitudeDeg = weather.longitudeDeg;
     site.elevationM = weather.elevationM;
+    const scene::WeatherHour& w = weather.hours[k];
+    scene::LocalTime t;
+    t.year = weather.hours.size() == 8784 ? 2020 : 2021;
+    t.month = w.month, t.day = w.day, t.hour = w.hour - 1, t.minute = 30;
+    t.utcOffsetHours = weather.timeZoneHours;
+    return scene::sunPosition(t, site);
+}
+
+}  // namespace
+
+std::vector<SkyHour> annualSkies(const scene::WeatherFile& weather, const scene::Daylight& axes,
+                                 const scene::SkyPatches& patches, const scene::SkyPatches& fine) {
     std::vector<SkyHour> hours(weather.hours.size());
     tbb::parallel_for(size_t(0), hours.size(), [&](size_t k) {
         const scene::WeatherHour& w = weather.hours[k];
-        scene::LocalTime t;
-        t.year = leap ? 2020 : 2021;
-        t.month = w.month, t.day = w.day, t.hour = w.hour - 1, t.minute = 30;
-        t.utcOffsetHours = weather.timeZoneHours;
-        const scene::SunPosition sun = scene::sunPosition(t, site);
+        const scene::SunPosition sun = sunOfHour(weather, k);
         SkyHour& h = hours[k];
         if (w.diffuseHorizontalIrradiance > 0 && sun.altitudeDeg > -6)  // civil twilight and day
             h = skyHourOf(hourDaylight(w, axes, sun, static_cast<int>(k / 24) + 1), patches, fine);
@@ -95,6 +105,13 @@ std::vector<SkyHour> annualSkies(const scene::WeatherFile& weather, const scene:
         h.sunAltitudeDeg = sun.altitudeDeg, h.sunAzimuthDeg = sun.azimuthDeg;
     });
     return hours;
+}
+
+scene::Daylight yearHourDaylight(const scene::WeatherFile& weather, const scene::Daylight& axes, size_t k,
+                                 const SkyHour& hour) {
+    scene::Daylight d = hourDaylight(weather.hours[k], axes, sunOfHour(weather, k), static_cast<int>(k / 24) + 1);
+    d.zenithLuminance = hour.zenithLuminance;
+    return d;
 }
 
 std::vector<char> sunNodes(const std::vector<SkyHour>& hours, const scene::SkyPatches& patches) {

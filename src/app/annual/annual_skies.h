@@ -23,6 +23,7 @@ struct SkyHour {
     scene::SkyPatches::Weights sunWeights;  ///< the patches around the sun and their weights
     double diffuseHorizontal = 0;  ///< E_dh, lx
     double sunAltitudeDeg = -90, sunAzimuthDeg = 0;
+    double zenithLuminance = 0;    ///< L_z, cd/m² (from E_dh when the daylight did not give it)
 };
 
 /// One hour's daylight `d` (its sky's distribution and scale, sun, ground) as the
@@ -39,6 +40,12 @@ SkyHour skyHourOf(const scene::Daylight& d, const scene::SkyPatches& patches, co
 /// quadrature), the patches' luminance as skyHourOf.
 std::vector<SkyHour> annualSkies(const scene::WeatherFile& weather, const scene::Daylight& axes,
                                  const scene::SkyPatches& patches, const scene::SkyPatches& fine);
+
+/// Hour k of `weather` (0-based) as a scene's daylight with the axes and ground of `axes`:
+/// the Perez sky and sun annualSkies weighs the coefficients with, scaled by `hour`'s
+/// zenith luminance (for rendering that hour).
+scene::Daylight yearHourDaylight(const scene::WeatherFile& weather, const scene::Daylight& axes, size_t k,
+                                 const SkyHour& hour);
 
 /// Per patch: whether the sun of some hour stands near its centre (a weight of its
 /// interpolation), so that a sun there is worth solving.

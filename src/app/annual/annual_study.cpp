@@ -31,13 +31,13 @@ HourParts hourParts(const DaylightCoefficients& dc, size_t i, const SkyHour& hou
     return parts;
 }
 
-size_t parseYearHour(const std::string& text, const std::vector<SkyHour>& hours) {
+size_t parseYearHour(const std::string& text, const std::vector<SkyHour>& hours, const std::string& option) {
     int month = 0, day = 0, hour = 0;
     char tail = 0;
     if (std::sscanf(text.c_str(), "%d-%dT%d%c", &month, &day, &hour, &tail) == 3)
         for (size_t h = 0; h < hours.size(); ++h)
             if (hours[h].month == month && hours[h].day == day && std::lround(hours[h].clockHour + 0.5) == hour) return h;
-    throw InputError(placeMessage("--hour", "",
+    throw InputError(placeMessage(option, "",
                                   fmt::format("expected MM-DDTHH, an hour of the weather file's year (HH 1 … 24, the "
                                               "hour ending then), got \"{}\"",
                                               text)));

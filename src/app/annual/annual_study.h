@@ -27,8 +27,8 @@ struct HourParts {
 HourParts hourParts(const DaylightCoefficients& dc, size_t i, const SkyHour& hour, double sunDirect, double k);
 
 /// The hour of the year (0-based) of "MM-DDTHH" (the weather file's hour ending at HH:00),
-/// or an InputError naming --hour.
-size_t parseYearHour(const std::string& text, const std::vector<SkyHour>& hours);
+/// or an InputError naming `option`.
+size_t parseYearHour(const std::string& text, const std::vector<SkyHour>& hours, const std::string& option = "--hour");
 
 struct AnnualStudy {
     size_t points = 0, hours = 0;

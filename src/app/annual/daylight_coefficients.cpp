@@ -17,9 +17,10 @@ namespace {
 
 /// Solves the lighting of run.scene as it is now (its daylight one channel, a `sun` alone or
 /// a sky), reusing and handing back the clusters; the sensors' values, or nothing when no
-/// light comes in.
-std::optional<std::vector<radiosity::SensorValue>> solveChannel(PipelineRun& run, radiosity::Clustering& clusters,
-                                                                bool sun) {
+/// light comes in. `onSolution` sees the solution.
+std::optional<std::vector<radiosity::SensorValue>> solveChannel(
+    PipelineRun& run, radiosity::Clustering& clusters, bool sun,
+    const std::function<void(const radiosity::RadiositySolution&)>& onSolution) {
     const radiosity::StageLog log{nullptr, nullptr, true, nullptr};
     radiosity::Lighting lighting = radiosity::solveDirect(run.scene, run.mesh, *run.embree, log);
     // A sky: no opening faces it (its unobstructed light through each, exactly; the
@@ -29,6 +30,7 @@ std::optional<std::vector<radiosity::SensorValue>> solveChannel(PipelineRun& run
     lighting.clustering = std::move(clusters);
     radiosity::solveIndirect(run.scene, run.mesh, *run.embree, lighting, log);
     auto values = radiosity::gatherSensors(run.scene, run.mesh, *run.embree, lighting, log);
+    if (onSolution) onSolution(lighting.solution);
     clusters = std::move(lighting.clustering);
     return values;
 }
@@ -37,7 +39,8 @@ std::optional<std::vector<radiosity::SensorValue>> solveChannel(PipelineRun& run
 
 DaylightCoefficients solveDaylightCoefficients(PipelineRun& run, std::shared_ptr<const scene::SkyPatches> patches,
                                                std::shared_ptr<const scene::SkyPatches> fine,
-                                               const std::vector<char>& sunNear, bool quiet) {
+                                               const std::vector<char>& sunNear, bool quiet,
+                                               const ChannelSolutionHook& onSolution) {
     if (!run.scene.daylight)
         throw InputError(placeMessage(run.scene.file, "", "an annual study needs the scene's \"daylight\" (its axes "
                                                           "and ground) and openings"));
@@ -61,7 +64,9 @@ DaylightCoefficients solveDaylightCoefficients(PipelineRun& run, std::shared_ptr
         progress.update(static_cast<double>(done) / total, fmt::format("sky channel {} of {}", c + 1, dc.channels()));
         const int patch = c == dc.groundChannel() ? scene::SkyChannel::kGround : c;
         run.scene.daylight = scene::channelDaylight(base, {dc.patches, patch});
-        const auto values = solveChannel(run, clusters, false);
+        const auto values = solveChannel(run, clusters, false, [&](const radiosity::RadiositySolution& solution) {
+            if (onSolution) onSolution(c, -1, solution);
+        });
         if (!values) continue;
         ++dc.solvedChannels;
         for (size_t i = 0; i < values->size(); ++i)
@@ -72,7 +77,9 @@ DaylightCoefficients solveDaylightCoefficients(PipelineRun& run, std::shared_ptr
         progress.update(static_cast<double>(done) / total, fmt::format("sun {} of {}", done - dc.channels() + 1, suns));
         ++done;
         run.scene.daylight = scene::sunChannelDaylight(base, dc.patches->centre(j));
-        const auto values = solveChannel(run, clusters, true);
+        const auto values = solveChannel(run, clusters, true, [&](const radiosity::RadiositySolution& solution) {
+            if (onSolution) onSolution(-1, j, solution);
+        });
         if (!values) continue;
         dc.sunSlot[static_cast<size_t>(j)] = dc.solvedSuns++;
         for (const auto& v : *values) dc.sunIndirect.push_back(luminance(v.indirect));

@@ -7,6 +7,7 @@
 #include <app/pipeline.h>
 #include <scene/daylight/sky_patches.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -43,8 +44,12 @@ struct DaylightCoefficients {
 /// marks. Each solve's direct light and interreflection are those of an ordinary daylight
 /// solve under that sky; the sensors keep its interreflected light, their direct light
 /// comes from directSkyCoefficients on the `fine` patches. A progress line unless `quiet`.
+/// `onSolution` (if given) sees each solve's whole solution: channel c (sky tents, then the
+/// ground) with sunPatch −1, or the sun at the centre of patch sunPatch with c −1.
+using ChannelSolutionHook = std::function<void(int channel, int sunPatch, const radiosity::RadiositySolution&)>;
 DaylightCoefficients solveDaylightCoefficients(PipelineRun& run, std::shared_ptr<const scene::SkyPatches> patches,
                                                std::shared_ptr<const scene::SkyPatches> fine,
-                                               const std::vector<char>& sunNear, bool quiet);
+                                               const std::vector<char>& sunNear, bool quiet,
+                                               const ChannelSolutionHook& onSolution = {});
 
 }  // namespace rayrad::app
