@@ -137,6 +137,9 @@ void addAnnual(CLI::App& cli, AnnualArgs& a) {
                        "MM-DDTHH: also print that hour's illuminance at the single sensors, by part (the weather "
                        "file's hour ending at HH:00 standard time), to hold against a solve of that hour's sky "
                        "(repeatable)");
+    annual->add_option("--dimming-control", a.dimmingControls,
+                       "GROUP=SENSOR: with --dimming, the light group dims by the daylight at that sensor (default: "
+                       "the sensor it lights most; repeatable)");
     annual->add_option("--image", a.images,
                        "MM-DDTHH=FILE: render the scene's camera in that hour from the daylight coefficients, without a "
                        "solve of the hour (.exr/.png/.jpg; repeatable; daylight only, the lamps left out)");

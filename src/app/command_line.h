@@ -68,6 +68,7 @@ struct AnnualArgs {
     std::string metrics, hourly, plan, report;  ///< outputs
     std::vector<std::string> hours;  ///< "MM-DDTHH": print those hours' illuminance at the sensors, by part
     double dimming = 0;              ///< lx: daylight-linked dimming of the lamps to this target (0: none)
+    std::vector<std::string> dimmingControls;  ///< "GROUP=SENSOR": the point a light group dims by
     std::vector<std::string> images;  ///< "MM-DDTHH=FILE": render the camera in that hour from the coefficients
 };
 

@@ -12,6 +12,7 @@
 #include <core/output_file.h>
 #include <core/result_error.h>
 #include <core/stage_report.h>
+#include <scene/light_groups.h>
 #include <tonemap/false_colour.h>
 #include <tonemap/image_io.h>
 
@@ -154,7 +155,8 @@ tonemap::Picture annualPlans(const std::vector<scene::Sensor>& sensors, const An
 std::string annualReportJson(const std::string& sceneFile, const scene::WeatherFile& weather, int patches,
                              const Occupancy& occupancy, const DaylightCoefficients& dc, const AnnualStudy& study,
                              const std::vector<scene::Sensor>& sensors, const std::vector<std::string>& excluded,
-                             double dimming, const std::vector<std::optional<double>>& lampShares) {
+                             double dimming, const std::vector<std::optional<double>>& lampShares,
+                             const std::vector<GroupDimming>& dimmedGroups) {
     nlohmann::json j;
     j["scene"] = sceneFile;
     j["weather"] = {{"file", weather.path},      {"place", weather.city},
@@ -164,6 +166,11 @@ std::string annualReportJson(const std::string& sceneFile, const scene::WeatherF
     j["occupancy"] = {{"start_h", occupancy.start}, {"end_h", occupancy.end}, {"hours", study.occupiedHours}};
     j["hours_with_daylight"] = study.litHours;
     if (dimming > 0) j["dimming_target_lx"] = dimming;
+    for (const GroupDimming& g : dimmedGroups)
+        j["dimming_groups"].push_back({{"group", g.group},
+                                       {"control", sensors[g.control].name},
+                                       {"control_lamp_lx", g.controlIlluminance},
+                                       {"lamp_energy_share", g.energyShare}});
     j["en17037_hours"] = study.en17037HourCount;
     j["coefficients"] = {{"channels", dc.channels()},
                          {"solved_channels", dc.solvedChannels},
@@ -216,6 +223,17 @@ void printDimming(const std::vector<scene::Sensor>& sensors, const std::vector<s
     for (const auto& g : order)
         fmt::print("  {:<16} {:6.1f} % (mean of {} points)\n", g, 100 * grids[g].first / grids[g].second,
                    grids[g].second);
+}
+
+/// Each light group dimmed by its control point.
+void printGroupDimming(const std::vector<scene::Sensor>& sensors, const std::vector<GroupDimming>& groups,
+                       double target) {
+    fmt::print("light groups dimmed to {:g} lx at their control points, their energy over the occupied hours:\n",
+               target);
+    for (const GroupDimming& g : groups)
+        fmt::print("  {:<16} {:6.1f} %  (control: {}, {:.0f} lx from the group at full output)\n",
+                   g.group.empty() ? "(no group)" : g.group, 100 * g.energyShare, sensors[g.control].name,
+                   g.controlIlluminance);
 }
 
 /// One hour at the single sensors (not the grids' points), by part.
@@ -289,9 +307,21 @@ int runAnnual(const AnnualArgs& args) {
         throw InputError(placeMessage(a.scene, "", "--plan: the scene has no sensor grid or work plane"));
 
     std::vector<double> lamps;  // lx at full output, for --dimming
+    std::vector<GroupDimming> dimmedGroups;
+    if (!args.dimmingControls.empty() && !(args.dimming > 0))
+        throw InputError(placeMessage("", "--dimming-control", "needs --dimming LX, the target"));
     if (args.dimming > 0) {
         run.report.begin("lamps (for --dimming)");
         lamps = lampIlluminance(run);
+        const std::vector<std::string> groups = scene::lightGroups(run.scene);
+        if (groups.empty() && !args.dimmingControls.empty())
+            throw InputError(placeMessage(a.scene, "", "--dimming-control: the scene's lamps name no light groups"));
+        if (!groups.empty()) {
+            run.report.begin(fmt::format("light groups (for --dimming, {} solves)", groups.size()));
+            std::vector<std::vector<double>> groupLamps;
+            for (const auto& g : groups) groupLamps.push_back(lampIlluminance(run, g));
+            dimmedGroups = dimmingControls(run.scene.sensors, groups, groupLamps, args.dimmingControls);
+        }
     }
     run.report.begin(fmt::format("annual skies ({} hours)", weather.hours.size()));
     const auto patches = std::make_shared<const scene::SkyPatches>(mf);
@@ -331,12 +361,14 @@ int runAnnual(const AnnualArgs& args) {
 
     const std::vector<std::optional<double>> lampShares =
         args.dimming > 0 ? dimmingShares(study, lamps, args.dimming) : std::vector<std::optional<double>>{};
+    dimGroups(study, args.dimming, dimmedGroups);
 
     fmt::print("{}, {} ({:.2f}°, {:.2f}°): {} hours with daylight, {} occupied ({:g}–{:g} h), {} EN 17037 hours\n",
                weather.city, weather.country, weather.latitudeDeg, weather.longitudeDeg, study.litHours,
                study.occupiedHours, occupancy.start, occupancy.end, study.en17037HourCount);
     if (!study.grids.empty()) fmt::print("{}", annualGridTable(study, thresholds));
     if (args.dimming > 0) printDimming(run.scene.sensors, lampShares, args.dimming);
+    if (!dimmedGroups.empty()) printGroupDimming(run.scene.sensors, dimmedGroups, args.dimming);
     fmt::print("coefficients: {} sky channels ({} solved) and {} suns in {:.1f} CPU-s ({:.1f} s wall); the year: {:.1f} CPU-s ({:.1f} s "
                "wall); peak memory {:.0f} MiB\n",
                dc.channels(), dc.solvedChannels, dc.solvedSuns, dc.solveCpuSeconds, dc.solveWallSeconds, study.cpuSeconds,
@@ -355,7 +387,8 @@ int runAnnual(const AnnualArgs& args) {
     }
     if (!args.report.empty())
         files.set(args.report, annualReportJson(a.scene, weather, args.skyPatches, occupancy, dc, study,
-                                                run.scene.sensors, excluded, args.dimming, lampShares));
+                                                run.scene.sensors, excluded, args.dimming, lampShares,
+                                                dimmedGroups));
     files.commit();
     reportWritten(outputs);
     std::cerr << stagesSummary(run) << run.report.toString();
