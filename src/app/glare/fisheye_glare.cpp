@@ -26,8 +26,8 @@ constexpr uint8_t kTints[][3] = {{230, 40, 40},  {40, 120, 230}, {40, 180, 60}, 
 /// The sources: 8-connected regions of pixels above `threshold` (lum −1 outside the
 /// field), the peaks (above kPeakLuminance) apart from the rest; `sourceOfPixel` gets each
 /// pixel's region, or −1.
-std::vector<SourceSums> findSources(const std::vector<double>& lum, const std::vector<FisheyePixel>& px, int w, int h,
-                                    double threshold, std::vector<int>& sourceOfPixel) {
+std::vector<SourceSums> findSources(const std::vector<double>& lum, int w, int h, double threshold,
+                                    std::vector<int>& sourceOfPixel) {
     auto peak = [](double L) { return L > kPeakLuminance; };
     sourceOfPixel.assign(lum.size(), -1);
     std::vector<SourceSums> sums;
@@ -41,12 +41,12 @@ std::vector<SourceSums> findSources(const std::vector<double>& lum, const std::v
         while (!stack.empty()) {
             const size_t i = stack.back();
             stack.pop_back();
-            const FisheyePixel& p = px[i];
+            const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+            const FisheyePixel p = *fisheyePixel(w, h, x, y);  // in the field: lum ≥ 0
             s.solidAngle += p.solidAngle;
             s.luminanceOmega += lum[i] * p.solidAngle;
             s.illuminance += lum[i] * p.direction.z * p.solidAngle;
             s.direction += p.solidAngle * p.direction;
-            const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int nx = x + dx, ny = y + dy;
@@ -82,7 +82,6 @@ FisheyeGlare analyseFisheye(const HdrImage& image, const GlareThreshold& thresho
     const int w = image.width, h = image.height;
     const double R = std::min(w, h) / 2.0;
     std::vector<double> lum(image.pixels.size(), -1);  // −1: outside the field
-    std::vector<FisheyePixel> px(image.pixels.size());
     double omega = 0, lOmega = 0;
     FisheyeGlare out;
     for (int y = 0; y < h; ++y)
@@ -103,7 +102,6 @@ FisheyeGlare analyseFisheye(const HdrImage& image, const GlareThreshold& thresho
                 continue;
             }
             lum[i] = std::max(L, 0.0);
-            px[i] = *p;
             omega += p->solidAngle;
             lOmega += lum[i] * p->solidAngle;
             out.verticalIlluminance += lum[i] * p->direction.z * p->solidAngle;
@@ -112,7 +110,7 @@ FisheyeGlare analyseFisheye(const HdrImage& image, const GlareThreshold& thresho
     out.meanLuminance = lOmega / omega;
     out.threshold = threshold.luminance ? *threshold.luminance : threshold.factor * out.meanLuminance;
 
-    std::vector<SourceSums> sums = findSources(lum, px, w, h, out.threshold, out.sourceOfPixel);
+    std::vector<SourceSums> sums = findSources(lum, w, h, out.threshold, out.sourceOfPixel);
     std::vector<GlareSource> found;
     for (const SourceSums& s : sums) {
         GlareSource g;
