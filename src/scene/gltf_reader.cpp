@@ -58,10 +58,6 @@ class GltfReader {
     void read() {
         readMaterials();
         for (int node : rootNodes()) visit(node, glm::dmat4(1.0), 0);
-        if (!m_model.cameras.empty())
-            m_out.warnings.push_back(fmt::format("its {} camera(s) are not imported: give the scene a \"camera\" "
-                                                 "(or \"cameras\") of its own",
-                                                 m_model.cameras.size()));
     }
 
   private:
@@ -168,6 +164,7 @@ class GltfReader {
             for (const auto& primitive : m_model.meshes[node.mesh].primitives) addPrimitive(primitive, transform, node.mesh);
         }
         addLight(node, transform, index);
+        addCamera(node, transform, index);
         for (int child : node.children) visit(child, transform, depth + 1);
     }
 
@@ -302,6 +299,36 @@ class GltfReader {
                 m_builder.addFace(face, material, {uv[c[0]], uv[c[1]], uv[c[2]]});
             }
         }
+    }
+
+    /// A node's camera: at the node's origin, looking down its −z with +y up.
+    void addCamera(const tinygltf::Node& node, const glm::dmat4& transform, int index) {
+        if (node.camera < 0) return;
+        if (node.camera >= static_cast<int>(m_model.cameras.size()))
+            fail(fmt::format("node {}: camera {} does not exist", index, node.camera));
+        const tinygltf::Camera& in = m_model.cameras[node.camera];
+        ImportedCamera c;
+        c.name = !in.name.empty() ? in.name : !node.name.empty() ? node.name : fmt::format("camera {}", node.camera);
+        c.position = Vec3(transform * glm::dvec4(0, 0, 0, 1));
+        const auto direction = unitDirection(glm::dmat3(transform) * Vec3(0, 0, -1));
+        const auto up = unitDirection(glm::dmat3(transform) * Vec3(0, 1, 0));
+        if (!direction || !up || std::abs(glm::dot(*direction, *up)) > 1 - 1e-9)
+            fail(fmt::format("node {}: camera \"{}\" has a degenerate transform", index, c.name));
+        c.direction = *direction;
+        c.up = *up;
+        if (in.type == "orthographic") {
+            c.orthographic = true;
+            c.ymag = std::abs(in.orthographic.ymag);
+            if (in.orthographic.ymag != 0) c.aspectRatio = std::abs(in.orthographic.xmag / in.orthographic.ymag);
+            if (!(c.ymag > 0) || !std::isfinite(c.ymag)) fail(fmt::format("camera \"{}\": ymag must be positive", c.name));
+        } else {
+            c.yfovDeg = in.perspective.yfov * 180 / kPi;
+            c.aspectRatio = in.perspective.aspectRatio;
+            if (!(c.yfovDeg > 0 && c.yfovDeg < 180))
+                fail(fmt::format("camera \"{}\": yfov {:g} rad is not between 0 and π", c.name, in.perspective.yfov));
+        }
+        if (!(c.aspectRatio > 0 && c.aspectRatio < 100)) c.aspectRatio = 0;
+        m_out.cameras.push_back(c);
     }
 
     void addLight(const tinygltf::Node& node, const glm::dmat4& transform, int index) {

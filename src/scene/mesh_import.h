@@ -33,6 +33,17 @@ struct ImportedLight {
     double innerAngleDeg = 0, outerAngleDeg = 45;
 };
 
+/// A camera of the file (glTF), in the file's coordinates.
+struct ImportedCamera {
+    std::string name;
+    Vec3 position{0.0};
+    Vec3 direction{0, 0, -1}, up{0, 1, 0};  ///< unit: the camera's −z and +y
+    bool orthographic = false;
+    double yfovDeg = 45;      ///< perspective: the vertical field of view
+    double ymag = 1;          ///< orthographic: half the view's height, in the file's units
+    double aspectRatio = 0;   ///< width / height; 0 when the file does not say
+};
+
 /// Every mesh of the file as one triangle list in the file's coordinates with the node
 /// transforms applied. Vertices at identical positions are shared; polygons are
 /// triangulated here (not by assimp, whose post-processing can crash on broken files).
@@ -45,6 +56,7 @@ struct ImportedMesh {
     std::vector<std::array<glm::dvec2, 3>> triangleUvs;
     std::vector<ImportedMaterial> materials;
     std::vector<ImportedLight> lights;
+    std::vector<ImportedCamera> cameras;   ///< glTF's cameras, placed by their nodes
     size_t droppedFaces = 0;               ///< points, lines, faces with bad indices
     /// What the file asks for that rayrad reads otherwise, one line each without the
     /// file's name: of its geometry and lights, and of its materials (a missing .mtl, glTF

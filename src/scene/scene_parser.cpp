@@ -4,6 +4,7 @@
 #include <core/input_error.h>
 #include <core/input_file.h>
 #include <scene/daylight/daylight_parser.h>
+#include <scene/file_views.h>
 #include <scene/json_reader.h>
 #include <scene/overrides.h>
 #include <scene/sensor_names.h>
@@ -807,9 +808,13 @@ SceneDesc loadScene(const std::string& fileName, const std::vector<Override>& ov
         // Standard input can be read once; a run that loads the scene twice (the command
         // checks it before the work, the pipeline builds it) gets the same text.
         static const std::string text = readInputFile("-", "scene file", kMaxSceneFileBytes);
-        return parseScene(text, kStandardInputName, overrides);
+        SceneDesc desc = parseScene(text, kStandardInputName, overrides);
+        addFileViews(desc);
+        return desc;
     }
-    return parseScene(readInputFile(fileName, "scene file", kMaxSceneFileBytes), fileName, overrides);
+    SceneDesc desc = parseScene(readInputFile(fileName, "scene file", kMaxSceneFileBytes), fileName, overrides);
+    addFileViews(desc);
+    return desc;
 }
 
 }  // namespace rayrad::scene

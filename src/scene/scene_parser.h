@@ -31,8 +31,9 @@ constexpr size_t kMaxSceneFileBytes = size_t(256) << 20;
 /// The name a scene read from standard input ("-") has in messages.
 inline const char* const kStandardInputName = "<stdin>";
 
-/// Reads the file ("-": standard input) and parses it; a missing, unreadable or too
-/// large file, a directory or a device is an InputError.
+/// Reads the file ("-": standard input) and parses it, with the cameras of its glTF mesh
+/// files as views (addFileViews); a missing, unreadable or too large file, a directory or
+/// a device is an InputError.
 SceneDesc loadScene(const std::string& fileName, const std::vector<Override>& overrides = {});
 
 /// Splits "a.b=c" into an Override; throws InputError on a malformed string.

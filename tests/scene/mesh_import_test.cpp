@@ -249,8 +249,69 @@ TEST_CASE("glTF: a mirroring node keeps its faces' side, and doubleSided, transm
     };
     CHECK(said(mesh.materialWarnings, "material \"chrome\" is metallic (metallicFactor 1, roughness 0.05)"));
     CHECK(!said(mesh.materialWarnings, "paper"));
-    CHECK(said(mesh.warnings, "its 1 camera(s) are not imported"));
+    CHECK(mesh.cameras.empty());  // the file lists a camera, but no node places it
     CHECK(said(mesh.warnings, "\"sun\" is directional: left out"));
     CHECK(said(mesh.warnings, "\"dark\": its intensity (-5 × colour) is negative or not finite: left out"));
     CHECK(mesh.lights.empty());
+}
+
+TEST_CASE("glTF: cameras placed by their nodes become named views of the scene", "[scene][import]") {
+    // "side" at (1, 2, 3) turned 90° about y (looking along −x), yfov 0.8 rad, aspect 1.5;
+    // "plan" orthographic, turned −90° about x (looking down), xmag 2, ymag 1.
+    const char* gltf = R"({"asset": {"version": "2.0"},
+      "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+      "cameras": [{"name": "side", "type": "perspective", "perspective": {"yfov": 0.8, "aspectRatio": 1.5, "znear": 0.1}},
+                  {"name": "plan", "type": "orthographic", "orthographic": {"xmag": 2, "ymag": 1, "znear": 0.1, "zfar": 10}}],
+      "nodes": [{"mesh": 0},
+                {"camera": 0, "translation": [1, 2, 3], "rotation": [0, 0.70710678, 0, 0.70710678]},
+                {"camera": 1, "translation": [0, 5, 0], "rotation": [-0.70710678, 0, 0, 0.70710678]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+      "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})";
+    std::ofstream("/tmp/rayrad_test_cameras.gltf") << gltf;
+    const auto mesh = importMesh("/tmp/rayrad_test_cameras.gltf", "scene.json", "/objects/0");
+    REQUIRE(mesh.cameras.size() == 2);
+    const ImportedCamera& side = mesh.cameras[0];
+    CHECK(side.name == "side");
+    CHECK(side.position.x == Approx(1));
+    CHECK(side.position.z == Approx(3));
+    CHECK(side.direction.x == Approx(-1).margin(1e-6));
+    CHECK(side.up.y == Approx(1).margin(1e-6));
+    CHECK(side.yfovDeg == Approx(0.8 * 180 / kPi));
+    CHECK(side.aspectRatio == Approx(1.5));
+    const ImportedCamera& plan = mesh.cameras[1];
+    CHECK(plan.orthographic);
+    CHECK(plan.direction.y == Approx(-1).margin(1e-6));
+    CHECK(plan.up.z == Approx(-1).margin(1e-6));
+
+    // In a scene: moved 10 m along x by the object's transform; views after the scene's own.
+    const std::string sceneFile = "/tmp/rayrad_test_cameras.json";
+    std::ofstream(sceneFile) << R"({"materials": {"m": {"reflectance": 0.5}},
+      "objects": [{"type": "mesh", "file": "rayrad_test_cameras.gltf", "material": "m",
+                   "transform": {"translate": [10, 0, 0]}}],
+      "lights": [{"type": "point", "position": [0, 1, 0], "intensity_cd": 1}],
+      "cameras": [{"name": "mine", "position": [0, 1, 5], "look_at": [0, 0, 0]}]})";
+    const SceneDesc desc = loadScene(sceneFile);
+    REQUIRE(desc.views.size() == 3);
+    CHECK(desc.views[0].first == "mine");
+    CHECK(desc.camera->position.z == Approx(5));  // the scene's own stays the default
+    CHECK(desc.views[1].first == "side");
+    const CameraDesc& c = desc.views[1].second;
+    CHECK(c.position.x == Approx(11));
+    CHECK(c.lookAt.x == Approx(10).margin(1e-6));
+    CHECK(c.verticalFovDeg == Approx(0.8 * 180 / kPi));
+    CHECK(c.width == 720);
+    CHECK(c.height == 480);
+    CHECK(desc.views[2].second.projection == Projection::Orthographic);
+    CHECK(desc.views[2].second.orthoHeight == Approx(2));
+
+    // A file camera named like a view of the scene is refused.
+    std::ofstream(sceneFile) << R"({"materials": {"m": {"reflectance": 0.5}},
+      "objects": [{"type": "mesh", "file": "rayrad_test_cameras.gltf", "material": "m"}],
+      "lights": [{"type": "point", "position": [0, 1, 0], "intensity_cd": 1}],
+      "cameras": [{"name": "side", "position": [0, 1, 5], "look_at": [0, 0, 0]}]})";
+    CHECK_THROWS_WITH(loadScene(sceneFile), Catch::Contains("/objects/0/file") &&
+                                                Catch::Contains("the file's camera \"side\" has the name of a view"));
 }
