@@ -115,8 +115,8 @@ class GltfReader {
     }
 
     /// What of the material rayrad honours besides its colour — doubleSided (two-sided),
-    /// transmission (glass) — and what it names instead: metallic surfaces are read as
-    /// diffuse with their base colour.
+    /// transmission (glass), polished metal (a mirror where flat: the builder) — and what
+    /// it names instead: rough metal is read as diffuse with its base colour.
     void readSurfaceProperties(const tinygltf::Material& m, ImportedMaterial& out) {
         out.twoSided = m.doubleSided;
         auto number = [&](const char* extension, const char* key, double fallback) {
@@ -132,7 +132,8 @@ class GltfReader {
             out.twoSided = false;
         }
         const double metallic = m.pbrMetallicRoughness.metallicFactor;
-        if (!out.glass && metallic >= 0.5)
+        out.mirrorLike = !out.glass && metallic >= 0.5 && m.pbrMetallicRoughness.roughnessFactor <= kMirrorRoughness;
+        if (!out.glass && metallic >= 0.5 && !out.mirrorLike)
             m_out.materialWarnings.push_back(fmt::format(
                 "material \"{}\" is metallic (metallicFactor {:g}, roughness {:g}): read as diffuse with its base "
                 "colour (rayrad's mirrors are the scene file's quads, polygons and boxes)",

@@ -21,7 +21,11 @@ struct ImportedMaterial {
     /// index of KHR_materials_ior (1.5 by default).
     bool glass = false;
     double ior = 1.5;
+    /// glTF polished metal (metallicFactor ≥ 0.5, roughnessFactor ≤ kMirrorRoughness): a
+    /// mirror where its triangles are few and lie in one plane (the builder decides).
+    bool mirrorLike = false;
 };
+constexpr double kMirrorRoughness = 0.1;
 
 /// A punctual light of the file (glTF KHR_lights_punctual): point or spot, in candela.
 struct ImportedLight {

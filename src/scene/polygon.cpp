@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace rayrad::scene {
 
@@ -128,6 +129,25 @@ double segmentPolygonDistance(const Vec3& a, const Vec3& b, const std::vector<Ve
         if (polygonContains(v, normal, end - d * normal)) best = std::min(best, std::abs(d));  // over the face
     for (size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) best = std::min(best, segmentDistance(a, b, v[j], v[i]));
     return best;
+}
+
+bool trianglesInOnePlane(const std::vector<Vec3>& positions, const std::vector<std::vector<uint32_t>>& triangles) {
+    if (triangles.empty()) return false;
+    Vec3 lo(1e300), hi(-1e300);
+    for (const auto& t : triangles)
+        for (uint32_t i : t) lo = glm::min(lo, positions[i]), hi = glm::max(hi, positions[i]);
+    const double tolerance = 1e-6 * glm::length(hi - lo);
+    std::optional<Vec3> normal;
+    Vec3 origin(0.0);
+    for (const auto& t : triangles) {
+        const auto n = unitDirection(glm::cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]));
+        if (!n) continue;  // degenerate: no side of its own
+        if (!normal) normal = n, origin = positions[t[0]];
+        if (glm::dot(*n, *normal) < std::cos(kPi / 180)) return false;
+        for (uint32_t i : t)
+            if (std::abs(glm::dot(*normal, positions[i] - origin)) > tolerance) return false;
+    }
+    return normal.has_value();
 }
 
 }  // namespace rayrad::scene

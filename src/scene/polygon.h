@@ -29,5 +29,9 @@ double segmentPolygonDistance(const Vec3& a, const Vec3& b, const std::vector<Ve
 double segmentDistance(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s);
 /// Ear-clipping triangulation of a simple planar polygon; indices into v.
 std::vector<std::array<uint32_t, 3>> triangulate(const std::vector<Vec3>& v);
+/// Whether the triangles (indices into `positions`) lie in one plane and face one way:
+/// every vertex within 10⁻⁶ of their extent of the first triangle's plane, every normal
+/// within 1° of its normal.
+bool trianglesInOnePlane(const std::vector<Vec3>& positions, const std::vector<std::vector<uint32_t>>& triangles);
 
 }  // namespace rayrad::scene

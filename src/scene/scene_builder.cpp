@@ -20,6 +20,10 @@
 
 namespace rayrad::scene {
 
+/// A file's flat polished metal of more triangles than this stays diffuse: each triangle
+/// would be a mirror of the image method, with its own virtual lights.
+constexpr size_t kMaxFileMirrorTriangles = 8;
+
 Rgb PointLight::intensityToward(const Vec3& w) const {
     if (photometry) {
         // The luminaire's frame: C0, C90 = (−nadir) × C0, nadir.
@@ -263,6 +267,7 @@ class Builder {
             for (const auto& w : mesh.materialWarnings) s.warnings.fileWarnings.push_back(o.where + "/file: " + w);
         if (o.fileUnit == 0) checkUnit(s, o, mesh);
         std::map<int, SurfaceGroup> byMaterial;  // scene material → its triangles
+        std::map<int, const ImportedMaterial*> fromFile;  // scene material → the file's
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             int m = material;
             if (m < 0) {
@@ -272,6 +277,7 @@ class Builder {
                          "the mesh file gives some triangles no material: give the object a "
                          "\"material\"");
                 m = fileMaterial(s, o, mesh.materials[fileIndex]);
+                fromFile[m] = &mesh.materials[fileIndex];
             }
             SurfaceGroup& g = byMaterial[m];
             g.polygons.push_back(mesh.triangles[t]);
@@ -283,6 +289,7 @@ class Builder {
                 g.polygonUvs.emplace_back(mesh.triangleUvs[t].begin(), mesh.triangleUvs[t].end());
             }
         }
+        mirrorPolishedMetal(s, o, mesh.positions, fromFile, byMaterial);
         size_t kept = 0;
         for (auto& [m, g] : byMaterial) {
             g.positions = mesh.positions;
@@ -322,6 +329,48 @@ class Builder {
 
     /// The scene material for a file's material, created once per file and name; a JSON
     /// material of that name ("FILE:NAME", as info lists them) takes its place.
+    /// A file's polished metal (ImportedMaterial::mirrorLike) becomes a mirror where its
+    /// triangles in this mesh are few (kMaxFileMirrorTriangles: each is a mirror of the image
+    /// method) and lie in one plane; elsewhere it stays diffuse with its base colour. Either
+    /// way a warning says which.
+    void mirrorPolishedMetal(Scene& s, const ObjectDesc& o, const std::vector<Vec3>& positions,
+                             const std::map<int, const ImportedMaterial*>& fromFile,
+                             std::map<int, SurfaceGroup>& byMaterial) {
+        for (const auto& [m, file] : fromFile) {
+            if (!file->mirrorLike || s.materials[static_cast<size_t>(m)].kind != SurfaceKind::Diffuse) continue;
+            SurfaceGroup& g = byMaterial[m];
+            if (g.polygons.size() > kMaxFileMirrorTriangles || !trianglesInOnePlane(positions, g.polygons)) {
+                s.warnings.fileWarnings.push_back(fmt::format(
+                    "{}/file: material \"{}\" is polished metal, but its {} triangles {}: read as diffuse with its "
+                    "base colour",
+                    o.where, file->name, g.polygons.size(),
+                    g.polygons.size() > kMaxFileMirrorTriangles ? "are too many for mirrors" : "do not lie in one plane"));
+                continue;
+            }
+            const int mirror = fileMirrorMaterial(s, o, *file);
+            s.warnings.fileWarnings.push_back(fmt::format(
+                "{}/file: material \"{}\" is polished metal on a plane: read as a mirror (Ks = its base colour)",
+                o.where, file->name));
+            SurfaceGroup moved = std::move(g);
+            byMaterial.erase(m);
+            byMaterial[mirror] = std::move(moved);
+        }
+    }
+
+    /// The mirror material "<file>:<name> (mirror)", specular reflectance the base colour.
+    int fileMirrorMaterial(Scene& s, const ObjectDesc& o, const ImportedMaterial& m) {
+        const std::string name = o.file + ":" + m.name + " (mirror)";
+        if (auto it = m_fileMaterials.find(name); it != m_fileMaterials.end()) return it->second;
+        Material mat;
+        mat.name = name;
+        mat.kind = SurfaceKind::Mirror;
+        for (int c = 0; c < 3; ++c) mat.specular[c] = std::clamp(m.hasReflectance ? m.reflectance[c] : 1.0, 0.0, 1.0);
+        const int index = static_cast<int>(s.materials.size());
+        s.materials.push_back(mat);
+        m_fileMaterials.emplace(name, index);
+        return index;
+    }
+
     int fileMaterial(Scene& s, const ObjectDesc& o, const ImportedMaterial& m) {
         std::string name = o.file + ":" + m.name;
         auto it = m_fileMaterials.find(name);

@@ -247,7 +247,8 @@ TEST_CASE("glTF: a mirroring node keeps its faces' side, and doubleSided, transm
             if (l.find(what) != std::string::npos) return true;
         return false;
     };
-    CHECK(said(mesh.materialWarnings, "material \"chrome\" is metallic (metallicFactor 1, roughness 0.05)"));
+    CHECK(mesh.materials[2].mirrorLike);  // polished: the builder makes it a mirror where flat
+    CHECK(!said(mesh.materialWarnings, "chrome"));
     CHECK(!said(mesh.materialWarnings, "paper"));
     CHECK(mesh.cameras.empty());  // the file lists a camera, but no node places it
     CHECK(said(mesh.warnings, "\"sun\" is directional: left out"));
@@ -314,4 +315,43 @@ TEST_CASE("glTF: cameras placed by their nodes become named views of the scene",
       "cameras": [{"name": "side", "position": [0, 1, 5], "look_at": [0, 0, 0]}]})";
     CHECK_THROWS_WITH(loadScene(sceneFile), Catch::Contains("/objects/0/file") &&
                                                 Catch::Contains("the file's camera \"side\" has the name of a view"));
+}
+
+TEST_CASE("glTF: polished metal on a plane becomes a mirror, curved or rough metal stays diffuse and says so",
+          "[scene][import]") {
+    // Two triangles of "chrome" in the plane z = 0 (a square mirror), one of "bent chrome"
+    // tilted out of it together with one in it, and one of "brushed" (roughness 0.5).
+    const char* gltf = R"({"asset": {"version": "2.0"},
+      "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+      "nodes": [{"mesh": 0}, {"mesh": 1, "translation": [0, 0, 1]}, {"mesh": 2, "translation": [0, 0, 2]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]},
+                 {"primitives": [{"attributes": {"POSITION": 2}, "indices": 1, "material": 1}]},
+                 {"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 2}]}],
+      "materials": [{"name": "chrome", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.9, 0.9, 1], "metallicFactor": 1, "roughnessFactor": 0}},
+                    {"name": "bent chrome", "pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 0}},
+                    {"name": "brushed", "pbrMetallicRoughness": {"metallicFactor": 1, "roughnessFactor": 0.5}}],
+      "buffers": [{"byteLength": 108, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAACAPwAAgD8AAAAAAAAAAAAAgD8AAAAAAAABAAIAAAACAAMAAAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAACAPwAAgD8AAIA/AAAAAAAAgD8AAAAA"}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                      {"buffer": 0, "byteOffset": 60, "byteLength": 48}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+                    {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0,0,0], "max": [1,1,1]}]})";
+    std::ofstream("/tmp/rayrad_test_metal.gltf") << gltf;
+    const std::string sceneFile = "/tmp/rayrad_test_metal.json";
+    std::ofstream(sceneFile) << R"({"materials": {"white": {"reflectance": 0.5}},
+      "objects": [{"type": "mesh", "file": "rayrad_test_metal.gltf"},
+                  {"type": "box", "min": [-3, -3, -3], "max": [4, 4, 6], "facing": "inward", "material": "white"}],
+      "lights": [{"type": "point", "position": [0.5, 0.5, 4], "intensity_cd": 10}]})";
+    const Scene scene = buildScene(loadScene(sceneFile));
+    REQUIRE(scene.mirrors.size() == 2);  // the square's two triangles
+    CHECK(scene.mirrors[0].normal.z == Approx(1));
+    CHECK(scene.mirrors[0].specular.r == Approx(0.9));
+    auto said = [&](const std::string& what) {
+        for (const auto& l : scene.warnings.fileWarnings)
+            if (l.find(what) != std::string::npos) return true;
+        return false;
+    };
+    CHECK(said("material \"chrome\" is polished metal on a plane: read as a mirror"));
+    CHECK(said("material \"bent chrome\" is polished metal, but its 2 triangles do not lie in one plane"));
+    CHECK(said("material \"brushed\" is metallic (metallicFactor 1, roughness 0.5): read as diffuse"));
 }
