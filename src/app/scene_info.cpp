@@ -20,6 +20,17 @@ namespace rayrad::app {
 
 namespace {
 
+/// What a material is, for the listing: its kind and the values that matter for it.
+std::string materialText(const scene::Material& m) {
+    switch (m.kind) {
+        case scene::SurfaceKind::Diffuse: return "diffuse, reflectance " + toString(m.reflectance);
+        case scene::SurfaceKind::Mirror: return "mirror, Ks " + toString(m.specular);
+        case scene::SurfaceKind::Glass: return fmt::format("glass, index {:g}", m.ior);
+        case scene::SurfaceKind::Opening: return fmt::format("opening, transmittance {:g}", m.transmittance);
+    }
+    return "?";
+}
+
 /// info FILE.ies|FILE.ldt: its photometry and, asked, its UGR table.
 int printPhotometryInfo(const InfoArgs& args) {
     const std::string& file = args.common.scene;
@@ -55,11 +66,9 @@ int printSceneInfo(const InfoArgs& args, const std::vector<scene::Override>& ove
         if (scene.materials[g.material].isEmissive()) emissive += g.polygons.size();
     fmt::print("scene: {}\n", file);
     fmt::print("materials: {}\n", scene.materials.size());
-    for (const auto& m : scene.materials) {
-        static const char* kKinds[] = {"diffuse", "mirror", "glass"};
-        fmt::print("  {}: {}, reflectance {}{}\n", m.name, kKinds[static_cast<int>(m.kind)], toString(m.reflectance),
+    for (const auto& m : scene.materials)
+        fmt::print("  {}: {}{}\n", m.name, materialText(m),
                    m.isEmissive() ? fmt::format(", emits {} cd/m²", toString(m.emission)) : "");
-    }
     fmt::print("surface groups: {}, input polygons: {}\n", scene.groups.size(), scene.polygonCount());
     fmt::print(
         "patches (premeshed triangles): {} (estimated {:.0f}; target edge {:.4g} m), vertices: {}, area: {:.6g} m²\n",
@@ -85,6 +94,10 @@ int printSceneInfo(const InfoArgs& args, const std::vector<scene::Override>& ove
                             : "");
     }
     fmt::print("sensors: {}\n", scene.sensors.size());
+    for (const auto& o : scene.observers)
+        fmt::print("observer \"{}\" at {} looking {}{}\n", o.name, toString(o.position), toString(o.direction),
+                   o.ugrLimit ? fmt::format(", UGR limit {:g}{}", *o.ugrLimit, o.task.empty() ? "" : " (" + o.task + ")")
+                              : std::string());
     const radiosity::DirectLight lights(scene);  // its virtual lights are the mirror images' copies of the lights
     const size_t images = lights.imageCount();
     if (!scene.mirrors.empty())
@@ -97,9 +110,14 @@ int printSceneInfo(const InfoArgs& args, const std::vector<scene::Override>& ove
     fmt::print("expected peak memory: about {:.0f} MiB to solve, {:.0f} MiB to render ({} patches, {} clusters{})\n",
                peakMiB(false), peakMiB(true), mesh.patches.size(), clustering.clusters.size(),
                images > 0 ? fmt::format(", {} mirror images", images) : "");
-    for (const auto& v : scene.views)
-        fmt::print("view \"{}\": {}x{}, vfov {} deg{}\n", v.name, v.camera.width, v.camera.height,
-                   v.camera.verticalFovDeg, &v == &scene.views.front() ? " (the default)" : "");
+    for (const auto& v : scene.views) {
+        const auto& c = v.camera;
+        const std::string lens = c.projection == scene::Projection::Fisheye        ? "fisheye 180 deg"
+                                 : c.projection == scene::Projection::Orthographic ? fmt::format("orthographic, {:g} m high", c.orthoHeight)
+                                                                                   : fmt::format("vfov {:g} deg", c.verticalFovDeg);
+        fmt::print("view \"{}\": {}x{}, {}{}\n", v.name, c.width, c.height, lens,
+                   &v == &scene.views.front() ? " (the default)" : "");
+    }
     fmt::print("bounds: {} to {} (diagonal {:.6g} m)\n", toString(scene.boundsMin), toString(scene.boundsMax),
                scene.diagonal());
     if (scene.warnings.degeneratePolygons > 0)
@@ -112,8 +130,10 @@ int printSceneInfo(const InfoArgs& args, const std::vector<scene::Override>& ove
                    scene.warnings.clampedFileReflectances, scene::kMaxFileReflectance);
     for (const auto& w : scene.warnings.fileWarnings) fmt::print("warning: {}\n", w);
     if (!scene.textures.empty()) fmt::print("textures: {}\n", scene.textures.size());
-    fmt::print("stages needed: premesh, direct light{}{}{}\n", scene.hasReflectance() ? ", secondary pass" : "",
-               scene.sensors.empty() ? "" : ", sensor gather", scene.camera ? ", ray trace" : "");
+    fmt::print("stages needed: premesh, direct light{}{}{}{}\n", scene.hasReflectance() ? ", secondary pass" : "",
+               scene.sensors.empty() ? "" : ", sensor gather",
+               scene.observers.empty() ? "" : fmt::format(", glare ({} observers)", scene.observers.size()),
+               scene.camera ? ", ray trace" : "");
     std::vector<std::string> skipped;
     if (!scene.hasReflectance()) skipped.push_back("secondary pass (no surface reflects light)");
     if (scene.sensors.empty()) skipped.push_back("sensor gather (no sensors)");

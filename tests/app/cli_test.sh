@@ -9,6 +9,11 @@ cube="$src/scenes/cube/cube.json"
 "$rayrad" info "$cube" > "$work/info.txt"
 check "info counts patches" grep -q "patches (premeshed triangles): 4800" "$work/info.txt"
 check "info lists stages" grep -q "stages needed: premesh, direct light, secondary pass, sensor gather, ray trace" "$work/info.txt"
+# Every kind of material, and every view with its lens: the side-lit office's opening and fisheye.
+"$rayrad" info "$src/scenes/daylight-office/daylight-office.json" > "$work/info_day.txt"
+check "info of a daylight scene exits 0" [ $? -eq 0 ]
+check "info names an opening" grep -q "window: opening, transmittance 0.8" "$work/info_day.txt"
+check "info names a fisheye view" grep -q 'view "desk-eye": 480x480, fisheye 180 deg' "$work/info_day.txt"
 
 "$rayrad" solve "$cube" --set radiosity.max_edge=2.5 --sensors "$work/s.csv" -q > "$work/solve.txt" 2> "$work/solve.err"
 check "solve exit 0" test $? -eq 0
