@@ -21,6 +21,14 @@
 namespace rayrad::radiosity {
 
 namespace {
+/// Receivers a task of the delivery takes at least.
+constexpr size_t kDeliverGrain = 64;
+/// Receiving clusters a task of a shot's cluster transfers takes at least.
+constexpr size_t kTransferGrain = 16;
+}  // namespace
+
+
+namespace {
 /// Derived ΔI_max: this fraction of the scene's mean illuminance (measured trade-off, see
 /// docs/validation.md).
 constexpr double kDefaultStepFraction = 0.2;
@@ -320,7 +328,7 @@ void ShootingCore<V>::shootClusterToCluster(Shot& shot) {
     shot.isNear.assign(sources * n, 0);
     shot.nearAny.assign(n, 0);
     std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, imageTransfers{0}, imageLit{0};
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const tbb::blocked_range<size_t>& range) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kTransferGrain), [&](const tbb::blocked_range<size_t>& range) {
         int64_t cc = 0, split = 0, ccImage = 0, litImage = 0;
         for (size_t d = range.begin(); d != range.end(); ++d) {
             const Cluster& D = m_clustering.clusters[d];
@@ -464,7 +472,10 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     // The mirrors absorb in proportion to what they pass on.
     const double loss = delivered.mirrorLoss;
     m_stats.mirrorAbsorbed += loss * (1.0 + (loss < 0 ? -adjust : adjust));
-    tbb::parallel_for(size_t(0), reached.size(), [&](size_t k) {
+    // Chunks of receivers: a receiver's work is a few patches, and a task per receiver costs
+    // more than it does in small scenes.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, reached.size(), kDeliverGrain), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t k = range.begin(); k != range.end(); ++k) {
         const size_t d = reached[k];
         const Cluster& D = m_clustering.clusters[d];
         V reflectedSum(0.0);
@@ -485,6 +496,7 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
             }
         }
         m_light[d].pendingReflected += reflectedSum / (kPi * D.area);
+      }
     });
 }
 
