@@ -257,6 +257,73 @@ void printHour(const PipelineRun& run, const DaylightCoefficients& dc, const Sun
     }
 }
 
+/// The outputs of the study (checked and added to `files`), --image's included, for the
+/// "wrote" lines; `images` gets the hours to render. Before any work.
+std::vector<std::string> addAnnualOutputs(const AnnualArgs& args, const scene::SceneDesc& desc, OutputFiles& files,
+                                          std::vector<HourImage>& images) {
+    if (!args.plan.empty()) {
+        tonemap::checkImageFormat(args.plan);
+        if (tonemap::isHdrFormat(args.plan))
+            throw OutputError(placeMessage(args.plan, "", "a false-colour plan is a display image: use .png or .jpg"));
+    }
+    std::vector<std::string> outputs{args.metrics, args.hourly, args.plan, args.report};
+    addOutputs(files, outputs);
+    for (const auto& text : args.images) addHourImage(text, images, files);
+    for (const auto& image : images) outputs.insert(outputs.end(), image.paths.begin(), image.paths.end());
+    if (!images.empty() && !desc.camera)
+        throw InputError(placeMessage(desc.file, "", "--image: the scene has no camera to render"));
+    return outputs;
+}
+
+/// An InputError when the occupancy takes no hour of the weather file's year.
+void checkSchedule(const scene::WeatherFile& weather, const Occupancy& occupancy, int year) {
+    if (std::none_of(weather.hours.begin(), weather.hours.end(), [&](const scene::WeatherHour& h) {
+            return isOccupied(year, h.month, h.day, h.hour - 0.5, occupancy);
+        }))
+        throw InputError(placeMessage("--occupancy", "",
+                                      fmt::format("the schedule {}–{} h takes no hour of the year (the weather file's "
+                                                  "hours are taken at their middles, 0:30, 1:30 …)",
+                                                  occupancy.start, occupancy.end)));
+}
+
+/// --dimming: the lamps' light at every sensor at full output into `lamps` and, when they
+/// name light groups, each group's with its control point (one solve each).
+std::vector<GroupDimming> solveLampsForDimming(PipelineRun& run, const AnnualArgs& args, std::vector<double>& lamps) {
+    if (!args.dimmingControls.empty() && !(args.dimming > 0))
+        throw InputError(placeMessage("", "--dimming-control", "needs --dimming LX, the target"));
+    if (!(args.dimming > 0)) return {};
+    run.report.begin("lamps (for --dimming)");
+    lamps = lampIlluminance(run);
+    const std::vector<std::string> groups = scene::lightGroups(run.scene);
+    if (groups.empty() && !args.dimmingControls.empty())
+        throw InputError(
+            placeMessage(run.scene.file, "", "--dimming-control: the scene's lamps name no light groups"));
+    if (groups.empty()) return {};
+    run.report.begin(fmt::format("light groups (for --dimming, {} solves)", groups.size()));
+    std::vector<std::vector<double>> groupLamps;
+    for (const auto& g : groups) groupLamps.push_back(lampIlluminance(run, g));
+    return dimmingControls(run.scene.sensors, groups, groupLamps, args.dimmingControls);
+}
+
+/// The hour of "MM-DDTHH" for --image, which must have daylight to render.
+size_t litYearHour(const std::string& text, const std::vector<SkyHour>& skies) {
+    const size_t hour = parseYearHour(text, skies, "--image");
+    if (!skies[hour].lit)
+        throw InputError(placeMessage(
+            "--image", "", fmt::format("the weather file's hour {} has no daylight: nothing to render", text)));
+    return hour;
+}
+
+/// A broken result is no result: non-finite values, or no daylight anywhere all year.
+void checkStudy(const AnnualStudy& study, const std::string& sceneFile) {
+    if (std::any_of(study.total.begin(), study.total.end(), [](float v) { return !std::isfinite(v); }))
+        throw ResultError("the hourly illuminance holds non-finite values. Nothing was written");
+    if (std::all_of(study.total.begin(), study.total.end(), [](float v) { return v == 0; }))
+        throw ResultError(placeMessage(sceneFile, "",
+                                       "no sensor receives any daylight in the whole year: does any opening face the "
+                                       "sky? Nothing was written"));
+}
+
 }  // namespace
 
 int runAnnual(const AnnualArgs& args) {
@@ -271,28 +338,11 @@ int runAnnual(const AnnualArgs& args) {
     const auto desc = scene::loadScene(a.scene, o.overrides);
     OutputFiles files = filesOf(desc);
     files.addInput(args.weather);
-    for (const std::string* picture : {&args.plan}) {
-        if (picture->empty()) continue;
-        tonemap::checkImageFormat(*picture);
-        if (tonemap::isHdrFormat(*picture))
-            throw OutputError(placeMessage(*picture, "", "a false-colour plan is a display image: use .png or .jpg"));
-    }
-    std::vector<std::string> outputs{args.metrics, args.hourly, args.plan, args.report};
-    addOutputs(files, outputs);
     std::vector<HourImage> images;
-    for (const auto& text : args.images) addHourImage(text, images, files);
-    for (const auto& image : images) outputs.insert(outputs.end(), image.paths.begin(), image.paths.end());
-    if (!images.empty() && !desc.camera)
-        throw InputError(placeMessage(a.scene, "", "--image: the scene has no camera to render"));
+    const std::vector<std::string> outputs = addAnnualOutputs(args, desc, files, images);
     const scene::WeatherFile weather = scene::readWeatherFile(args.weather);
     const int year = weather.hours.size() == 8784 ? 2020 : 2021;  // the weekdays of summer time
-    if (std::none_of(weather.hours.begin(), weather.hours.end(), [&](const scene::WeatherHour& h) {
-            return isOccupied(year, h.month, h.day, h.hour - 0.5, occupancy);
-        }))
-        throw InputError(placeMessage("--occupancy", "",
-                                      fmt::format("the schedule {}–{} h takes no hour of the year (the weather file's "
-                                                  "hours are taken at their middles, 0:30, 1:30 …)",
-                                                  occupancy.start, occupancy.end)));
+    checkSchedule(weather, occupancy, year);
 
     if (!desc.daylight)
         throw InputError(placeMessage(a.scene, "", "an annual study needs the scene's \"daylight\" (its axes, ground "
@@ -307,35 +357,14 @@ int runAnnual(const AnnualArgs& args) {
         throw InputError(placeMessage(a.scene, "", "--plan: the scene has no sensor grid or work plane"));
 
     std::vector<double> lamps;  // lx at full output, for --dimming
-    std::vector<GroupDimming> dimmedGroups;
-    if (!args.dimmingControls.empty() && !(args.dimming > 0))
-        throw InputError(placeMessage("", "--dimming-control", "needs --dimming LX, the target"));
-    if (args.dimming > 0) {
-        run.report.begin("lamps (for --dimming)");
-        lamps = lampIlluminance(run);
-        const std::vector<std::string> groups = scene::lightGroups(run.scene);
-        if (groups.empty() && !args.dimmingControls.empty())
-            throw InputError(placeMessage(a.scene, "", "--dimming-control: the scene's lamps name no light groups"));
-        if (!groups.empty()) {
-            run.report.begin(fmt::format("light groups (for --dimming, {} solves)", groups.size()));
-            std::vector<std::vector<double>> groupLamps;
-            for (const auto& g : groups) groupLamps.push_back(lampIlluminance(run, g));
-            dimmedGroups = dimmingControls(run.scene.sensors, groups, groupLamps, args.dimmingControls);
-        }
-    }
+    std::vector<GroupDimming> dimmedGroups = solveLampsForDimming(run, args, lamps);
     run.report.begin(fmt::format("annual skies ({} hours)", weather.hours.size()));
     const auto patches = std::make_shared<const scene::SkyPatches>(mf);
     const auto fine = std::make_shared<const scene::SkyPatches>(kDirectSkyMultiplication);
     const auto skies = annualSkies(weather, *run.scene.daylight, *patches, *fine);
     std::vector<size_t> printedHours;
     for (const auto& hour : args.hours) printedHours.push_back(parseYearHour(hour, skies));
-    for (auto& image : images) {
-        image.hour = parseYearHour(image.hourText, skies, "--image");
-        if (!skies[image.hour].lit)
-            throw InputError(placeMessage("--image", "", fmt::format("the weather file's hour {} has no daylight: "
-                                                                     "nothing to render",
-                                                                     image.hourText)));
-    }
+    for (auto& image : images) image.hour = litYearHour(image.hourText, skies);
     const std::vector<char> suns = sunNodes(skies, *patches);
     const SunLight sun(run, *patches);
     HourSolutions hourSolutions(images, skies, sun, patches->count(), run.mesh.patches.size());
@@ -351,13 +380,7 @@ int runAnnual(const AnnualArgs& args) {
     const AnnualStudy study = runAnnualStudy(run, dc, sun, skies, occupancy, thresholds, excluded, year);
     run.report.end();
 
-    // A broken result is no result.
-    if (std::any_of(study.total.begin(), study.total.end(), [](float v) { return !std::isfinite(v); }))
-        throw ResultError("the hourly illuminance holds non-finite values. Nothing was written");
-    if (std::all_of(study.total.begin(), study.total.end(), [](float v) { return v == 0; }))
-        throw ResultError(placeMessage(a.scene, "",
-                                       "no sensor receives any daylight in the whole year: does any opening face the "
-                                       "sky? Nothing was written"));
+    checkStudy(study, a.scene);
 
     const std::vector<std::optional<double>> lampShares =
         args.dimming > 0 ? dimmingShares(study, lamps, args.dimming) : std::vector<std::optional<double>>{};
