@@ -33,7 +33,8 @@ std::string photometryReport(const scene::Photometry& p) {
     if (p.round)
         out += fmt::format("luminous opening: round, diameter {:.3f} m, height {:.3f} m\n", p.width, p.height);
     else
-        out += fmt::format("luminous opening: {:.3f} m wide, {:.3f} m long, {:.3f} m high\n", p.width, p.length, p.height);
+        out += fmt::format("luminous opening: {:.3f} m along C0, {:.3f} m along C90, {:.3f} m high\n", p.length, p.width,
+                           p.height);
     if (p.inputWatts > 0) out += fmt::format("input power: {:g} W\n", p.inputWatts);
     if (!p.tiltAngles.empty())
         out += fmt::format("tilt: {} angles from {:g}° to {:g}° (applied at 0°)\n", p.tiltAngles.size(), p.tiltAngles.front(),

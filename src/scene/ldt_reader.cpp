@@ -77,8 +77,11 @@ Photometry parseLdt(const std::string& text, const std::string& name) {
     const double openingLength = in.number(16, "the luminous area's length or diameter (mm)") * mm;
     const double openingWidth = in.number(17, "the luminous area's width (mm; 0: round)") * mm;
     p.round = openingWidth == 0;
-    p.width = p.round ? std::abs(openingLength) : std::abs(openingWidth);
-    p.length = p.round ? 0 : std::abs(openingLength);
+    // EULUMDAT's luminous length runs across the C0 plane, along C90–C270 (the lamp axis of
+    // a linear luminaire; DIALux's and Relux's UGR tables of files with luminous sides agree
+    // with it, not with the length along C0); Photometry's `length` is along C0.
+    p.width = std::abs(openingLength);
+    p.length = p.round ? 0 : std::abs(openingWidth);
     p.height = std::abs(in.number(18, "the luminous area's height at C0 (mm)")) * mm;
     const double lorl = in.number(23, "the light output ratio LORL (%)");
     if (lorl < 0 || lorl > 1000) in.fail(23, fmt::format("the light output ratio LORL {:g} % is not a percentage", lorl));

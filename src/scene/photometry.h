@@ -44,8 +44,9 @@ struct Photometry {
     int lampSets = 0;
     std::string lampType;
     double lampCount = 0;
-    /// The luminous opening, m: width (across), length (along C0), height. A round
-    /// opening has diameter `width` and length 0 (IES writes it as a negative width).
+    /// The luminous opening, m: width (along C90), length (along C0), height. A round
+    /// opening has diameter `width` and length 0 (IES writes it as a negative width). An
+    /// IES file's length lies along C0; an EULUMDAT file's along C90 (its `width` here).
     double width = 0, length = 0, height = 0;
     bool round = false;
     /// IES TILT: multiplying factors against lamp tilt angle (degrees), when the file

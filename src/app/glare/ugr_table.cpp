@@ -197,7 +197,8 @@ UgrTable ugrTable(const scene::Photometry& p, double spacing) {
 std::string ugrTableText(const UgrTable& table, const scene::Photometry& p) {
     std::string s = fmt::format("UGR table (CIE 190 tabular method) for {}\n", p.file);
     s += fmt::format("luminaire flux {:.1f} lm; luminous area ", table.flux);
-    s += p.round ? fmt::format("diameter {:.3f} m", p.width) : fmt::format("{:.3f} x {:.3f} m", p.length, p.width);
+    s += p.round ? fmt::format("diameter {:.3f} m", p.width)
+                 : fmt::format("{:.3f} m along C0 x {:.3f} m along C90", p.length, p.width);
     if (p.height > 0) s += fmt::format(", height {:.3f} m", p.height);
     s += fmt::format("; spacing {:g} H; observer seated (eye {:g} m) at the middle of a wall\n", table.spacing,
                      kUgrTableEyeHeight);
