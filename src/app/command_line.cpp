@@ -295,6 +295,9 @@ void addValidate(CLI::App& cli, CommandLine& args) {
 
     validate->add_subcommand("daylight",
                              "The sun's position, the CIE skies, the sky and the sun through openings, against references");
+    validate->add_subcommand("glare",
+                             "The glare formulas, CIE 190 UGR tables against CIE 190's, DIALux's and Relux's, a fisheye's "
+                             "figures, UGR at an observer against the table");
 }
 
 }  // namespace
@@ -319,6 +322,7 @@ void noteChosenCommand(const CLI::App& cli, CommandLine& args) {
         args.command = validate->got_subcommand("sphere")      ? Command::ValidateSphere
                        : validate->got_subcommand("luminaire") ? Command::ValidateLuminaire
                        : validate->got_subcommand("daylight")  ? Command::ValidateDaylight
+                       : validate->got_subcommand("glare")     ? Command::ValidateGlare
                                                                : Command::ValidateCube;
         return;
     }

@@ -95,6 +95,7 @@ struct CommandLine {
         ValidateSphere,
         ValidateLuminaire,
         ValidateDaylight,
+        ValidateGlare,
         Annual,
         Glare
     };

@@ -14,6 +14,7 @@
 #include <app/tiles.h>
 #include <app/validate_cube.h>
 #include <app/validate_daylight.h>
+#include <app/validate_glare.h>
 #include <app/validate_luminaire.h>
 #include <app/validate_runs.h>
 #include <app/validate_sphere.h>
@@ -324,6 +325,8 @@ int runCommand(const app::CommandLine& args) {
             return app::validateLuminaire(args.validateLuminaire);
         case Command::ValidateDaylight:
             return app::validateDaylight();
+        case Command::ValidateGlare:
+            return app::validateGlare();
         case Command::ValidateCube:
             return app::validateCube(args.validateCube);
         case Command::Render:

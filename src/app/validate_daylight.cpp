@@ -1,5 +1,6 @@
 #include <app/validate_daylight.h>
 
+#include <app/validation_checks.h>
 #include <radiosity/radiosity.h>
 #include <raytrace/embree_scene.h>
 #include <scene/daylight/glazing.h>
@@ -21,21 +22,6 @@
 namespace rayrad::app {
 
 namespace {
-
-struct Check {
-    std::string what;
-    double error = 0;  ///< in the unit of `unit`
-    double bound = 0;
-    std::string unit;  ///< "°" or "%"
-    double seconds = 0;
-};
-
-/// Times `run`, which returns the error.
-Check timed(const std::string& what, double bound, const std::string& unit, const std::function<double()>& run) {
-    const auto start = std::chrono::steady_clock::now();
-    const double error = run();
-    return {what, error, bound, unit, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-}
 
 /// A scene with one 2 × 2 m opening in the plane given by its corners (CCW seen from the
 /// room), a far floor, z up, and the sky and sun as JSON; DirectLight over it.
@@ -216,15 +202,7 @@ int validateDaylight() {
         return 100 * (back.diffuseHorizontalIrradiance / 110 - 1);
     }));
 
-    fmt::print("| check | error | bound | run time |\n|---|---:|---:|---:|\n");
-    bool ok = true;
-    for (const auto& c : checks) {
-        const bool within = std::abs(c.error) <= c.bound;
-        ok &= within;
-        fmt::print("| {} | {:+.4f} {} | {} {} | {:.3f} s |{}\n", c.what, c.error, c.unit, c.bound, c.unit, c.seconds,
-                   within ? "" : " **beyond the bound**");
-    }
-    return ok ? 0 : 1;
+    return printChecks(checks);
 }
 
 }  // namespace rayrad::app

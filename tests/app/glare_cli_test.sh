@@ -52,6 +52,11 @@ check "daylight solve exits 0" [ $? -eq 0 ]
 check "prints DGP per observer" grep -qE "^up +- .* 0\.[0-9]{3}  (imperceptible|perceptible|disturbing|intolerable)" <<<"$out"
 check "DGP in the CSV" grep -qE "^up,.*,0\.[0-9]{4},(imperceptible|perceptible|disturbing|intolerable)$" "$work/c.glare.csv"
 
+# rayrad validate glare: every check within its bound.
+out=$("$rayrad" validate glare 2>/dev/null)
+check "validate glare exits 0" [ $? -eq 0 ]
+check "validate glare prints its 12 checks" [ "$(grep -c ' s |$' <<<"$out")" -eq 12 ]
+
 # Bad input: one line naming the place, exit 2 (3 for an output), nothing written.
 scene inside "{$materials, \"objects\": [$room, {\"type\": \"box\", \"min\": [1,0,3], \"max\": [3,2,5],
   \"facing\": \"outward\", \"material\": \"white\"}], $luminaires,

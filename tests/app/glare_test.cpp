@@ -5,6 +5,7 @@
 #include <app/glare/glare_formulas.h>
 #include <app/glare/observer_glare.h>
 #include <app/glare/ugr_table.h>
+#include <app/validate_glare.h>
 #include <core/input_error.h>
 #include <scene/photometry.h>
 
@@ -13,49 +14,18 @@
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 using namespace rayrad;
 
 namespace {
 
-/// A reference table: 19 rows of 10 values; nothing where it prints "<10.0".
-std::vector<std::vector<std::optional<double>>> readReferenceTable(const std::string& name) {
-    std::ifstream in(test::sourcePath("tests/data/ugr/" + name));
-    REQUIRE(in);
-    std::vector<std::vector<std::optional<double>>> rows;
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.find_first_not_of(" \r") == std::string::npos) continue;
-        std::vector<std::optional<double>> row;
-        std::stringstream fields(line);
-        std::string f;
-        while (std::getline(fields, f, ','))
-            row.push_back(f.find('<') == std::string::npos ? std::optional<double>(std::stod(f)) : std::nullopt);
-        rows.push_back(row);
-    }
-    return rows;
-}
-
-/// The largest |ours − reference| over the entries both give.
+/// The largest |ours − reference| over the entries both give (at least 180 of them).
 double largestDifference(const app::UgrTable& ours, const std::string& reference) {
-    const auto ref = readReferenceTable(reference);
-    REQUIRE(ref.size() == ours.values.size());
-    double worst = 0;
     int compared = 0;
-    for (size_t i = 0; i < ref.size(); ++i) {
-        REQUIRE(ref[i].size() == 10);
-        for (size_t k = 0; k < 10; ++k) {
-            if (!ref[i][k]) continue;
-            REQUIRE(ours.values[i][k]);
-            worst = std::max(worst, std::abs(*ours.values[i][k] - *ref[i][k]));
-            ++compared;
-        }
-    }
+    const double worst =
+        app::largestUgrDifference(ours, app::readUgrReference(test::sourcePath("tests/data/ugr/" + reference)), &compared);
     CHECK(compared >= 180);
     return worst;
 }
@@ -159,47 +129,9 @@ TEST_CASE("glare: a luminaire file without a luminous area has no UGR table", "[
     CHECK_THROWS_WITH(app::ugrTable(p), Catch::Contains("flat.ies") && Catch::Contains("no luminous area"));
 }
 
-namespace {
-
-/// CIE 190's standard room 4H × 4H (H = 2 m) as a scene: floor 0.2, walls 0.5, ceiling 0.7,
-/// sixteen of the example luminaire at spacing 1 H just below the ceiling, C0 along the
-/// line of sight (crosswise), the observer seated at the middle of a wall looking along +z.
-/// `partition`: a wall from floor to ceiling hides the luminaires on the right (x > 0).
-nlohmann::json standardRoom(bool partition) {
-    using nlohmann::json;
-    json j;
-    j["materials"] = {{"floor", {{"reflectance", 0.2}}},
-                      {"walls", {{"reflectance", 0.5}}},
-                      {"ceiling", {{"reflectance", 0.7}}}};
-    auto quad = [](const char* m, json v) { return json{{"type", "quad"}, {"material", m}, {"vertices", v}}; };
-    j["objects"] = {
-        quad("floor", {{-4, 0, 0}, {-4, 0, 8}, {4, 0, 8}, {4, 0, 0}}),
-        quad("ceiling", {{-4, 3.2, 0}, {4, 3.2, 0}, {4, 3.2, 8}, {-4, 3.2, 8}}),
-        quad("walls", {{-4, 0, 0}, {4, 0, 0}, {4, 3.2, 0}, {-4, 3.2, 0}}),
-        quad("walls", {{4, 0, 8}, {-4, 0, 8}, {-4, 3.2, 8}, {4, 3.2, 8}}),
-        quad("walls", {{-4, 0, 8}, {-4, 0, 0}, {-4, 3.2, 0}, {-4, 3.2, 8}}),
-        quad("walls", {{4, 0, 0}, {4, 0, 8}, {4, 3.2, 8}, {4, 3.2, 0}}),
-    };
-    if (partition)
-        j["objects"].push_back(
-            {{"type", "box"}, {"material", "walls"}, {"min", {0, 0, 0.4}}, {"max", {4, 3.2, 0.5}}, {"facing", "outward"}});
-    const std::string file = test::sourcePath("tests/data/luminaires/eulumdatugr_sample_11.ldt");
-    j["lights"] = json::array();
-    for (double z : {1.0, 3.0, 5.0, 7.0})
-        for (double x : {-3.0, -1.0, 1.0, 3.0})
-            j["lights"].push_back({{"type", "luminaire"},
-                                   {"file", file},
-                                   {"position", {x, 3.19, z}},
-                                   {"aim", {x, 0, z}},
-                                   {"c0_toward", {0, 0, -1}}});
-    j["observers"] = {{{"name", "eye"}, {"position", {0, 1.2, 0.02}}, {"direction", {0, 0, 1}}, {"task", "office"}}};
-    return j;
-}
-
-}  // namespace
-
 TEST_CASE("glare: UGR at an observer against the table in CIE 190's standard room", "[glare]") {
-    const auto run = app::runPipeline(test::writeTempScene("ugr_standard_room", standardRoom(false).dump()),
+    const std::string ldt = test::sourcePath("tests/data/luminaires/eulumdatugr_sample_11.ldt");
+    const auto run = app::runPipeline(test::writeTempScene("ugr_standard_room", app::ugrStandardRoomJson(ldt, false)),
                                       test::quiet());
     REQUIRE(run.glare.size() == 1);
     const app::ObserverGlare& g = run.glare[0];
@@ -214,7 +146,7 @@ TEST_CASE("glare: UGR at an observer against the table in CIE 190's standard roo
 
     SECTION("a luminaire hidden behind a wall adds nothing") {
         const auto hidden = app::runPipeline(
-            test::writeTempScene("ugr_standard_room_partition", standardRoom(true).dump()), test::quiet());
+            test::writeTempScene("ugr_standard_room_partition", app::ugrStandardRoomJson(ldt, true)), test::quiet());
         REQUIRE(hidden.glare.size() == 1);
         const auto& h = hidden.glare[0];
         CHECK(h.sources.size() < g.sources.size());
