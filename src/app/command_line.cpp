@@ -28,6 +28,9 @@ void addReports(CLI::App* cmd, ReportArgs& r) {
     cmd->add_option(
         "--grid-picture", r.gridPicture,
         "Write the sensor grids' illuminance in false colour (.png/.jpg): isolux lines, legend, statistics");
+    cmd->add_option("--glare-pictures", r.glarePictures,
+                    "Write each observer's 180° fisheye with its glare sources marked, DIR/NAME.png (the observers then "
+                    "get DGP also without a daylight)");
 }
 
 void addRender(CLI::App& cli, RenderArgs& a) {

@@ -66,6 +66,7 @@ int runSolve(const app::SolveArgs& args) {
     o.overrides = overridesOf(a);
     o.quiet = a.quiet;
     o.logConvergence = !reports.convergence.empty();
+    o.observerFisheyes = !reports.glarePictures.empty();
     // Read and check the scene, then every output, before any work.
     const auto desc = scene::loadScene(a.scene, o.overrides);
     OutputFiles files = app::filesOf(desc);
@@ -163,7 +164,7 @@ void checkRenderOptions(const app::RenderArgs& args, const app::Tile& tile, cons
         {tile.count > 0, "--tile"},
         {args.snapshots > 0, "--snapshots"},
         {!args.reports.falseColour.empty(), "--false-colour"},
-        {o.wantSensors || o.logConvergence, "--sensors, --report, --grid-picture or --convergence"}};
+        {o.wantSensors || o.logConvergence, "--sensors, --report, --grid-picture, --glare-pictures or --convergence"}};
     for (const auto& [given, option] : alone)
         if (given)
             throw InputError(placeMessage("", "--frames",
@@ -216,7 +217,9 @@ int runRender(const app::RenderArgs& args) {
     o.quiet = a.quiet;
     o.wantImage = true;
     // Sensors only when something reports them.
-    o.wantSensors = !args.csv.empty() || !args.reports.report.empty() || !args.reports.gridPicture.empty();
+    o.wantSensors = !args.csv.empty() || !args.reports.report.empty() || !args.reports.gridPicture.empty() ||
+                    !args.reports.glarePictures.empty();
+    o.observerFisheyes = !args.reports.glarePictures.empty();
     o.logConvergence = !args.reports.convergence.empty();
     o.snapshots = args.snapshots;
     o.display = display;

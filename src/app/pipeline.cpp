@@ -280,7 +280,7 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
     }
 
     if (options.wantSensors && !run.scene.observers.empty()) {
-        run.glare = observerGlare(run);
+        run.glare = observerGlare(run, options.observerFisheyes);
     } else if (!run.scene.observers.empty()) {
         run.skipped.push_back("glare (not asked for: --sensors or --report)");
     }

@@ -23,6 +23,7 @@ struct PipelineOptions {
     std::vector<scene::Override> overrides;  ///< --set KEY=VALUE
     bool wantImage = false;                  ///< render: run the ray tracer
     bool wantSensors = true;                 ///< evaluate the scene's sensors
+    bool observerFisheyes = false;           ///< render each observer's fisheye (--glare-pictures)
     bool quiet = false;                      ///< no progress line
     /// Log error against time at every push-pull (rayrad solve --convergence).
     bool logConvergence = false;

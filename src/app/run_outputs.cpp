@@ -34,7 +34,12 @@ std::vector<std::string> addReportOutputs(const scene::SceneDesc& desc, const Re
     }
     if (!r.gridPicture.empty() && !hasSensorGrids(desc))
         throw InputError(placeMessage(desc.file, "", "--grid-picture: the scene has no sensor grid or work plane"));
-    const std::vector<std::string> out{r.convergence, r.report, r.gridPicture, r.falseColour};
+    std::vector<std::string> out{r.convergence, r.report, r.gridPicture, r.falseColour};
+    if (!r.glarePictures.empty()) {
+        if (desc.observers.empty())
+            throw InputError(placeMessage(desc.file, "", "--glare-pictures: the scene has no observers"));
+        for (size_t i = 0; i < desc.observers.size(); ++i) out.push_back(glarePicturePath(r.glarePictures, desc.observers, i));
+    }
     for (const auto& path : out)
         if (!path.empty()) files.add(path);
     return out;
@@ -130,6 +135,14 @@ void stageReports(const PipelineRun& run, const std::string& scene, const Report
                                                             ? run.scene.daylight->medianExternalIlluminance
                                                             : std::nullopt));
     if (!r.falseColour.empty() && run.image) picture(r.falseColour, luminancePicture(*run.image));
+    if (!r.glarePictures.empty())
+        for (size_t i = 0; i < run.glare.size(); ++i)
+            if (const auto& m = run.glare[i].marked) {
+                const std::string path = glarePicturePath(r.glarePictures, run.scene.observers, i);
+                files.set(path, tonemap::encodeDisplayImage(path, m->width, m->height, m->rgb,
+                                                            "rayrad: the glare sources seen by observer " +
+                                                                run.glare[i].observer.name));
+            }
 }
 
 }  // namespace rayrad::app

@@ -36,6 +36,7 @@ struct ReportArgs {
     std::string report;       ///< --report FILE.json
     std::string gridPicture;  ///< --grid-picture FILE.png
     std::string falseColour;  ///< render --false-colour FILE.png
+    std::string glarePictures;  ///< --glare-pictures DIR: each observer's marked fisheye, DIR/NAME.png
 };
 
 /// The sensor files, then the reports (a picture must be PNG or JPEG; a grid picture

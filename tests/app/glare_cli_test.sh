@@ -24,6 +24,13 @@ check "lists its sources" grep -q "^    /lights/1 " <<<"$out"
 check "glare CSV" grep -qE "^desk,2,1.2,0.5,0,0,1,[0-9.]+,19,office,pass," "$work/s.glare.csv"
 check "report has the observer" python3 -c "import json,sys; o=json.load(open('$work/r.json'))['observers'][0]; sys.exit(0 if o['name']=='desk' and o['ugr']>5 and len(o['sources'])==2 else 1)"
 
+# Each observer's fisheye with its sources marked (the luminaires ringed), and DGP with it.
+mkdir -p "$work/pictures"
+out=$("$rayrad" solve "$work/room.json" --glare-pictures "$work/pictures" -q 2>/dev/null)
+check "glare pictures: solve exits 0" [ $? -eq 0 ]
+check "glare pictures: the observer's picture" bash -c "head -c 8 '$work/pictures/desk.png' | grep -q PNG"
+check "glare pictures: DGP with them" grep -qE "^desk +[0-9]+\.[0-9] .* 0\.[0-9]{3}  (imperceptible|perceptible|disturbing|intolerable)" <<<"$out"
+
 # The UGR table of a luminaire file, and its CSV.
 out=$("$rayrad" info "$ldt" --ugr-table --ugr-csv "$work/t.csv" 2>/dev/null)
 check "info exits 0" [ $? -eq 0 ]
@@ -74,6 +81,7 @@ expect 2 "luminaire file without a luminous area" "flat.ies: the file gives no l
 scene flat "{$materials, \"objects\": [$room], \"lights\": [{\"type\": \"luminaire\", \"file\": \"$work/flat.ies\",
   \"position\": [2,2.99,3], \"aim\": [2,0,3]}], \"observers\": [$observer]}"
 expect 2 "an observer sees a luminaire without a luminous area" "whose file $work/flat.ies gives no luminous area" -- solve "$work/flat.json" --sensors "$work/out.csv" -q
+expect 2 "glare pictures without observers" "--glare-pictures: the scene has no observers" -- solve "$work/fish.json" --glare-pictures "$work"
 expect 2 "UGR table of a scene" "--ugr-table: a UGR table is made for a photometric file" -- info "$work/room.json" --ugr-table
 "$rayrad" render "$work/room.json" -o "$work/view.exr" -q 2>/dev/null
 expect 2 "glare of an image that is no fisheye" "view.exr: pixel (0, 0): not black outside the image's inscribed circle" -- glare "$work/view.exr" --report "$work/out.json"

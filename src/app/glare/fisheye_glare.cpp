@@ -143,7 +143,8 @@ FisheyeGlare analyseFisheye(const HdrImage& image, const GlareThreshold& thresho
     return out;
 }
 
-MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare) {
+MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare,
+                               const std::vector<GlareSource>& undrawn) {
     constexpr int kBand = 48;  // px below the image for the figures
     MarkedPicture m;
     m.width = image.width;
@@ -166,11 +167,7 @@ MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare)
             }
             for (int c = 0; c < 3; ++c) m.rgb[i * 3 + c] = static_cast<uint8_t>(std::lround(rgb[c]));
         }
-    // A ring around a source too small to see (the sun's disk is a pixel or two).
-    for (size_t k = 0; k < glare.sources.size(); ++k) {
-        if (n[k] == 0 || n[k] > 30) continue;
-        const double cx = sx[k] / n[k], cy = sy[k] / n[k];
-        const auto& tint = kTints[k % std::size(kTints)];
+    auto ring = [&](double cx, double cy, const uint8_t* tint) {
         for (int a = 0; a < 360; ++a)
             for (double radius : {9.0, 10.0}) {
                 const int x = static_cast<int>(std::lround(cx + radius * std::cos(a * kPi / 180)));
@@ -178,8 +175,22 @@ MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare)
                 if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
                 for (int c = 0; c < 3; ++c) m.rgb[(static_cast<size_t>(y) * image.width + x) * 3 + c] = tint[c];
             }
-    }
+    };
+    // A ring around a source too small to see (the sun's disk is a pixel or two).
+    for (size_t k = 0; k < glare.sources.size(); ++k)
+        if (n[k] > 0 && n[k] <= 30) ring(sx[k] / n[k], sy[k] / n[k], kTints[k % std::size(kTints)]);
     std::vector<tonemap::TextLabel> labels;
+    // The undrawn sources where the projection puts them: r = θ / 90° · R.
+    const double R = std::min(image.width, image.height) / 2.0;
+    constexpr uint8_t kLuminaireTint[3] = {255, 200, 0};
+    for (size_t k = 0; k < undrawn.size(); ++k) {
+        const Vec3& d = undrawn[k].direction;
+        const double r = std::acos(std::clamp(d.z, -1.0, 1.0)) / (kPi / 2) * R, phi = std::atan2(d.y, d.x);
+        const double cx = image.width / 2.0 + r * std::cos(phi) - 0.5, cy = image.height / 2.0 - r * std::sin(phi) - 0.5;
+        ring(cx, cy, kLuminaireTint);
+        labels.push_back({static_cast<int>(cx) + 14, static_cast<int>(cy), fmt::format("L{}", k + 1),
+                          tonemap::TextLabel::Align::Left, true, 12});
+    }
     for (size_t k = 0; k < glare.sources.size() && k < 9; ++k)
         if (n[k] > 0)
             labels.push_back({static_cast<int>(sx[k] / n[k]) + (n[k] > 30 ? 0 : 16), static_cast<int>(sy[k] / n[k]),
@@ -189,10 +200,13 @@ MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare)
                       fmt::format("DGP {:.2f} ({}), UGR {}, Ev {:.0f} lx", glare.dgp, dgpClass(glare.dgp),
                                   glare.ugr ? fmt::format("{:.1f}", *glare.ugr) : std::string("-"),
                                   glare.verticalIlluminance),
-                      tonemap::TextLabel::Align::Left, false, 15});
+                      tonemap::TextLabel::Align::Left, false, 14});
     labels.push_back({8, image.height + 40,
-                      fmt::format("{} source{} above {:.0f} cd/m2 (white)", glare.sources.size(), glare.sources.size() == 1 ? "" : "s", glare.threshold),
-                      tonemap::TextLabel::Align::Left, false, 13});
+                      fmt::format("{} source{} above {:.0f} cd/m2 (white){}", glare.sources.size(),
+                                  glare.sources.size() == 1 ? "" : "s", glare.threshold,
+                                  undrawn.empty() ? std::string()
+                                                  : fmt::format("; {} luminaires ringed", undrawn.size())),
+                      tonemap::TextLabel::Align::Left, false, 12});
     tonemap::drawText(m.rgb, m.width, m.height, labels);
     return m;
 }

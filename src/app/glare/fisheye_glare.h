@@ -56,12 +56,17 @@ struct FisheyeGlare {
 /// or its field is all black.
 FisheyeGlare analyseFisheye(const HdrImage& image, const GlareThreshold& threshold, const std::string& name);
 
-/// The fisheye for the eye: its luminance in grey (white at the threshold), each source tinted in its own colour and numbered, and a band below with
-/// DGP, its class, UGR and E_v. 8-bit RGB, width × (height + band).
+/// An 8-bit RGB picture, row-major, 3 bytes a pixel.
 struct MarkedPicture {
     int width = 0, height = 0;
     std::vector<uint8_t> rgb;
 };
-MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare);
+
+/// The fisheye for the eye: its luminance in grey (white at the threshold), each source
+/// tinted in its own colour and numbered, the `undrawn` sources (luminaires: the ray tracer
+/// does not draw them) ringed where they are and labelled L1, L2 …, and a band below with
+/// DGP, its class, UGR and E_v; width × (height + band).
+MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare,
+                               const std::vector<GlareSource>& undrawn = {});
 
 }  // namespace rayrad::app

@@ -42,6 +42,9 @@ struct GlareSource {
     double positionIndex = 1;  ///< P
     Vec3 direction{0, 0, 1};   ///< unit, view frame (x right, y up, z forward)
     std::string name;          ///< the luminaire it is, or "" (a region of an image)
+    /// Whether a rendering shows it: area lights, the sky and sunlit surfaces are drawn; a
+    /// luminaire (a point light with a distribution) is not.
+    bool drawn = true;
 
     /// L² ω / P², the term each source adds under UGR's and DGP's logarithms, cd²/(m⁴ sr).
     double term() const { return luminance * luminance * solidAngle / (positionIndex * positionIndex); }

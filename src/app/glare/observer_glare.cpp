@@ -1,6 +1,5 @@
 #include <app/glare/observer_glare.h>
 
-#include <app/glare/fisheye_glare.h>
 #include <app/pipeline.h>
 #include <app/scene_warnings.h>
 #include <app/sensor_table.h>
@@ -11,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -88,6 +88,7 @@ std::optional<GlareSource> lightSource(const scene::Scene& scene, const raytrace
     s.direction = d;
     s.positionIndex = positionIndex(d);
     s.name = place;
+    s.drawn = false;
     return s;
 }
 
@@ -188,7 +189,7 @@ double projectedLuminousArea(const scene::Photometry& p, const Vec3& w) {
     return std::max(flat * z, kMinProjectedShare * flat) + sides;
 }
 
-std::vector<ObserverGlare> observerGlare(PipelineRun& run) {
+std::vector<ObserverGlare> observerGlare(PipelineRun& run, bool pictures) {
     const scene::Scene& scene = run.scene;
     std::vector<ObserverGlare> out;
     if (scene.observers.empty()) return out;
@@ -196,7 +197,7 @@ std::vector<ObserverGlare> observerGlare(PipelineRun& run) {
     const auto gatherer = radiosity::sensorGatherer(run.scene, run.mesh, *run.embree, run.lighting, log);
     run.report.begin(fmt::format("glare ({} observers)", scene.observers.size()));
     for (const auto& o : scene.observers) out.push_back(glareAt(run, *gatherer, o));
-    if (!scene.daylight) return out;
+    if (!scene.daylight && !pictures) return out;
     // Daylight glare: the sky and the sun as the eye sees them, in a fisheye from the eye.
     PipelineOptions quiet;
     quiet.quiet = true;
@@ -210,8 +211,19 @@ std::vector<ObserverGlare> observerGlare(PipelineRun& run) {
         eye.width = eye.height = kObserverFisheyePixels;
         const RenderedView view = renderCamera(run, "fisheye of observer " + o.name, eye, quiet);
         const FisheyeGlare f = analyseFisheye(view.image, {}, "the fisheye of observer " + o.name);
-        g.dgp = daylightGlareProbability(g.directVertical + g.indirectVertical, f.sources);
-        g.dgpSources = f.sources.size();
+        // The picture's sources, and the luminaires it does not draw.
+        std::vector<GlareSource> undrawn, sources = f.sources;
+        for (const auto& s : g.sources)
+            if (!s.drawn) undrawn.push_back(s), sources.push_back(s);
+        g.dgp = daylightGlareProbability(g.directVertical + g.indirectVertical, sources);
+        g.dgpSources = sources.size();
+        if (pictures) {
+            FisheyeGlare shown = f;  // the figures the observer reports
+            shown.dgp = *g.dgp;
+            shown.ugr = g.ugr;
+            shown.verticalIlluminance = g.directVertical + g.indirectVertical;
+            g.marked = markGlareSources(view.image, shown, undrawn);
+        }
     }
     return out;
 }
@@ -286,6 +298,22 @@ nlohmann::json observerGlareJson(const std::vector<ObserverGlare>& observers) {
 std::string observerGlarePath(const std::string& sensorCsvPath) {
     const std::filesystem::path p(sensorCsvPath);
     return (p.parent_path() / (p.stem().string() + ".glare" + p.extension().string())).string();
+}
+
+std::string glarePicturePath(const std::string& dir, const std::vector<scene::Observer>& observers, size_t i) {
+    auto clean = [](const std::string& name) {
+        std::string out = name.empty() ? "observer" : name;
+        for (char& c : out)
+            if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '_';
+        return out;
+    };
+    std::string name = clean(observers[i].name);
+    for (size_t k = 0; k < observers.size(); ++k)
+        if (k != i && clean(observers[k].name) == name) {
+            name += fmt::format("-{}", i);
+            break;
+        }
+    return (std::filesystem::path(dir) / (name + ".png")).string();
 }
 
 }  // namespace rayrad::app

@@ -3,6 +3,7 @@
 // luminance of the indirect light at the eye.
 #pragma once
 
+#include <app/glare/fisheye_glare.h>
 #include <app/glare/glare_formulas.h>
 #include <scene/photometry.h>
 #include <scene/observers.h>
@@ -27,11 +28,12 @@ struct ObserverGlare {
     double backgroundLuminance = 0;  ///< L_b = E_ind / π, cd/m²
     std::optional<double> ugr;       ///< nothing when no source is seen, or no background
     std::string note;                ///< why there is no UGR, or ""
-    /// Under a daylight: DGP from the sources of a fisheye rendered at the eye
-    /// (kObserverFisheyePixels square, analyseFisheye's default threshold) and the gathered
-    /// E_v (direct + indirect); the sources it found.
+    /// Under a daylight (or with pictures): DGP from the sources of a fisheye rendered at the
+    /// eye (kObserverFisheyePixels square, analyseFisheye's default threshold) and the
+    /// luminaires it does not draw, with the gathered E_v (direct + indirect); how many.
     std::optional<double> dgp;
     size_t dgpSources = 0;
+    std::optional<MarkedPicture> marked;  ///< the fisheye with its sources marked, when asked for
     /// Within the observer's limit (true when it has none or sees no source).
     bool passes() const { return !observer.ugrLimit || !ugr || *ugr <= *observer.ugrLimit; }
 };
@@ -50,11 +52,17 @@ constexpr double kMinProjectedShare = 0.087;  // cos 85°
 /// The fisheye an observer's DGP is found in: this many pixels square.
 constexpr int kObserverFisheyePixels = 360;
 
-/// Every observer of a solved run (stage "glare (N observers)", and under a daylight a ray
-/// trace of each observer's fisheye). Throws InputError for an observer inside a solid, and
-/// for a light the eye sees that has no luminous area (a point light, a spot, a luminaire
-/// file without one): its luminance is unknown.
-std::vector<ObserverGlare> observerGlare(PipelineRun& run);
+/// Every observer of a solved run (stage "glare (N observers)", and under a daylight or with
+/// `pictures` a ray trace of each observer's fisheye: its DGP, and with `pictures` the
+/// marked picture). Throws InputError for an observer inside a solid, and for a light the
+/// eye sees that has no luminous area (a point light, a spot, a luminaire file without
+/// one): its luminance is unknown.
+std::vector<ObserverGlare> observerGlare(PipelineRun& run, bool pictures = false);
+
+/// Where --glare-pictures DIR puts observer i's picture: DIR/NAME.png, NAME the observer's
+/// name with anything but letters, digits, '.', '-' and '_' made '_' (and its index added
+/// when another observer's name comes out the same).
+std::string glarePicturePath(const std::string& dir, const std::vector<scene::Observer>& observers, size_t i);
 
 /// The observers as an aligned text table for the terminal, each observer's sources below.
 std::string observerGlareTable(const std::vector<ObserverGlare>& observers);
