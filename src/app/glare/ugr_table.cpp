@@ -119,17 +119,31 @@ WallTransferFactors wallTransferFactors(double x, double y, double h, const Room
     return {out[0], out[1], out[2]};
 }
 
-UgrTableEntry ugrTableEntry(const scene::Photometry& p, const UgrTableRoom& room, const RoomReflectances& rho,
-                            bool endwise, double spacing) {
-    const double H = kUgrTableHeight, width = room.x * H, depth = room.y * H;
-    // Crosswise: C0 along the line of sight, toward the observer; endwise: across it.
-    const Vec3 c0 = endwise ? Vec3(1, 0, 0) : Vec3(0, -1, 0);
+namespace {
+
+/// What a standard room shows the observer, whatever its reflectances: the luminaires'
+/// direct flux on its surfaces and the luminaires within the field the formula counts.
+struct RoomView {
+    double width = 0, depth = 0;  ///< m
+    DirectFlux direct;            ///< lm, all luminaires
+    std::vector<GlareSource> sources;
+    int luminaires = 0;
+};
+
+/// The room with the luminaire grid of `spacing` × H, the distribution turned into the
+/// room as `cells` (fluxCells with C0 along `c0`: crosswise toward the observer, endwise
+/// across the line of sight).
+RoomView roomView(const scene::Photometry& p, const UgrTableRoom& room, const Vec3& c0,
+                  const std::vector<FluxCell>& cells, double spacing) {
+    const double H = kUgrTableHeight;
+    RoomView v;
+    v.width = room.x * H, v.depth = room.y * H;
     const Vec3 nadir(0, 0, -1), c90 = glm::cross(-nadir, c0);
-    const std::vector<glm::dvec2> grid = luminaireGrid(width, depth, spacing * H);
-    const std::vector<FluxCell> cells = fluxCells(p, c0);
+    const std::vector<glm::dvec2> grid = luminaireGrid(v.width, v.depth, spacing * H);
+    v.luminaires = static_cast<int>(grid.size());
 
     // The direct flux, over every luminaire (the eye plane z = 0, the luminaires at z = H).
-    const DirectFlux direct = tbb::parallel_reduce(
+    v.direct = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, grid.size()), DirectFlux{},
         [&](const tbb::blocked_range<size_t>& range, DirectFlux sum) {
             for (size_t k = range.begin(); k < range.end(); ++k)
@@ -140,20 +154,13 @@ UgrTableEntry ugrTableEntry(const scene::Photometry& p, const UgrTableRoom& room
                         continue;
                     }
                     const double s = H / -d.z, x = grid[k].x + s * d.x, y = grid[k].y + s * d.y;
-                    (std::abs(x) <= width / 2 && y >= 0 && y <= depth ? sum.floor : sum.walls) += cell.flux;
+                    (std::abs(x) <= v.width / 2 && y >= 0 && y <= v.depth ? sum.floor : sum.walls) += cell.flux;
                 }
             return sum;
         },
         [](const DirectFlux& a, const DirectFlux& b) { return a + b; });
-    const WallTransferFactors ft = wallTransferFactors(width, depth, H, rho);
-    const double wallArea = 2 * H * (width + depth);
-    UgrTableEntry out;
-    out.backgroundLuminance =
-        (direct.floor * ft.fromFloor + direct.walls * ft.fromWalls + direct.ceiling * ft.fromCeiling) / wallArea / kPi;
-    out.luminaires = static_cast<int>(grid.size());
 
     // The luminaires as the eye at (0, 0, 0) sees them, looking along y with z up.
-    std::vector<GlareSource> sources;
     for (const glm::dvec2& at : grid) {
         const double T = std::abs(at.x), R = at.y;
         const double horizontal = std::hypot(T, R);
@@ -170,11 +177,36 @@ UgrTableEntry ugrTableEntry(const scene::Photometry& p, const UgrTableRoom& room
         if (!(intensity > 0) || s.positionIndex > kMaxPositionIndex) continue;
         s.luminance = intensity / area;
         s.solidAngle = area / (r * r);
-        sources.push_back(s);
+        v.sources.push_back(s);
     }
-    out.counted = static_cast<int>(sources.size());
-    out.ugr = unifiedGlareRating(out.backgroundLuminance, sources);
+    return v;
+}
+
+/// The room's entry for one set of reflectances: L_b = E_W,ind / π from the direct flux and
+/// the walls' transfer factors, over the walls' area 2H(X + Y).
+UgrTableEntry entryOf(const RoomView& v, const RoomReflectances& rho) {
+    const double H = kUgrTableHeight;
+    const WallTransferFactors ft = wallTransferFactors(v.width, v.depth, H, rho);
+    const double wallArea = 2 * H * (v.width + v.depth);
+    UgrTableEntry out;
+    out.backgroundLuminance =
+        (v.direct.floor * ft.fromFloor + v.direct.walls * ft.fromWalls + v.direct.ceiling * ft.fromCeiling) / wallArea /
+        kPi;
+    out.luminaires = v.luminaires;
+    out.counted = static_cast<int>(v.sources.size());
+    out.ugr = unifiedGlareRating(out.backgroundLuminance, v.sources);
     return out;
+}
+
+/// C0 crosswise (along the line of sight, toward the observer) or endwise (across it).
+Vec3 c0Of(bool endwise) { return endwise ? Vec3(1, 0, 0) : Vec3(0, -1, 0); }
+
+}  // namespace
+
+UgrTableEntry ugrTableEntry(const scene::Photometry& p, const UgrTableRoom& room, const RoomReflectances& rho,
+                            bool endwise, double spacing) {
+    const Vec3 c0 = c0Of(endwise);
+    return entryOf(roomView(p, room, c0, fluxCells(p, c0), spacing), rho);
 }
 
 UgrTable ugrTable(const scene::Photometry& p, double spacing) {
@@ -184,12 +216,16 @@ UgrTable ugrTable(const scene::Photometry& p, double spacing) {
     UgrTable t;
     t.spacing = spacing;
     t.flux = p.integratedFlux();
-    for (const auto& room : kUgrTableRooms) {
-        std::array<std::optional<double>, 10> row;
-        for (int view = 0; view < 2; ++view)
+    t.values.resize(kUgrTableRooms.size());
+    // Each room and view once: the reflectances change only the background.
+    for (int view = 0; view < 2; ++view) {
+        const Vec3 c0 = c0Of(view == 1);
+        const std::vector<FluxCell> cells = fluxCells(p, c0);
+        for (size_t i = 0; i < kUgrTableRooms.size(); ++i) {
+            const RoomView v = roomView(p, kUgrTableRooms[i], c0, cells, spacing);
             for (size_t k = 0; k < kUgrTableReflectances.size(); ++k)
-                row[view * 5 + k] = ugrTableEntry(p, room, kUgrTableReflectances[k], view == 1, spacing).ugr;
-        t.values.push_back(row);
+                t.values[i][static_cast<size_t>(view) * 5 + k] = entryOf(v, kUgrTableReflectances[k]).ugr;
+        }
     }
     return t;
 }
