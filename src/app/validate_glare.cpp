@@ -97,35 +97,27 @@ std::string ugrStandardRoomJson(const std::string& ldtFile, bool partition) {
     return j.dump();
 }
 
-namespace {
-
-/// A 601² fisheye: 100 cd/m² everywhere and a round source of 20 000 cd/m², 5° in radius,
-/// 20° up and 10° aside; its exact figures beside what analyseFisheye finds.
-struct SyntheticFisheye {
-    FisheyeGlare found;
-    double omega, ev, dgp;  ///< the exact ones
-    SyntheticFisheye() {
-        constexpr int n = 601;
-        constexpr double background = 100, bright = 20000, alpha = 5 * kPi / 180;
-        const Vec3 centre = glm::normalize(Vec3(std::tan(10 * kPi / 180), std::tan(20 * kPi / 180), 1));
-        HdrImage image(n, n);
-        for (int y = 0; y < n; ++y)
-            for (int x = 0; x < n; ++x)
-                if (auto p = fisheyePixel(n, n, x, y))
-                    image.at(x, y) = Rgb(glm::dot(p->direction, centre) > std::cos(alpha) ? bright : background);
-        found = analyseFisheye(image, {}, "synthetic fisheye");
-        // ∫ cos θ dω over a cone about an axis at θ_c: cos θ_c π sin² α.
-        omega = 2 * kPi * (1 - std::cos(alpha));
-        ev = kPi * background + (bright - background) * centre.z * kPi * std::sin(alpha) * std::sin(alpha);
-        GlareSource exact;
-        exact.luminance = bright;
-        exact.solidAngle = omega;
-        exact.positionIndex = positionIndex(centre);
-        dgp = daylightGlareProbability(ev, {exact});
-    }
-};
-
-}  // namespace
+SyntheticFisheye::SyntheticFisheye() {
+    constexpr int n = 601;
+    constexpr double background = 100, alpha = 5 * kPi / 180;
+    centre = glm::normalize(Vec3(std::tan(10 * kPi / 180), std::tan(20 * kPi / 180), 1));
+    HdrImage image(n, n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            if (auto p = fisheyePixel(n, n, x, y))
+                image.at(x, y) = Rgb(glm::dot(p->direction, centre) > std::cos(alpha) ? luminance : background);
+    found = analyseFisheye(image, {}, "synthetic fisheye");
+    // ∫ cos θ dω over a cone about an axis at θ_c: cos θ_c π sin² α.
+    omega = 2 * kPi * (1 - std::cos(alpha));
+    const double sourcePart = centre.z * kPi * std::sin(alpha) * std::sin(alpha);
+    ev = kPi * background + (luminance - background) * sourcePart;
+    GlareSource exact;
+    exact.luminance = luminance;
+    exact.solidAngle = omega;
+    exact.positionIndex = positionIndex(centre);
+    dgp = daylightGlareProbability(ev, {exact});
+    ugr = unifiedGlareRating((ev - luminance * sourcePart) / kPi, {exact}).value_or(0.0);
+}
 
 int validateGlare() {
     std::vector<Check> checks;

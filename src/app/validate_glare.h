@@ -3,6 +3,7 @@
 // tables of DIALux and Relux, exact cones — and UGR at an observer against the table.
 #pragma once
 
+#include <app/glare/fisheye_glare.h>
 #include <app/glare/ugr_table.h>
 
 #include <optional>
@@ -26,6 +27,18 @@ double largestUgrDifference(const UgrTable& ours, const UgrReference& reference,
 /// wall looking along +z (y up). `partition`: a wall from floor to ceiling 0.4 m in front
 /// of the eye hides the luminaires on its right (x > 0).
 std::string ugrStandardRoomJson(const std::string& ldtFile, bool partition);
+
+/// A 601² fisheye: 100 cd/m² everywhere and a round source of `luminance`, 5° in radius,
+/// 20° up and 10° aside (`centre`); what analyseFisheye finds beside the exact figures: the
+/// cone's solid angle 2π(1 − cos α), E_v = π L_bg + ΔL cos θ_c π sin² α, and DGP and UGR of
+/// the exact source (L_b from E_v less the source's part).
+struct SyntheticFisheye {
+    SyntheticFisheye();
+    static constexpr double luminance = 20000;  ///< cd/m²
+    Vec3 centre{0, 0, 1};
+    FisheyeGlare found;
+    double omega = 0, ev = 0, dgp = 0, ugr = 0;
+};
 
 /// Prints a Markdown table, one line per check with its error, its bound and its run time.
 /// Returns the exit code (1 when an error is beyond its bound).

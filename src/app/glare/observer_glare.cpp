@@ -198,7 +198,7 @@ std::vector<ObserverGlare> observerGlare(PipelineRun& run, bool pictures) {
     run.report.begin(fmt::format("glare ({} observers)", scene.observers.size()));
     for (const auto& o : scene.observers) out.push_back(glareAt(run, *gatherer, o));
     if (!scene.daylight && !pictures) return out;
-    // Daylight glare: the sky and the sun as the eye sees them, in a fisheye from the eye.
+    // DGP: the sky, the sun and the area lights as the eye sees them, in a fisheye from the eye.
     PipelineOptions quiet;
     quiet.quiet = true;
     for (auto& g : out) {
@@ -229,10 +229,10 @@ std::vector<ObserverGlare> observerGlare(PipelineRun& run, bool pictures) {
 }
 
 std::string observerGlareTable(const std::vector<ObserverGlare>& observers) {
-    const bool daylight = std::any_of(observers.begin(), observers.end(), [](const auto& g) { return g.dgp.has_value(); });
+    const bool anyDgp = std::any_of(observers.begin(), observers.end(), [](const auto& g) { return g.dgp.has_value(); });
     std::string s = fmt::format("{:<20} {:>6} {:>6} {:>6} {:>8} {:>10} {:>10} {:>10}", "observer", "UGR", "limit",
                                 "check", "sources", "L_b cd/m2", "Ev dir lx", "Ev ind lx");
-    s += daylight ? fmt::format(" {:>6}  {}\n", "DGP", "class") : "\n";
+    s += anyDgp ? fmt::format(" {:>6}  {}\n", "DGP", "class") : "\n";
     for (const auto& g : observers) {
         s += fmt::format("{:<20} {:>6} {:>6} {:>6} {:>8} {:>10.4g} {:>10.4g} {:>10.4g}", g.observer.name,
                          g.ugr ? fmt::format("{:.1f}", *g.ugr) : std::string("-"), limitText(g), checkText(g),
