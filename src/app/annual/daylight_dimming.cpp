@@ -31,21 +31,29 @@ std::vector<double> lampIlluminance(PipelineRun& run, const std::optional<std::s
     return out;
 }
 
+namespace {
+
+/// At point i, lamps giving `lamp` lx at full output: the mean over the occupied hours of
+/// d = min(1, max(0, (target − E_day) / lamp)).
+double meanOutput(const AnnualStudy& study, size_t i, double lamp, double target) {
+    const float* day = &study.total[i * study.hours];
+    double sum = 0;
+    size_t n = 0;
+    for (size_t h = 0; h < study.hours; ++h) {
+        if (!study.occupied[h]) continue;
+        sum += std::clamp((target - day[h]) / lamp, 0.0, 1.0);
+        ++n;
+    }
+    return n > 0 ? sum / n : 0.0;
+}
+
+}  // namespace
+
 std::vector<std::optional<double>> dimmingShares(const AnnualStudy& study, const std::vector<double>& lamps,
                                                  double target) {
     std::vector<std::optional<double>> out(study.points);
-    for (size_t i = 0; i < study.points; ++i) {
-        if (!(lamps[i] > 0)) continue;
-        const float* day = &study.total[i * study.hours];
-        double sum = 0;
-        size_t n = 0;
-        for (size_t h = 0; h < study.hours; ++h) {
-            if (!study.occupied[h]) continue;
-            sum += std::clamp((target - day[h]) / lamps[i], 0.0, 1.0);
-            ++n;
-        }
-        out[i] = n > 0 ? sum / n : 0.0;
-    }
+    for (size_t i = 0; i < study.points; ++i)
+        if (lamps[i] > 0) out[i] = meanOutput(study, i, lamps[i], target);
     return out;
 }
 
@@ -78,18 +86,8 @@ std::vector<GroupDimming> dimmingControls(const std::vector<scene::Sensor>& sens
 }
 
 void dimGroups(const AnnualStudy& study, double target, std::vector<GroupDimming>& groups) {
-    for (GroupDimming& d : groups) {
-        if (!(d.controlIlluminance > 0)) continue;
-        const float* day = &study.total[d.control * study.hours];
-        double sum = 0;
-        size_t n = 0;
-        for (size_t h = 0; h < study.hours; ++h) {
-            if (!study.occupied[h]) continue;
-            sum += std::clamp((target - day[h]) / d.controlIlluminance, 0.0, 1.0);
-            ++n;
-        }
-        d.energyShare = n > 0 ? sum / n : 0.0;
-    }
+    for (GroupDimming& d : groups)
+        if (d.controlIlluminance > 0) d.energyShare = meanOutput(study, d.control, d.controlIlluminance, target);
 }
 
 }  // namespace rayrad::app
