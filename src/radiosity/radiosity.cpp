@@ -52,9 +52,7 @@ void findContacts(PatchMesh& mesh, const scene::Scene& scene, const Visibility& 
 }
 
 Lighting solveDirect(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis, const StageLog& log) {
-    Lighting lighting;
-    lighting.lights = std::make_unique<DirectLight>(scene);
-    lighting.lights->measureEntering(vis);  // daylight: what the openings let in
+    Lighting lighting = lightingWith(scene, vis, RadiositySolution{});  // the lights; daylight: what the openings let in
     if (scene.mirrors.empty())
         log.skip("virtual lights and shooters (no mirrors)");
     else if (!scene.mirrorImages.imageMethod())
