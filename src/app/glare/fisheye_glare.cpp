@@ -145,7 +145,7 @@ FisheyeGlare analyseFisheye(const HdrImage& image, const GlareThreshold& thresho
 
 MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare,
                                const std::vector<GlareSource>& undrawn) {
-    constexpr int kBand = 48;  // px below the image for the figures
+    constexpr int kBand = 64;  // px below the image for the figures
     MarkedPicture m;
     m.width = image.width;
     m.height = image.height + kBand;
@@ -196,14 +196,17 @@ MarkedPicture markGlareSources(const HdrImage& image, const FisheyeGlare& glare,
             labels.push_back({static_cast<int>(sx[k] / n[k]) + (n[k] > 30 ? 0 : 16), static_cast<int>(sy[k] / n[k]),
                               glare.sources[k].name,
                               tonemap::TextLabel::Align::Centre, true, 14});
-    labels.push_back({8, image.height + 20,
-                      fmt::format("DGP {:.2f} ({}), UGR {}, Ev {:.0f} lx", glare.dgp, dgpClass(glare.dgp),
-                                  glare.ugr ? fmt::format("{:.1f}", *glare.ugr) : std::string("-"),
-                                  glare.verticalIlluminance),
+    // Figures of any scale: whole numbers from 100 up, three digits below.
+    auto figure = [](double v) { return v >= 100 ? fmt::format("{:.0f}", v) : fmt::format("{:.3g}", v); };
+    labels.push_back({8, image.height + 18, fmt::format("DGP {:.2f} ({})", glare.dgp, dgpClass(glare.dgp)),
                       tonemap::TextLabel::Align::Left, false, 14});
-    labels.push_back({8, image.height + 40,
-                      fmt::format("{} source{} above {:.0f} cd/m2 (white){}", glare.sources.size(),
-                                  glare.sources.size() == 1 ? "" : "s", glare.threshold,
+    labels.push_back({8, image.height + 36,
+                      fmt::format("UGR {}, Ev {} lx", glare.ugr ? fmt::format("{:.1f}", *glare.ugr) : std::string("-"),
+                                  figure(glare.verticalIlluminance)),
+                      tonemap::TextLabel::Align::Left, false, 13});
+    labels.push_back({8, image.height + 54,
+                      fmt::format("{} source{} above {} cd/m2 (white){}", glare.sources.size(),
+                                  glare.sources.size() == 1 ? "" : "s", figure(glare.threshold),
                                   undrawn.empty() ? std::string()
                                                   : fmt::format("; {} luminaires ringed", undrawn.size())),
                       tonemap::TextLabel::Align::Left, false, 12});
