@@ -71,7 +71,11 @@ void printSolveSummary(const PipelineRun& run) {
         100 * st.escapeFraction, st.conserving ? "on" : "off (" + st.conservationOff + ")",
         st.conserving ? fmt::format(" (largest adjustment {:.3g}%, {} shots beyond the {:.0f}% bound left alone)",
                                     100 * st.largestRescale, st.unbalancedShots, 100 * radiosity::kConservationBound)
-                      : "",
+        : st.cappedShots > 0
+            ? fmt::format(", but {} shots that delivered more than they shipped were scaled down to it (by up to "
+                          "{:.3g}%)",
+                          st.cappedShots, 100 * st.largestRescale)
+            : "",
         st.overshooting ? "on" : "off");
 }
 

@@ -458,12 +458,18 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     // proportion to |ΔE_j| A_j: ΔE_j (1 + sgn(ΔE_j) δ / Σ|ΔE_k| A_k), which is a plain
     // rescale when every delivery has one sign and stays exact when an overshooting
     // cluster ships light of both signs.
+    // Open scene: some of the flux shot escapes, so less may arrive (Σ_j F_ij < 1), but
+    // never more. More arrives where a receiver's one point overstates what it gets from a
+    // source much nearer than the receiver is wide (two surfaces a fraction of a millimetre
+    // apart, facing each other, meshed differently): such a surplus is taken away the same
+    // way.
     double adjust = 0;  // δ / Σ|ΔE_k| A_k
-    if (m_conserve) {
-        const double deficit = shotFlux + redelivered - delivered.net;
+    const double deficit = shotFlux + redelivered - delivered.net;
+    if (m_conserve || deficit < 0) {
         if (delivered.magnitude > 0 && std::abs(deficit) <= kConservationBound * delivered.magnitude) {
             adjust = deficit / delivered.magnitude;
             m_stats.largestRescale = std::max(m_stats.largestRescale, std::abs(adjust));
+            if (!m_conserve) ++m_stats.cappedShots;
         } else if (shotFlux != 0) {
             ++m_stats.unbalancedShots;
         }

@@ -39,6 +39,8 @@ struct ShootingStatistics {
     std::string conservationOff;  ///< why not: "open scene", "mirrors ignored", ...
     double largestRescale = 0;    ///< max |scale − 1| applied to a shot by the conservation
     int64_t unbalancedShots = 0;  ///< shots the conservation left alone (deficit beyond its bound)
+    /// Open scene: shots that delivered more than they shipped, scaled down to it.
+    int64_t cappedShots = 0;
     double mirrorAbsorbed = 0;    ///< lm the mirrors absorbed of what images delivered (delivered · (1/Π Ks − 1))
     bool overshooting = false;
     /// Overshooting was switched off during the solve because the residual stalled.
