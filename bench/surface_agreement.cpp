@@ -3,7 +3,9 @@
 // reflecting surfaces in proportion to their area, each evaluated as a sensor: the
 // indirect light interpolated from the mesh's vertex values (what the ray tracer shows)
 // against the final gather there. Prints, over the points whose indirect light is at
-// least 10 % of their total (where an image error in the indirect light shows):
+// least 10 % of their total (where an image error in the indirect light shows) and whose
+// total is at least 1 % of the bright points' (the 90th percentile; darker is black in
+// any exposure that shows the scene: the outside of a box, a gap behind a wall):
 //   - |mesh − gather| / total: median, 95th percentile, max (the image's relative error:
 //     a pixel is ρ (direct + indirect) / π, so the indirect light's difference over the
 //     total is the pixel's);
@@ -163,8 +165,14 @@ int main(int argc, char** argv) {
                          luminance(p.value.indirect), p.cpu, p.gathers);
         std::fclose(f);
     }
+    // A point lit at under 1 % of the bright points (the 90th percentile of the totals) is
+    // black in any exposure that shows the scene: the outside of a box, a gap behind a wall.
+    std::vector<double> totals;
+    for (const Point& p : points)
+        if (p.value.indirectVertex) totals.push_back(luminance(p.value.direct) + luminance(p.value.indirect));
+    const double darkBelow = 0.01 * quantile(totals, 0.9);
     std::vector<double> ofTotal, cpu, gathers;
-    int judged = 0, beyond5 = 0;
+    int judged = 0, beyond5 = 0, dark = 0;
     std::vector<std::pair<double, const Point*>> worst;
     for (const Point& p : points) {
         cpu.push_back(p.cpu);
@@ -172,6 +180,10 @@ int main(int argc, char** argv) {
         if (!p.value.indirectVertex) continue;
         const double gather = luminance(p.value.indirect), mesh = luminance(*p.value.indirectVertex);
         const double total = luminance(p.value.direct) + gather;
+        if (total < darkBelow) {
+            ++dark;
+            continue;
+        }
         if (!(total > 0) || gather < 0.1 * total) continue;
         ++judged;
         const double e = std::abs(mesh - gather) / total;
@@ -181,8 +193,9 @@ int main(int argc, char** argv) {
     }
     std::sort(worst.begin(), worst.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     fmt::print(
-        "{}: {} patches, solve {:.2f} CPU-s; {} points ({} covered, left out), {} with indirect >= 10 % of total\n",
-        sceneFile, run.mesh.patches.size(), solveCpu, sampled, hidden, judged);
+        "{}: {} patches, solve {:.2f} CPU-s; {} points ({} covered, {} dark: below {:.3g} lx, left out), {} with "
+        "indirect >= 10 % of total\n",
+        sceneFile, run.mesh.patches.size(), solveCpu, sampled, hidden, dark, darkBelow, judged);
     fmt::print("|mesh - gather| / total: median {:.2f} %, 95th percentile {:.2f} %, max {:.1f} %\n",
                100 * quantile(ofTotal, 0.5), 100 * quantile(ofTotal, 0.95), 100 * quantile(ofTotal, 1.0));
     fmt::print("points whose mesh value is more than 5 % from its gather: {} of {} ({:.1f} %)\n", beyond5, judged,

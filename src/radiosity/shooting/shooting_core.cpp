@@ -459,13 +459,15 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     // rescale when every delivery has one sign and stays exact when an overshooting
     // cluster ships light of both signs.
     // Open scene: some of the flux shot escapes, so less may arrive (Σ_j F_ij < 1), but
-    // never more. More arrives where a receiver's one point overstates what it gets from a
-    // source much nearer than the receiver is wide (two surfaces a fraction of a millimetre
-    // apart, facing each other, meshed differently): such a surplus is taken away the same
-    // way.
+    // never more — of either sign: an overshooting shooter may ship negative light. More
+    // arrives where a receiver's one point overstates what it gets from a source much
+    // nearer than the receiver is wide (two surfaces a fraction of a millimetre apart,
+    // facing each other, meshed differently): such a surplus is taken away the same way.
     double adjust = 0;  // δ / Σ|ΔE_k| A_k
-    const double deficit = shotFlux + redelivered - delivered.net;
-    if (m_conserve || deficit < 0) {
+    const double shipped = shotFlux + redelivered;
+    const double deficit = shipped - delivered.net;
+    const bool surplus = shipped > 0 ? deficit < 0 : deficit > 0;
+    if (m_conserve || surplus) {
         if (delivered.magnitude > 0 && std::abs(deficit) <= kConservationBound * delivered.magnitude) {
             adjust = deficit / delivered.magnitude;
             m_stats.largestRescale = std::max(m_stats.largestRescale, std::abs(adjust));
