@@ -463,10 +463,11 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     // arrives where a receiver's one point overstates what it gets from a source much
     // nearer than the receiver is wide (two surfaces a fraction of a millimetre apart,
     // facing each other, meshed differently): such a surplus is taken away the same way.
+    // Not in a shot with corrections: what they took away is the earlier cluster→cluster
+    // estimate, and the patch→patch one that replaces it may rightly be larger.
     double adjust = 0;  // δ / Σ|ΔE_k| A_k
-    const double shipped = shotFlux + redelivered;
-    const double deficit = shipped - delivered.net;
-    const bool surplus = shipped > 0 ? deficit < 0 : deficit > 0;
+    const double deficit = shotFlux + redelivered - delivered.net;
+    const bool surplus = redelivered == 0 && (shotFlux > 0 ? deficit < 0 : deficit > 0);
     if (m_conserve || surplus) {
         if (delivered.magnitude > 0 && std::abs(deficit) <= kConservationBound * delivered.magnitude) {
             adjust = deficit / delivered.magnitude;
