@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace rayrad::radiosity {
 
@@ -443,8 +444,41 @@ void ShootingCore<V>::shootCluster(size_t c, int radius) {
         shot.shotFlux -= back;
         m_stats.mirrorAbsorbed += back;
     }
+    checkFinite(c, shot.shotFlux, redelivered, delivered);
     deliver(shot.shotFlux, redelivered, delivered);
     light.radius = shot.r;
+}
+
+template <class V>
+void ShootingCore<V>::checkFinite(size_t c, double shotFlux, double redelivered, const AtSource& delivered) const {
+    if (std::isfinite(shotFlux) && std::isfinite(redelivered) && std::isfinite(delivered.magnitude)) return;
+    const Cluster& C = m_clustering.clusters[c];
+    std::ostringstream s;
+    s << "a shot from cluster " << c << " (" << C.patches.size() << " patches, centroid ("
+      << C.centroid.x << ", " << C.centroid.y << ", " << C.centroid.z << "), area " << C.area
+      << " m²) is not finite: flux shot " << shotFlux << " lm, redelivered " << redelivered << " lm, delivered "
+      << delivered.magnitude << " lm";
+    auto describe = [&](uint32_t i) {
+        const Patch& p = m_mesh.patches[i];
+        s << "patch " << i << " (" << m_scene.materials[p.material].name << ", centroid (" << p.centroid.x << ", "
+          << p.centroid.y << ", " << p.centroid.z << "), area " << p.area << " m², normal (" << p.normal.x << ", "
+          << p.normal.y << ", " << p.normal.z << "))";
+    };
+    for (uint32_t i : C.patches)
+        if (!std::isfinite(lum(m_unshot[i])) || !std::isfinite(lum(m_indirect[i])) || !(m_patchArea[i] > 0)) {
+            s << "; the shooter's ";
+            describe(i);
+            s << " holds unshot " << lum(m_unshot[i]) << ", indirect " << lum(m_indirect[i]);
+            break;
+        }
+    for (uint32_t j = 0; j < m_shotE.size(); ++j)
+        if (!std::isfinite(lum(m_shotE[j])) || !std::isfinite(lum(m_shotPending[j]))) {
+            s << "; the first receiver not finite: ";
+            describe(j);
+            s << (std::isfinite(lum(m_shotE[j])) ? " (cluster→cluster)" : " (patch→patch)");
+            break;
+        }
+    throw InternalError(s.str());
 }
 
 template <class V>

@@ -207,6 +207,10 @@ class ShootingCore final : public ShootingCoreBase {
     /// shot's corrections took away to deliver again; `delivered`: the shot's deliveries
     /// at the source.
     void deliver(double shotFlux, double redelivered, const AtSource& delivered);
+    /// A shot whose flux or deliveries are not finite stops the solve at once, with what
+    /// is known of the shooter and the first receiver hit (InternalError): a solution
+    /// holding NaN is refused at the end anyway, after the whole solve's time.
+    void checkFinite(size_t c, double shotFlux, double redelivered, const AtSource& delivered) const;
     /// E_amb in lx: the illuminance the unshot power will still add everywhere (overshooting).
     V ambientIlluminance() const;
     /// What a correction moved, lm per channel: the history taken away, and the flux
