@@ -267,7 +267,8 @@ PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& de
         const auto values = radiosity::gatherSensors(run.scene, run.mesh, *run.embree, run.lighting, log);
         const auto& day = run.scene.daylight;
         for (size_t i = 0; i < values.size(); ++i) {
-            run.sensors.push_back({run.scene.sensors[i], values[i], i < inSolid.size() ? inSolid[i] : std::string(), {}});
+            run.sensors.push_back(
+                {run.scene.sensors[i], values[i], i < inSolid.size() ? inSolid[i] : std::string(), {}});
             // Under a sky without direct sun: the daylight factor against the open sky.
             if (day && !day->hasDirectSun() && day->skyHorizontalIlluminance > 0)
                 run.sensors.back().daylightFactor =
@@ -324,6 +325,10 @@ std::string convergenceCsv(const PipelineRun& run) {
         s += "\n";
     }
     return s;
+}
+
+radiosity::EnergyBalance energyBalanceOf(const PipelineRun& run) {
+    return radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
 }
 
 }  // namespace rayrad::app

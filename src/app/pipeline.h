@@ -68,7 +68,7 @@ struct PipelineRun {
     std::unique_ptr<raytrace::EmbreeScene> embree;
     radiosity::Lighting lighting;  ///< the lights, clusters and solution, and the solve's counts
     std::vector<SensorResult> sensors;
-    std::vector<ObserverGlare> glare;  ///< UGR at the scene's observers
+    std::vector<ObserverGlare> glare;      ///< UGR at the scene's observers
     std::optional<HdrImage> image;         ///< cd/m², the plain average of each pixel's samples (EXR, numbers)
     std::optional<HdrImage> displayImage;  ///< the range-compressed average display images are made from
     StageReport report;
@@ -87,6 +87,9 @@ PipelineRun runPipeline(const std::string& sceneFile, const PipelineOptions& opt
 /// options.overrides (the commands read it first to check their outputs): it is not read
 /// again (a grid of 10⁶ sensors took 0.45 s to parse).
 PipelineRun runPipeline(const std::string& sceneFile, const scene::SceneDesc& desc, const PipelineOptions& options);
+
+/// The energy account of a run's solution against what its lights emit.
+radiosity::EnergyBalance energyBalanceOf(const PipelineRun& run);
 
 /// The stages before the lighting (parse and build, premesh, visibility, the scene's
 /// warnings), for a caller that solves the lighting itself (the annual study solves it

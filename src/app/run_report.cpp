@@ -59,7 +59,7 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
                   {"push_pulls", run.lighting.shooting.pushPulls},
                   {"channels", run.lighting.singleChannel ? 1 : 3}};
     if (run.lighting.lights) {
-        auto b = radiosity::energyBalance(run.scene, run.mesh, s, run.lighting.lights->emittedFlux());
+        auto b = energyBalanceOf(run);
         j["energy_lm"] = {{"emitted", b.emitted},
                           {"absorbed", b.absorbed},
                           {"absorbed_by_mirrors", b.mirrorAbsorbed},
@@ -91,9 +91,9 @@ std::string runReportJson(const PipelineRun& run, const std::string& sceneFile, 
     j["grids"] = json::array();
     const auto& day = run.scene.daylight;
     for (const auto& g : gridStatistics(run.sensors, day ? day->medianExternalIlluminance : std::nullopt)) {
-        json e = {{"grid", g.grid},          {"points", g.points},   {"emin_lx", g.minimum},
-                  {"eavg_lx", g.mean},       {"emedian_lx", g.median}, {"emax_lx", g.maximum},
-                  {"u0", g.u0()},            {"emin_emax", g.minToMax()}, {"excluded_points", g.excluded}};
+        json e = {{"grid", g.grid},    {"points", g.points},        {"emin_lx", g.minimum},
+                  {"eavg_lx", g.mean}, {"emedian_lx", g.median},    {"emax_lx", g.maximum},
+                  {"u0", g.u0()},      {"emin_emax", g.minToMax()}, {"excluded_points", g.excluded}};
         if (g.dfMean) e["daylight_factor_pct"] = {{"min", *g.dfMinimum}, {"mean", *g.dfMean}, {"median", *g.dfMedian}};
         if (g.shareAboveTarget)
             e["en17037_method1"] = {{"d_t_pct", *g.dfTarget},

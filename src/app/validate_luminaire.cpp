@@ -134,8 +134,7 @@ Result validateFile(const std::string& file, const std::string& outDir) {
         ++r.sphereSensors;
         r.indirectError = std::max(r.indirectError, std::abs(luminance(s.value.indirect) / uniform - 1));
     }
-    const auto balance = radiosity::energyBalance(closed.scene, closed.mesh, closed.lighting.solution,
-                                                  closed.lighting.lights->emittedFlux());
+    const auto balance = energyBalanceOf(closed);
     r.energyError = std::abs(balance.relativeError());
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;

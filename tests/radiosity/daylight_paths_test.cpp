@@ -20,9 +20,9 @@ namespace {
 
 struct Triangle {
     Vec3 a, b, c, normal;
-    double rho = 0;       ///< diffuse reflectance (luminance)
+    double rho = 0;  ///< diffuse reflectance (luminance)
     bool opening = false;
-    double tau = 1;       ///< an opening's normal transmittance
+    double tau = 1;  ///< an opening's normal transmittance
 };
 
 /// Möller–Trumbore: distance along the unit d from o to the triangle, or nothing.
@@ -118,8 +118,8 @@ TEST_CASE("daylight: the office's daylight factors against a path tracer", "[day
             for (uint32_t i : poly) v.push_back(g.positions[i]);
             const Vec3 n = scene::polygonNormal(v);
             for (size_t k = 1; k + 1 < v.size(); ++k)
-                office.triangles.push_back({v[0], v[k], v[k + 1], n, luminance(m.reflectance), m.isOpening(),
-                                            m.transmittance});
+                office.triangles.push_back(
+                    {v[0], v[k], v[k + 1], n, luminance(m.reflectance), m.isOpening(), m.transmittance});
         }
     }
     app::PipelineOptions options;
@@ -127,14 +127,13 @@ TEST_CASE("daylight: the office's daylight factors against a path tracer", "[day
     app::PipelineRun run = app::runPipeline(file, options);
     REQUIRE(run.sensors.size() >= 3);
     // The account closes: what came in = absorbed + left again (+ unshot).
-    const auto balance = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution,
-                                                  run.lighting.lights->emittedFlux());
+    const auto balance = app::energyBalanceOf(run);
     CHECK(std::abs(balance.relativeError()) < 0.01);
     CHECK(balance.leftThroughOpenings > 0);
     for (size_t i = 0; i < 3; ++i) {
         const auto& s = run.sensors[i];
-        const double reference = 100 * office.illuminance(s.sensor.position, s.sensor.normal, 200000, 7 + i) /
-                                 office.horizontal;
+        const double reference =
+            100 * office.illuminance(s.sensor.position, s.sensor.normal, 200000, 7 + i) / office.horizontal;
         REQUIRE(s.daylightFactor);
         INFO(s.sensor.name << ": DF " << *s.daylightFactor << " %, path tracer " << reference << " %, "
                            << 100 * (*s.daylightFactor / reference - 1) << " %");

@@ -46,7 +46,7 @@ TEST_CASE(
     bool faceUp = GENERATE(false, true);
     auto run = app::runPipeline(
         test::writeTempScene(fmt::format("ngon_{}_{}_{}", sides, gap, faceUp), ngonRoom(sides, gap, faceUp)), quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    auto b = app::energyBalanceOf(run);
     INFO(sides << " sides, " << gap << " m below the ceiling, facing " << (faceUp ? "up" : "down") << ": emitted "
                << b.emitted << " lm, received " << b.directReceived << " lm");
     CHECK(b.emitted == Approx(1000).epsilon(1e-9));

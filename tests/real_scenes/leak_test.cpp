@@ -103,8 +103,7 @@ TEST_CASE("two rooms split by a zero-thickness wall or a 0.2 m box partition: th
     checkDark(run, thin ? 4.0 : 4.1, litMean);
     // The closed rooms' account: the back of the dark room's face of a zero-thickness
     // wall is covered by the lit face, so nothing is booked there twice (it was +12 %).
-    auto balance =
-        radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    auto balance = app::energyBalanceOf(run);
     INFO("not accounted " << 100 * balance.relativeError() << " %, on backs " << 100 * balance.backShare() << " %");
     CHECK(std::abs(balance.relativeError()) < 1e-3);
 }
@@ -200,7 +199,7 @@ TEST_CASE("furniture on the floor: a carpet 1 cm high and cabinets standing on i
                {"type": "box", "material": "wood", "min": [1.3, 0.01, 1.5], "max": [2.0, 0.8, 2.0]})",
                                       R"({"name": "carpet", "position": [2.71, 0.01, 2.3], "normal": [0, 1, 0]})")),
         test::quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    auto b = app::energyBalanceOf(run);
     INFO("not accounted " << 100 * b.relativeError() << " %, shots beyond the bound "
                           << run.lighting.shooting.unbalancedShots);
     CHECK(std::abs(b.relativeError()) < 1e-3);

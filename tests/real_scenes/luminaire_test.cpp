@@ -67,8 +67,7 @@ TEST_CASE("a luminaire in a closed sphere: direct light from its table, indirect
     }
     CHECK(expectedDirect[1] != Approx(expectedDirect[2]).epsilon(0.01));  // the table does differ by azimuth
     // The energy account holds with a strongly directional source.
-    const auto balance =
-        radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    const auto balance = app::energyBalanceOf(run);
     CHECK(std::abs(balance.relativeError()) < 5e-4);
 }
 

@@ -80,7 +80,7 @@ TEST_CASE(
     auto run = app::runPipeline(test::writeTempScene(fmt::format("wall_mirror_{}_{}_{}", areaLight, gap, height),
                                                      mirrorRoom(height, areaLight, gap)),
                                 quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    auto b = app::energyBalanceOf(run);
     INFO((areaLight ? "24-gon lamp" : "point light")
          << ", gap " << gap << " m, ceiling " << height << " m: direct " << 100 * b.directError() << " %, secondary "
          << 100 * b.secondaryError() << " %, mirrors absorbed " << b.mirrorAbsorbed << " lm");
@@ -100,7 +100,7 @@ TEST_CASE("light on the back of a mirror wound backwards is booked as absorbed t
                     {"type": "quad", "material": "mirror", "vertices": [[0.5, 1, 1], [0.5, 1, 3], [0.5, 2.5, 3], [0.5, 2.5, 1]]},
                     {"type": "polygon", "material": "lamp", "vertices": [[1.5, 2.98, 1.5], [2.5, 2.98, 1.5], [2.0, 2.98, 2.5]]}]})"),
                                 quiet());
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    auto b = app::energyBalanceOf(run);
     INFO("on backs " << b.backAbsorbed << " lm of " << b.emitted << "; not accounted " << 100 * b.relativeError()
                      << " %");
     CHECK(b.backAbsorbed > 0.02 * b.emitted);

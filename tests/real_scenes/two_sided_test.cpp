@@ -42,10 +42,8 @@ TEST_CASE("two-sided diffuse: a blind lit from behind reflects on both sides, th
         test::writeTempScene("blind_two_sided",
                              roomWithBlind(R"({"reflectance": 0.8, "two_sided": true, "back_reflectance": 0.2})")),
         withImage());
-    auto lost = radiosity::energyBalance(oneSided.scene, oneSided.mesh, oneSided.lighting.solution,
-                                         oneSided.lighting.lights->emittedFlux());
-    auto closed = radiosity::energyBalance(twoSided.scene, twoSided.mesh, twoSided.lighting.solution,
-                                           twoSided.lighting.lights->emittedFlux());
+    auto lost = app::energyBalanceOf(oneSided);
+    auto closed = app::energyBalanceOf(twoSided);
     INFO("one-sided: " << 100 * lost.backShare() << " % on backs, not accounted " << 100 * lost.relativeError()
                        << " %; two-sided: " << 100 * closed.backShare() << " % on backs, not accounted "
                        << 100 * closed.relativeError() << " %");

@@ -27,8 +27,7 @@ bool allFinite(const app::PipelineRun& run) {
 }
 
 double notAccounted(const app::PipelineRun& run) {
-    return radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux())
-        .relativeError();
+    return app::energyBalanceOf(run).relativeError();
 }
 
 /// A closed box room w × h × d (metres) of reflectance rho with a point light, scaled by s.
@@ -87,8 +86,7 @@ TEST_CASE("energy accounting in closed scenes: emitted = absorbed + unshot withi
         // The block's shadow crosses 0.5 m floor patches (the direct pass samples those
         // more densely), and floor patches run under the block (their shots lose half
         // their light into it, and conservation puts it back).
-        auto b =
-            radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+        auto b = app::energyBalanceOf(run);
         INFO("direct pass " << 100 * b.directError() << " %, secondary " << 100 * b.secondaryError() << " %");
         CHECK(std::abs(b.directError()) < 1e-3);
         CHECK(std::abs(b.secondaryError()) < 1e-3);
@@ -102,7 +100,7 @@ TEST_CASE("energy accounting with a mirror: what the mirror absorbs is booked", 
     // sends into the mirror's back, is booked as absorbed by the mirror.
     auto run = app::runPipeline(test::sourcePath("scenes/mirror_room/mirror_room.json"), quiet());
     CHECK(run.lighting.shooting.conserving);
-    auto b = radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
+    auto b = app::energyBalanceOf(run);
     INFO("mirrors " << b.mirrorAbsorbed << " lm, direct pass " << 100 * b.directError() << " %, secondary "
                     << 100 * b.secondaryError() << " %");
     CHECK(b.mirrorAbsorbed > 0.05 * b.emitted);
