@@ -8,7 +8,7 @@ namespace rayrad::app {
 
 void printSolveSummary(const PipelineRun& run) {
     const auto& s = run.lighting.solution;
-    auto balance = radiosity::energyBalance(run.scene, run.mesh, s, run.lighting.lights->emittedFlux());
+    auto balance = energyBalanceOf(run);
     fmt::print(stderr,
                "patches: {}, channels: {}, shots: {}, unshot: {:.4g}% of the {:.6g} lm emitted ({:.4g}% of the first "
                "reflection; {})\n",
@@ -57,8 +57,8 @@ void printSolveSummary(const PipelineRun& run) {
     fmt::print(stderr,
                "energy: {} {:.6g} lm, absorbed {:.6g} lm{}{}, unshot {:.6g} lm, not accounted {:+.4f}% "
                "(direct pass {:+.4f}%, secondary pass {:+.4f}%)\n",
-               daylight ? "daylight in (through the openings, and the sun outdoors)" : "emitted", balance.emitted, balance.absorbed,
-               alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
+               daylight ? "daylight in (through the openings, and the sun outdoors)" : "emitted", balance.emitted,
+               balance.absorbed, alsoAbsorbed.empty() ? "" : " (" + alsoAbsorbed.substr(3) + ")",
                daylight ? fmt::format(", left again (through the openings, to the sky) {:.6g} lm, passed straight "
                                       "through (in at one opening, out at another) {:.6g} lm",
                                       balance.leftThroughOpenings, balance.passedThrough)
@@ -71,10 +71,11 @@ void printSolveSummary(const PipelineRun& run) {
         100 * st.escapeFraction, st.conserving ? "on" : "off (" + st.conservationOff + ")",
         st.conserving ? fmt::format(" (largest adjustment {:.3g}%, {} shots beyond the {:.0f}% bound left alone)",
                                     100 * st.largestRescale, st.unbalancedShots, 100 * radiosity::kConservationBound)
-        : st.cappedShots > 0
+        : st.cappedShots > 0 || st.unbalancedShots > 0
             ? fmt::format(", but {} shots that delivered more than they shipped were scaled down to it (by up to "
-                          "{:.3g}%)",
-                          st.cappedShots, 100 * st.largestRescale)
+                          "{:.3g}%; {} beyond the {:.0f}% bound left alone)",
+                          st.cappedShots, 100 * st.largestRescale, st.unbalancedShots,
+                          100 * radiosity::kConservationBound)
             : "",
         st.overshooting ? "on" : "off");
 }

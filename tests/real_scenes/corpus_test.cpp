@@ -1,7 +1,6 @@
 // Scenes nobody here made (bench/corpus/): the small ones run in the default tests with
 // their defaults, as a user would run them. bench/corpus.sh runs them all with the figures.
 #include <app/pipeline.h>
-#include <radiosity/solution/energy_balance.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
@@ -11,10 +10,6 @@
 using namespace rayrad;
 
 namespace {
-
-radiosity::EnergyBalance balanceOf(const app::PipelineRun& run) {
-    return radiosity::energyBalance(run.scene, run.mesh, run.lighting.solution, run.lighting.lights->emittedFlux());
-}
 
 /// Every sensor on a surface: what an image shows there (the mesh) against the final
 /// gather, within `tolerance` of the gather's total (direct + indirect).
@@ -31,15 +26,15 @@ void checkMeshAgainstGather(const app::PipelineRun& run, double tolerance) {
 
 }  // namespace
 
-TEST_CASE("corpus: a Cornell box from a CAD exporter (walls 0.3 mm thick, the lamp's sides emitting into the gap) "
-          "creates no light",
-          "[real_scenes][corpus]") {
-    // The inner walls and the box's outer shell face each other 0.3 mm apart, meshed
-    // differently: a receiver patch's one point overstated what it got from the much
-    // smaller source patches across the gap, and the secondary pass created +32 % of the
+TEST_CASE(
+    "corpus: a Cornell box from a CAD exporter (walls 0.3 mm thick, the lamp's sides emitting into the gap) "
+    "creates no light",
+    "[real_scenes][corpus]") {
+    // The inner walls and the box's outer shell face each other 0.3 mm apart (pieces of the
+    // two lie in one plane, facing the same way): the secondary pass created +32 % of the
     // emitted light before a shot's deliveries were capped at what it ships.
     auto run = app::runPipeline(test::sourcePath("bench/corpus/iset-cornell-lamp/scene.json"), test::quiet());
-    const auto balance = balanceOf(run);
+    const auto balance = app::energyBalanceOf(run);
     INFO("not accounted " << 100 * balance.relativeError() << " % (direct pass " << 100 * balance.directError()
                           << " %, secondary pass " << 100 * balance.secondaryError() << " %)");
     CHECK(run.lighting.shooting.cappedShots > 0);
@@ -51,7 +46,7 @@ TEST_CASE("corpus: a Cornell box from a CAD exporter (walls 0.3 mm thick, the la
 
 TEST_CASE("corpus: McGuire's Cornell box as its OBJ and MTL come creates no light", "[real_scenes][corpus]") {
     auto run = app::runPipeline(test::sourcePath("bench/corpus/mcguire-cornell/scene.json"), test::quiet());
-    const auto balance = balanceOf(run);
+    const auto balance = app::energyBalanceOf(run);
     INFO("not accounted " << 100 * balance.relativeError() << " % (direct pass " << 100 * balance.directError()
                           << " %, secondary pass " << 100 * balance.secondaryError() << " %)");
     CHECK(balance.secondaryError() < 0.005);

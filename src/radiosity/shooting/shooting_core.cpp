@@ -28,7 +28,6 @@ constexpr size_t kDeliverGrain = 64;
 constexpr size_t kTransferGrain = 16;
 }  // namespace
 
-
 namespace {
 /// Derived ΔI_max: this fraction of the scene's mean illuminance (measured trade-off, see
 /// docs/validation.md).
@@ -454,10 +453,9 @@ void ShootingCore<V>::checkFinite(size_t c, double shotFlux, double redelivered,
     if (std::isfinite(shotFlux) && std::isfinite(redelivered) && std::isfinite(delivered.magnitude)) return;
     const Cluster& C = m_clustering.clusters[c];
     std::ostringstream s;
-    s << "a shot from cluster " << c << " (" << C.patches.size() << " patches, centroid ("
-      << C.centroid.x << ", " << C.centroid.y << ", " << C.centroid.z << "), area " << C.area
-      << " m²) is not finite: flux shot " << shotFlux << " lm, redelivered " << redelivered << " lm, delivered "
-      << delivered.magnitude << " lm";
+    s << "a shot from cluster " << c << " (" << C.patches.size() << " patches, centroid (" << C.centroid.x << ", "
+      << C.centroid.y << ", " << C.centroid.z << "), area " << C.area << " m²) is not finite: flux shot " << shotFlux
+      << " lm, redelivered " << redelivered << " lm, delivered " << delivered.magnitude << " lm";
     auto describe = [&](uint32_t i) {
         const Patch& p = m_mesh.patches[i];
         s << "patch " << i << " (" << m_scene.materials[p.material].name << ", centroid (" << p.centroid.x << ", "
@@ -494,9 +492,8 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     // cluster ships light of both signs.
     // Open scene: some of the flux shot escapes, so less may arrive (Σ_j F_ij < 1), but
     // never more — of either sign: an overshooting shooter may ship negative light. More
-    // arrives where a receiver's one point overstates what it gets from a source much
-    // nearer than the receiver is wide (two surfaces a fraction of a millimetre apart,
-    // facing each other, meshed differently): such a surplus is taken away the same way.
+    // arrives where surfaces nearly coincide (a CAD exporter's walls and outer shell 0.3 mm
+    // apart, pieces of the two in one plane): such a surplus is taken away the same way.
     // Not in a shot with corrections: what they took away is the earlier cluster→cluster
     // estimate, and the patch→patch one that replaces it may rightly be larger.
     double adjust = 0;  // δ / Σ|ΔE_k| A_k
@@ -517,30 +514,31 @@ void ShootingCore<V>::deliver(double shotFlux, double redelivered, const AtSourc
     m_stats.mirrorAbsorbed += loss * (1.0 + (loss < 0 ? -adjust : adjust));
     // Chunks of receivers: a receiver's work is a few patches, and a task per receiver costs
     // more than it does in small scenes.
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, reached.size(), kDeliverGrain), [&](const tbb::blocked_range<size_t>& range) {
-      for (size_t k = range.begin(); k != range.end(); ++k) {
-        const size_t d = reached[k];
-        const Cluster& D = m_clustering.clusters[d];
-        V reflectedSum(0.0);
-        // At 1.2 M patches this loop waits on memory: an array that holds nothing for D
-        // (most receivers are reached cluster→cluster only) is not read.
-        const bool patches = m_reached[d] & kReachedPatches, pending = m_reached[d] & kReachedPending;
-        m_reached[d] = 0;
-        for (uint32_t j : D.patches) {
-            if (patches && m_shotE[j] != V(0.0)) {
-                receive(j, adjusted(m_shotE[j]));
-                m_shotE[j] = V(0.0);
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, reached.size(), kDeliverGrain), [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t k = range.begin(); k != range.end(); ++k) {
+                const size_t d = reached[k];
+                const Cluster& D = m_clustering.clusters[d];
+                V reflectedSum(0.0);
+                // At 1.2 M patches this loop waits on memory: an array that holds nothing for D
+                // (most receivers are reached cluster→cluster only) is not read.
+                const bool patches = m_reached[d] & kReachedPatches, pending = m_reached[d] & kReachedPending;
+                m_reached[d] = 0;
+                for (uint32_t j : D.patches) {
+                    if (patches && m_shotE[j] != V(0.0)) {
+                        receive(j, adjusted(m_shotE[j]));
+                        m_shotE[j] = V(0.0);
+                    }
+                    if (pending && m_shotPending[j] != V(0.0)) {  // I_D joins the pending light, pushed down later
+                        V e = adjusted(m_shotPending[j]);
+                        m_pending[j] += e;
+                        reflectedSum += m_reflectance[j] * e * m_patchArea[j];
+                        m_shotPending[j] = V(0.0);
+                    }
+                }
+                m_light[d].pendingReflected += reflectedSum / (kPi * D.area);
             }
-            if (pending && m_shotPending[j] != V(0.0)) {  // I_D joins the pending light, pushed down later
-                V e = adjusted(m_shotPending[j]);
-                m_pending[j] += e;
-                reflectedSum += m_reflectance[j] * e * m_patchArea[j];
-                m_shotPending[j] = V(0.0);
-            }
-        }
-        m_light[d].pendingReflected += reflectedSum / (kPi * D.area);
-      }
-    });
+        });
 }
 
 template class ShootingCore<double>;
