@@ -67,5 +67,5 @@ for e in "${edges[@]}"; do
         "$gathered"
     prevN=$patches prevT=$total
 done
-echo "(CPU s: user + sys of all threads per stage; peak MiB is the whole process, ~125 MiB of it libraries;"
+echo "(CPU s: user + sys of all threads per stage; peak MiB is the whole process, ~11 MiB of it the program and its libraries;"
 echo " B/patch is the peak above the peak after parsing, per patch; N^x: growth of the total CPU s from the row above)"

@@ -73,6 +73,7 @@ class ShootingSolver {
 
   private:
     bool m_singleChannel = false;
+    bool m_oneThread = false;  ///< a mesh too small for the shots to pay for threads
     std::unique_ptr<ShootingCoreBase> m_core;
 };
 
