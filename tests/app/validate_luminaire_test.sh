@@ -9,6 +9,6 @@ source "$(dirname "$0")/test_lib.sh"
 rc=$?
 check "exit 0" test "$rc" -eq 0
 check "all within" grep -q "all within" "$work/stdout.txt"
-check "ten result rows" test "$(tail -n +2 "$work/out/results.csv" | wc -l)" -eq 10
+check "eleven result rows" test "$(tail -n +2 "$work/out/results.csv" | wc -l)" -eq 11
 [ "$failures" -eq 0 ] || cat "$work/stdout.txt"
 finish "validate luminaire"

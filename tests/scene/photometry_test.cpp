@@ -76,7 +76,7 @@ TEST_CASE("every bundled luminaire file integrates to the independent reference 
         }
         ++files;
     }
-    CHECK(files == 10);
+    CHECK(files == 11);
 }
 
 TEST_CASE("an isotropic source integrates to 4 pi I in every symmetry and both formats", "[scene][photometry]") {
