@@ -24,6 +24,7 @@ class LdtLines {
 
     /// Line n (1-based), trimmed.
     std::string text(size_t n, const std::string& what) const {
+        if (m_lines.empty()) throw InputError(placeMessage(m_name, "", "the file is empty"));
         if (n > m_lines.size()) fail(m_lines.size(), "the file ends before line " + std::to_string(n) + " (" + what + ")");
         const std::string& s = m_lines[n - 1];
         const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");

@@ -167,6 +167,14 @@ ImportedMesh importPly(const std::string& path, const std::string& prefix) {
 
 bool hasExtension(const std::string& path, const std::string& ext) { return lowerExtension(path) == ext; }
 
+/// Why a mesh file gave no triangle: none in it, or every face it has was left out.
+std::string noTriangles(const std::string& path, const ImportedMesh& mesh) {
+    if (mesh.droppedFaces == 0) return "mesh '" + path + "' has no triangles";
+    return fmt::format("mesh '{}' has no triangles: its {} face(s) are points or lines, or name vertices the file does "
+                       "not have",
+                       path, mesh.droppedFaces);
+}
+
 }  // namespace
 
 /// The OBJ's `mtllib` files that are not there, one warning each: assimp then gives every
@@ -200,14 +208,12 @@ ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, c
         throw InputError(placeMessage(sceneFile, place, "mesh file '" + path + "' is not a regular file"));
     if (hasExtension(path, ".gltf") || hasExtension(path, ".glb")) {
         ImportedMesh out = readGltf(path, prefix);
-        if (out.triangles.empty())
-            throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));
+        if (out.triangles.empty()) throw InputError(placeMessage(sceneFile, place, noTriangles(path, out)));
         return out;
     }
     if (hasExtension(path, ".ply")) {
         ImportedMesh out = importPly(path, prefix);
-        if (out.triangles.empty())
-            throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));
+        if (out.triangles.empty()) throw InputError(placeMessage(sceneFile, place, noTriangles(path, out)));
         return out;
     }
     ImportedMesh out;
@@ -247,8 +253,7 @@ ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, c
         if (!isFinite(light.position) || !isFinite(light.intensity)) continue;
         out.lights.push_back(light);
     }
-    if (out.triangles.empty())
-        throw InputError(placeMessage(sceneFile, place, "mesh '" + path + "' has no triangles"));
+    if (out.triangles.empty()) throw InputError(placeMessage(sceneFile, place, noTriangles(path, out)));
     return out;
 }
 

@@ -433,6 +433,7 @@ class Builder {
     size_t finishMeshGroup(Scene& s, SurfaceGroup g, const glm::dmat4& m, bool reverse, int material,
                            const std::string& where, const std::vector<std::pair<Vec3, double>>& keepAbove) {
         for (auto& p : g.positions) p = transformPoint(m, p);
+        checkWithinRange(g, where);  // before the areas: a triangle 1e30 m long is not a sliver
         double size = 0;
         for (const auto& p : g.positions) size = std::max(size, glm::length(p - g.positions[0]));
         auto above = [&](const std::vector<uint32_t>& t) {
@@ -645,19 +646,20 @@ class Builder {
 
     /// The scene's bounding box; every surface (as placed by its transform) and every
     /// mesh file's light must lie within ±kMaxCoordinate, as the scene file's points must.
+    static bool beyond(const Vec3& p) { return !(maxAbs(p) <= kMaxCoordinate); }
+    void checkWithinRange(const SurfaceGroup& g, const std::string& where) const {
+        for (const auto& p : g.positions)
+            if (beyond(p))
+                fail(where, fmt::format("the surface reaches ({:.3g}, {:.3g}, {:.3g}) m, beyond ±1e9 m "
+                                        "(is its transform's scale or the file's unit wrong?)",
+                                        p.x, p.y, p.z));
+    }
     void computeBounds(Scene& s) const {
-        auto beyond = [](const Vec3& p) {
-            return !(maxAbs(p) <= kMaxCoordinate);
-        };
         Vec3 lo(1e300), hi(-1e300);
-        for (const auto& g : s.groups)
-            for (const auto& p : g.positions) {
-                if (beyond(p))
-                    fail(g.where, fmt::format("the surface reaches ({:.3g}, {:.3g}, {:.3g}) m, beyond ±1e9 m "
-                                              "(is its transform's scale or the file's unit wrong?)",
-                                              p.x, p.y, p.z));
-                lo = glm::min(lo, p), hi = glm::max(hi, p);
-            }
+        for (const auto& g : s.groups) {
+            checkWithinRange(g, g.where);
+            for (const auto& p : g.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
         for (const auto& l : m_fileLights)
             if (beyond(l.position)) fail(l.where, "the light lies beyond ±1e9 m");
         s.boundsMin = lo;

@@ -181,6 +181,101 @@ check "sweep values with commas are quoted in the CSV" grep -qx '1,"\[16,16\]"' 
 # or the outputs renamed, leaves every old output byte-identical and no temporary.
 mkdir -p "$work/commit"
 scene commit/s "{$materials, $box, $light, $(camera '[0.5,0.5,0.1]' '[0,1,0]'), \"sensors\": [{\"name\": \"s\", \"position\": [0.5,0.5,0], \"normal\": [0,0,1]}]}"
+
+# Daylight that cannot be: each refused at its place, before anything is computed.
+daylit() {  # daylit NAME MATERIALS DAYLIGHT: the courtyard under that daylight
+    scene "$1" "{$2, $court_objects, \"daylight\": {$3}}"
+}
+court_materials='"materials": {"white": {"reflectance": 0.5}, "sky": {"type": "opening"}}'
+overcast='"sky": {"type": "cie_overcast", "diffuse_horizontal_illuminance": 10000}'
+sun_at() { printf '"sun": {"latitude": %s, "longitude": 0, "utc_offset": %s, "date": "%s", "time": "%s"}' "$@"; }
+daylit lat91 "$court_materials" "$overcast, $(sun_at 91 0 2026-03-21 12:00)"
+expect 2 "latitude 91°" "lat91.json: /daylight/sun/latitude: a latitude lies within [−90°, 90°], got 91" -- solve "$work/lat91.json"
+daylit feb30 "$court_materials" "$overcast, $(sun_at 50 0 2026-02-30 12:00)"
+expect 2 "30 February" "feb30.json: /daylight/sun/date: 2026-02-30 is not a date of the calendar" -- solve "$work/feb30.json"
+daylit hour25 "$court_materials" "$overcast, $(sun_at 50 0 2026-02-03 25:00)"
+expect 2 "25 o'clock, at the time's place" "hour25.json: /daylight/sun/time: 25:00 is not a time of the day" -- solve "$work/hour25.json"
+daylit offset20 "$court_materials" "$overcast, $(sun_at 50 20 2026-02-03 12:00)"
+expect 2 "a time zone 20 h from UTC" "offset20.json: /daylight/sun/utc_offset: a time zone's offset from UTC lies within ±14 h, got 20" -- solve "$work/offset20.json"
+daylit alt100 "$court_materials" "$overcast, \"sun\": {\"altitude\": 100, \"azimuth\": 180}"
+expect 2 "the sun 100° high" "alt100.json: /daylight/sun/altitude: the sun's altitude must be within [−90°, 90°], got 100" -- solve "$work/alt100.json"
+daylit two_scales "$court_materials" '"sky": {"type": "uniform", "zenith_luminance": 1000, "diffuse_horizontal_illuminance": 10000}'
+expect 2 "a sky with two scales" "two_scales.json: /daylight/sky/zenith_luminance: a sky needs exactly one scale" -- solve "$work/two_scales.json"
+daylit clear_no_sun "$court_materials" '"sky": {"type": "cie_clear", "diffuse_horizontal_illuminance": 10000}'
+expect 2 "a clear sky without the sun" "clear_no_sun.json: /daylight/sun: CIE sky type 12 is brighter toward the sun" -- solve "$work/clear_no_sun.json"
+daylit cie16 "$court_materials" '"sky": {"type": "cie_standard", "cie_type": 16, "zenith_luminance": 1000}'
+expect 2 "CIE sky type 16" "cie16.json: /daylight/sky/cie_type: expected a whole number from 1 to 15, got 16" -- solve "$work/cie16.json"
+perez() { printf '"sky": {"type": "perez", "direct_normal_irradiance": %s, "diffuse_horizontal_irradiance": %s%s}, "sun": {"altitude": 30, "azimuth": 180}' "$@"; }
+daylit perez_negative "$court_materials" "$(perez -5 100 '')"
+expect 2 "a Perez sky's negative direct irradiance" "perez_negative.json: /daylight/sky/direct_normal_irradiance: expected a number >= 0, got -5" -- solve "$work/perez_negative.json"
+daylit perez_bright "$court_materials" "$(perez 5000 100 '')"
+expect 2 "a Perez sky brighter than the sun" "perez_bright.json: /daylight/sky/direct_normal_irradiance: 5000 W/m² is more than the sun and sky give on the ground" -- solve "$work/perez_bright.json"
+daylit perez_dark "$court_materials" "$(perez 0 0 '')"
+expect 2 "a Perez sky without diffuse light" "perez_dark.json: /daylight/sky/diffuse_horizontal_irradiance: expected a positive number, got 0" -- solve "$work/perez_dark.json"
+daylit dew500 "$court_materials" "$(perez 500 100 ', "dew_point": 500')"
+expect 2 "a dew point of 500 °C" "dew500.json: /daylight/sky/dew_point: expected a dew point in [−60, 40] °C, got 500" -- solve "$work/dew500.json"
+daylit up_is_north "$court_materials" "$overcast, \"up\": [0,1,0], \"north\": [0,1,0]"
+expect 2 "north straight up" "up_is_north.json: /daylight/north: \"up\" and \"north\" must be non-zero and not parallel" -- solve "$work/up_is_north.json"
+daylit ground2 "$court_materials" "$overcast, \"ground_reflectance\": 2"
+expect 2 "ground reflectance 2" "ground2.json: /daylight/ground_reflectance: expected a reflectance in [0, 1), got 2" -- solve "$work/ground2.json"
+daylit median0 "$court_materials" "$overcast, \"median_external_illuminance\": 0"
+expect 2 "a median external illuminance of 0" "median0.json: /daylight/median_external_illuminance: expected a positive number, got 0" -- solve "$work/median0.json"
+daylit tau0 '"materials": {"white": {"reflectance": 0.5}, "sky": {"type": "opening", "transmittance": 0}}' "$overcast"
+expect 2 "a glazing that lets nothing through" "tau0.json: /materials/sky/transmittance: a glazing's normal transmittance lies in (0, 1] (1: no glazing), got 0" -- solve "$work/tau0.json"
+
+# Mesh files that lie: far vertices, faces that name vertices the file does not have.
+mesh_scene() {  # mesh_scene NAME FILE
+    scene "$1" "{$materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,1,1], \"facing\": \"inward\", \"material\": \"white\"}, {\"type\": \"mesh\", \"file\": \"$2\", \"material\": \"white\"}], $light}"
+}
+printf 'v 1e30 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n' > "$work/far.obj"
+mesh_scene far_vertex far.obj
+expect 2 "an OBJ vertex 1e30 m away" "far_vertex.json: /objects/1: the surface reaches (1e+30, 0, 0) m, beyond ±1e9 m" -- solve "$work/far_vertex.json"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n' > "$work/index7.obj"
+mesh_scene obj_index index7.obj
+expect 2 "an OBJ face naming vertex 7 of 3" "obj_index.json: /objects/1/file: cannot read mesh" -- solve "$work/obj_index.json"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n' > "$work/index5.ply"
+mesh_scene ply_index index5.ply
+expect 2 "a PLY whose only face names vertex 5 of 3" "ply_index.json: /objects/1/file: mesh '$work/index5.ply' has no triangles: its 1 face(s) are points or lines, or name vertices the file does not have" -- solve "$work/ply_index.json"
+printf '{"asset": {"version": "2.0"}, "nodes": [{"children": [0]}], "scenes": [{"nodes": [0]}]}' > "$work/cycle.gltf"
+mesh_scene gltf_cycle cycle.gltf
+expect 2 "a glTF node that is its own child" "gltf_cycle.json: /objects/1/file: mesh '$work/cycle.gltf': the node hierarchy is deeper than 256 levels (a cycle?)" -- solve "$work/gltf_cycle.json"
+printf '{"asset": {"version": "2.0"}, "buffers": [{"uri": "gone.bin", "byteLength": 36}], "bufferViews": [{"buffer": 0, "byteLength": 36}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]}' > "$work/nobin.gltf"
+mesh_scene gltf_no_bin nobin.gltf
+expect 2 "a glTF whose buffer file is missing" "gltf_no_bin.json: /objects/1/file: mesh '$work/nobin.gltf': not a valid glTF 2.0 file" -- solve "$work/gltf_no_bin.json"
+
+# Luminaire files that lie.
+lum_scene() {  # lum_scene NAME FILE
+    scene "$1" "{$materials, \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [4,4,3], \"facing\": \"inward\", \"material\": \"white\"}], \"lights\": [{\"type\": \"luminaire\", \"file\": \"$2\", \"position\": [2,2,2.5]}]}"
+}
+ies() {  # ies FILE VERTICAL_COUNT HORIZONTAL_COUNT VERTICAL HORIZONTAL CANDELA
+    printf 'IESNA:LM-63-2002\nTILT=NONE\n1 1000 1 %s %s 1 2 0 0 0\n1 1 10\n%s\n%s\n%s\n' "$2" "$3" "$4" "$5" "$6" > "$work/$1"
+}
+ies two_planes.ies 3 1 "0 45 90" "0 90" "100 50 20 100 50 20"; lum_scene ies_extra two_planes.ies
+expect 2 "an IES listing two horizontal angles after counting one" "two_planes.ies: line 7: 4 number(s) after the 3 × 1 candela values" -- solve "$work/ies_extra.json"
+ies short.ies 3 2 "0 45 90" "0" "100 50 20"; lum_scene ies_short short.ies
+expect 2 "an IES ending early" "short.ies: line 7: the file ends before candela value 3 of 6" -- solve "$work/ies_short.json"
+ies v200.ies 3 1 "0 45 200" "0" "100 50 20"; lum_scene ies_v200 v200.ies
+expect 2 "an IES vertical angle of 200°" "v200.ies: line 5: vertical angle 200 is outside 0 to 180 degrees" -- solve "$work/ies_v200.json"
+ies dark.ies 3 1 "0 45 90" "0" "0 0 0"; lum_scene ies_dark dark.ies
+expect 2 "an IES table of zeros" "'$work/dark.ies' emits no light (its candela table is zero)" -- solve "$work/ies_dark.json"
+ldt="$src/tests/data/luminaires/photometricviewer_multiple_lamp_sets.ldt"
+head -30 "$ldt" > "$work/cut.ldt"; lum_scene ldt_cut cut.ldt
+expect 2 "an EULUMDAT file cut inside its lamp sets" "cut.ldt: line 30: the file ends before line 32 (the wattage of set 1 (W))" -- solve "$work/ldt_cut.json"
+sed '26s/.*/0/' "$ldt" > "$work/no_sets.ldt"; lum_scene ldt_no_sets no_sets.ldt
+expect 2 "an EULUMDAT file of no lamp sets" "no_sets.ldt: line 26: expected the number of lamp sets (a whole number from 1 to 20), got 0" -- solve "$work/ldt_no_sets.json"
+sed '29s/.*/-500/' "$ldt" > "$work/negative_flux.ldt"; lum_scene ldt_negative negative_flux.ldt
+expect 2 "an EULUMDAT lamp flux of -500 lm" "negative_flux.ldt: line 29: the lamp flux of set 1 must be positive, got -500" -- solve "$work/ldt_negative.json"
+: > "$work/empty.ldt"; lum_scene ldt_empty empty.ldt
+expect 2 "an empty EULUMDAT file" "empty.ldt: the file is empty" -- solve "$work/ldt_empty.json"
+
+# The year's options, refused before the year is computed.
+scene year "{$court_materials, $court_objects, \"sensors\": [{\"name\": \"floor\", \"position\": [1,0.05,1], \"normal\": [0,1,0]}], \"daylight\": {$overcast}}"
+epw="$src/scenes/weather/USA_IL_Chicago-OHare.Intl.AP.725300_TMY3.epw"
+expect 2 "100 sky patches" "--sky-patches: expected 145, 577 or 2305 sky patches, got 100" -- annual "$work/year.json" --weather "$epw" --sky-patches 100
+expect 2 "occupancy from 18 to 8" "--occupancy: expected START-END in hours of the clock" -- annual "$work/year.json" --weather "$epw" --occupancy 18-8
+expect 2 "the hour of 40 December" "--hour: expected MM-DDTHH, an hour of the weather file's year" -- annual "$work/year.json" --weather "$epw" --hour 12-40T25
+expect 2 "summer time on Mars" "--daylight-saving: expected none, us or eu, got \"mars\"" -- annual "$work/year.json" --weather "$epw" --daylight-saving mars
+
 old_outputs() { echo old-image > "$work/commit/a.png"; echo old-table > "$work/commit/a.csv"; echo old-report > "$work/commit/r.json"; }
 outputs_are_old() {
     [ "$(cat "$work/commit/a.png" "$work/commit/a.csv" "$work/commit/r.json")" = "$(printf 'old-image\nold-table\nold-report')" ] &&

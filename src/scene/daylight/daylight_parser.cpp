@@ -53,7 +53,8 @@ void parseSun(JsonObject s, Daylight& d, int& dayOfYear) {
         s.error("utc_offset", fmt::format("a time zone's offset from UTC lies within ±14 h, got {}",
                                           time.utcOffsetHours));
     const std::string date = s.string("date").value_or("2000-01-01"), clock = s.string("time").value_or("12:00");
-    if (auto problem = parseDateTime(date, clock, time)) s.error(s.has("date") ? "date" : "time", *problem);
+    if (auto problem = parseDate(date, time)) s.error("date", *problem);
+    if (auto problem = parseTime(clock, time)) s.error("time", *problem);
     s.finish();
     if (s.context().errors == 0) {
         d.sun = sunPosition(time, site);

@@ -105,12 +105,17 @@ SunPosition sunPosition(const LocalTime& time, const Site& site) {
     return {altitude + refraction, wrapDegrees(azimuthSouth + 180)};
 }
 
-std::optional<std::string> parseDateTime(const std::string& date, const std::string& time, LocalTime& t) {
+std::optional<std::string> parseDate(const std::string& date, LocalTime& t) {
     char tail = 0;
     if (std::sscanf(date.c_str(), "%d-%d-%d%c", &t.year, &t.month, &t.day, &tail) != 3)
         return fmt::format("expected a date as YYYY-MM-DD, got \"{}\"", date);
     if (t.year < 1 || t.year > 9999 || !isValidDate(t.year, t.month, t.day))
         return fmt::format("{} is not a date of the calendar", date);
+    return std::nullopt;
+}
+
+std::optional<std::string> parseTime(const std::string& time, LocalTime& t) {
+    char tail = 0;
     int h = 0, m = 0;
     double s = 0;
     const int read = std::sscanf(time.c_str(), "%d:%d:%lf%c", &h, &m, &s, &tail);

@@ -47,7 +47,9 @@ double julianDay(int year, int month, int day, double hourUtc);
 /// Whether year-month-day is a date of the Gregorian calendar (29 February in leap years).
 bool isValidDate(int year, int month, int day);
 
-/// "YYYY-MM-DD" and "HH:MM" or "HH:MM:SS" into `t`; an error message, or nothing when they read.
-std::optional<std::string> parseDateTime(const std::string& date, const std::string& time, LocalTime& t);
+/// "YYYY-MM-DD" into `t`; an error message, or nothing when it reads.
+std::optional<std::string> parseDate(const std::string& date, LocalTime& t);
+/// "HH:MM" or "HH:MM:SS" into `t`; an error message, or nothing when it reads.
+std::optional<std::string> parseTime(const std::string& time, LocalTime& t);
 
 }  // namespace rayrad::scene
