@@ -12,6 +12,14 @@ namespace rayrad::radiosity {
 namespace {
 /// An outline running closer than this (barycentric) to a patch's edge runs along it.
 constexpr double kInteriorMargin = 1e-3;
+/// How far past its ends (a share of the patch's diameter) an outline piece blocks a corner
+/// in sameSideWeights. A contact line comes in pieces that end where the other surface's
+/// patches end, not where this patch's edges are, and a piece that crosses only a sliver
+/// of the patch is not listed (kInteriorMargin): a gap is left between the listed piece's
+/// end and the patch's edge. A corner just beyond the line (a wall's top corner 0.3 mm
+/// above the ceiling that meets it) was then seen through the gap from the points beside
+/// that edge, and a dark line ran down the wall along the mesh edge.
+constexpr double kOutlineOverreach = 0.01;
 
 using Segment = std::pair<Vec3, Vec3>;
 
@@ -179,8 +187,11 @@ std::array<double, 3> sameSideWeights(const PatchMesh& mesh, size_t i, double u,
                 if (std::none_of(first, last, [&](const Vec3& normal) { return glm::dot(normal, x - corner) >= 0; }))
                     w[k] = 0;
             } else {
-                for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1] && w[k] != 0; ++o)
-                    if (segmentsCross(p.normal, x, corner, mesh.outlines[o].a, mesh.outlines[o].b)) w[k] = 0;
+                for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1] && w[k] != 0; ++o) {
+                    const ContactOutline& line = mesh.outlines[o];
+                    const Vec3 reach = kOutlineOverreach * p.diameter * glm::normalize(line.b - line.a);
+                    if (segmentsCross(p.normal, x, corner, line.a - reach, line.b + reach)) w[k] = 0;
+                }
             }
         }
         sum += w[k];
