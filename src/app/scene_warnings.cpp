@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace rayrad::app {
 
@@ -81,6 +82,40 @@ class Prober {
     std::vector<Vec3> m_directions;
     double m_diagonal;
 };
+
+/// Sensors this close to a surface that faces their way (a share of the scene's diagonal)
+/// but not on it (radiosity::pointNudge) are named: a position rounded off a surface.
+constexpr double kNearSurfaceShare = 1e-3;
+
+/// One line for the sensors that lie just in front of a surface facing their way but not
+/// on it: they are measured where they are, in the air, and get no mesh value (what the
+/// image shows there), so the two cannot be held against each other.
+std::optional<std::string> offSurfaceWarning(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
+                                             const raytrace::EmbreeScene& embree) {
+    const size_t sensors = scene.sensors.size();
+    std::vector<double> offset(sensors, 0.0);  // m; 0: on a surface, or nowhere near one
+    const double on = radiosity::pointNudge(scene), near = kNearSurfaceShare * scene.diagonal();
+    tbb::parallel_for(size_t(0), sensors, [&](size_t i) {
+        const scene::Sensor& s = scene.sensors[i];
+        if (radiosity::locateOnMesh(mesh, s.position, s.normal, on, &embree)) return;
+        if (auto at = radiosity::locateOnMesh(mesh, s.position, s.normal, near, &embree)) {
+            const radiosity::Patch& p = mesh.patches[at->patch];
+            offset[i] = std::abs(glm::dot(s.position - p.centroid, p.normal));
+        }
+    });
+    size_t count = 0, worst = 0;
+    for (size_t i = 0; i < sensors; ++i)
+        if (offset[i] > 0) {
+            if (count == 0 || offset[i] > offset[worst]) worst = i;
+            ++count;
+        }
+    if (count == 0) return std::nullopt;
+    return fmt::format("/sensors: {} sensor(s) lie just off the surface they face, not on it (\"{}\" at {}: {:.3g} mm "
+                       "off): each is measured where it is, and has no mesh value to compare with the image; "
+                       "put it on the surface (within {:.2g} mm) to read both",
+                       count, scene.sensors[worst].name, toString(scene.sensors[worst].position), 1e3 * offset[worst],
+                       1e3 * on);
+}
 
 /// One line per sensor (empty when it looks fine), in the sensors' order; `inSolid` as
 /// for sceneWarnings.
@@ -204,6 +239,7 @@ std::vector<std::string> sceneWarnings(const scene::Scene& scene, const radiosit
     if (checkSensors) {
         for (auto& line : sensorWarnings(scene, mesh, embree, prober, near, inSolid))
             if (!line.empty()) out.push_back(std::move(line));
+        if (auto line = offSurfaceWarning(scene, mesh, embree)) out.push_back(std::move(*line));
     }
     for (const auto& m : scene.mirrors) {
         Vec3 c(0.0);

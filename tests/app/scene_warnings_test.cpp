@@ -49,6 +49,20 @@ TEST_CASE("a sound room gets no warning and sensors on edges and corners are not
     CHECK(w.empty());
 }
 
+TEST_CASE("sensors just off the surface they face are named once, with the farthest", "[warnings]") {
+    // The room's diagonal is 6.4 m: within 6.4 mm of a surface facing the same way counts.
+    auto w = warningsFor("off_surface", kBlock, kLight,
+                         R"({"name": "on", "position": [3, 0, 3], "normal": [0, 1, 0]},
+                            {"name": "half a millimetre up", "position": [3, 0.0005, 2], "normal": [0, 1, 0]},
+                            {"name": "two millimetres up", "position": [2.5, 0.002, 3], "normal": [0, 1, 0]},
+                            {"name": "a work plane", "position": [3, 0.8, 3], "normal": [0, 1, 0]},
+                            {"name": "a centimetre off the wall", "position": [0.01, 1.5, 3], "normal": [1, 0, 0]})");
+    INFO(w.size() << " warnings, first: " << (w.empty() ? "" : w[0]));
+    REQUIRE(w.size() == 1);
+    CHECK(mentions(w, "/sensors: 2 sensor(s) lie just off the surface they face, not on it (\"two millimetres up\" at "
+                      "(2.5, 0.002, 3): 2 mm off)"));
+}
+
 TEST_CASE("a light, camera or sensor inside a solid is named", "[warnings]") {
     auto w =
         warningsFor("inside", kBlock,
