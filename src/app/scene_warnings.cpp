@@ -110,11 +110,11 @@ std::optional<std::string> offSurfaceWarning(const scene::Scene& scene, const ra
             ++count;
         }
     if (count == 0) return std::nullopt;
-    return fmt::format("/sensors: {} sensor(s) lie just off the surface they face, not on it (\"{}\" at {}: {:.3g} mm "
-                       "off): each is measured where it is, and has no mesh value to compare with the image; "
-                       "put it on the surface (within {:.2g} mm) to read both",
-                       count, scene.sensors[worst].name, toString(scene.sensors[worst].position), 1e3 * offset[worst],
-                       1e3 * on);
+    return fmt::format(
+        "/sensors: {} sensor(s) lie just off the surface they face, not on it (\"{}\" at {}: {:.3g} mm "
+        "off): each is measured where it is, and has no mesh value to compare with the image; "
+        "put it on the surface (within {:.2g} mm) to read both",
+        count, scene.sensors[worst].name, toString(scene.sensors[worst].position), 1e3 * offset[worst], 1e3 * on);
 }
 
 /// One line per sensor (empty when it looks fine), in the sensors' order; `inSolid` as

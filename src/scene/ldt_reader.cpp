@@ -25,7 +25,8 @@ class LdtLines {
     /// Line n (1-based), trimmed.
     std::string text(size_t n, const std::string& what) const {
         if (m_lines.empty()) throw InputError(placeMessage(m_name, "", "the file is empty"));
-        if (n > m_lines.size()) fail(m_lines.size(), "the file ends before line " + std::to_string(n) + " (" + what + ")");
+        if (n > m_lines.size())
+            fail(m_lines.size(), "the file ends before line " + std::to_string(n) + " (" + what + ")");
         const std::string& s = m_lines[n - 1];
         const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
         return a == std::string::npos ? "" : s.substr(a, b - a + 1);
@@ -72,7 +73,8 @@ Photometry parseLdt(const std::string& text, const std::string& name) {
     const size_t isym = in.count(3, "the symmetry indicator Isym (0–4)", 0, 4);
     const size_t mc = in.count(4, "the number of C planes Mc", 1, 3600);
     const size_t ng = in.count(6, "the number of intensities per plane Ng", 1, 3600);
-    if ((isym == 2 || isym == 3) && mc % 2) in.fail(4, fmt::format("Isym {} needs an even number of C planes, got {}", isym, mc));
+    if ((isym == 2 || isym == 3) && mc % 2)
+        in.fail(4, fmt::format("Isym {} needs an even number of C planes, got {}", isym, mc));
     if (isym == 4 && mc % 4) in.fail(4, fmt::format("Isym 4 needs a multiple of 4 C planes, got {}", mc));
     const double mm = 0.001;
     const double openingLength = in.number(16, "the luminous area's length or diameter (mm)") * mm;
@@ -85,7 +87,8 @@ Photometry parseLdt(const std::string& text, const std::string& name) {
     p.length = p.round ? 0 : std::abs(openingWidth);
     p.height = std::abs(in.number(18, "the luminous area's height at C0 (mm)")) * mm;
     const double lorl = in.number(23, "the light output ratio LORL (%)");
-    if (lorl < 0 || lorl > 1000) in.fail(23, fmt::format("the light output ratio LORL {:g} % is not a percentage", lorl));
+    if (lorl < 0 || lorl > 1000)
+        in.fail(23, fmt::format("the light output ratio LORL {:g} % is not a percentage", lorl));
     p.statedLor = lorl / 100;
     const double conversion = in.number(24, "the conversion factor for intensities");
     if (!(conversion > 0)) in.fail(24, fmt::format("the conversion factor must be positive, got {:g}", conversion));
@@ -109,9 +112,11 @@ Photometry parseLdt(const std::string& text, const std::string& name) {
     for (size_t i = 0; i < mc; ++i) c[i] = in.number(anglesLine + i, fmt::format("C angle {} of {}", i + 1, mc));
     for (size_t i = 0; i < ng; ++i) g[i] = in.number(anglesLine + mc + i, fmt::format("γ angle {} of {}", i + 1, ng));
     for (size_t i = 1; i < mc; ++i)
-        if (c[i] <= c[i - 1]) in.fail(anglesLine + i, fmt::format("C angles must increase: {:g} after {:g}", c[i], c[i - 1]));
+        if (c[i] <= c[i - 1])
+            in.fail(anglesLine + i, fmt::format("C angles must increase: {:g} after {:g}", c[i], c[i - 1]));
     for (size_t i = 1; i < ng; ++i)
-        if (g[i] <= g[i - 1]) in.fail(anglesLine + mc + i, fmt::format("γ angles must increase: {:g} after {:g}", g[i], g[i - 1]));
+        if (g[i] <= g[i - 1])
+            in.fail(anglesLine + mc + i, fmt::format("γ angles must increase: {:g} after {:g}", g[i], g[i - 1]));
     if (c.front() < 0 || c.back() >= 360) in.fail(anglesLine, "C angles must lie in [0, 360)");
     if (g.front() < 0 || g.back() > 180) in.fail(anglesLine + mc, "γ angles must lie in [0, 180]");
     // The stored planes (EN 13032-1): all, one, C0–C180, C90–C270 or C0–C90.

@@ -8,10 +8,10 @@
 #include <scene/ply_reader.h>
 #include <scene/polygon.h>
 
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <assimp/version.h>
+#include <assimp/Importer.hpp>
 
 #include <fmt/format.h>
 
@@ -55,7 +55,9 @@ ImportedMaterial readMaterial(const aiMaterial* m) {
     return out;
 }
 
-Vec3 toVec3(const aiVector3D& v) { return Vec3(v.x, v.y, v.z); }
+Vec3 toVec3(const aiVector3D& v) {
+    return Vec3(v.x, v.y, v.z);
+}
 
 /// Walks the node tree, appending every mesh a node references with the node's
 /// accumulated transform. Each mesh's data is checked before it is used.
@@ -165,14 +167,17 @@ ImportedMesh importPly(const std::string& path, const std::string& prefix) {
     return out;
 }
 
-bool hasExtension(const std::string& path, const std::string& ext) { return lowerExtension(path) == ext; }
+bool hasExtension(const std::string& path, const std::string& ext) {
+    return lowerExtension(path) == ext;
+}
 
 /// Why a mesh file gave no triangle: none in it, or every face it has was left out.
 std::string noTriangles(const std::string& path, const ImportedMesh& mesh) {
     if (mesh.droppedFaces == 0) return "mesh '" + path + "' has no triangles";
-    return fmt::format("mesh '{}' has no triangles: its {} face(s) are points or lines, or name vertices the file does "
-                       "not have",
-                       path, mesh.droppedFaces);
+    return fmt::format(
+        "mesh '{}' has no triangles: its {} face(s) are points or lines, or name vertices the file does "
+        "not have",
+        path, mesh.droppedFaces);
 }
 
 }  // namespace
@@ -191,9 +196,10 @@ static std::vector<std::string> missingMaterialLibraries(const std::string& path
         while (!name.empty() && std::isspace(static_cast<unsigned char>(name.front()))) name.erase(0, 1);
         const std::string library = (std::filesystem::path(path).parent_path() / name).string();
         if (const std::string problem = inputFileProblem(library, "material library"); !problem.empty())
-            out.push_back(fmt::format("line {}: material library {}: {} (every material of the file is read as "
-                                      "a default grey, and its lamps do not glow)",
-                                      n, library, problem));
+            out.push_back(
+                fmt::format("line {}: material library {}: {} (every material of the file is read as "
+                            "a default grey, and its lamps do not glow)",
+                            n, library, problem));
     }
     return out;
 }
@@ -223,7 +229,8 @@ ImportedMesh importMesh(const std::string& path, const std::string& sceneFile, c
     // segfaults on some binary PLY files. The collector checks, triangulates and joins.
     const aiScene* s = importer.ReadFile(path, 0);
     if (!s || !s->mRootNode)
-        throw InputError(placeMessage(sceneFile, place, "cannot read mesh '" + path + "': " + importer.GetErrorString()));
+        throw InputError(
+            placeMessage(sceneFile, place, "cannot read mesh '" + path + "': " + importer.GetErrorString()));
     std::vector<int> materialOf;
     for (unsigned m = 0; m < s->mNumMaterials && s->mMaterials; ++m) {
         ImportedMaterial mat = s->mMaterials[m] ? readMaterial(s->mMaterials[m]) : ImportedMaterial{};

@@ -266,7 +266,7 @@ class Builder {
         if (material < 0)
             for (const auto& w : mesh.materialWarnings) s.warnings.fileWarnings.push_back(o.where + "/file: " + w);
         if (o.fileUnit == 0) checkUnit(s, o, mesh);
-        std::map<int, SurfaceGroup> byMaterial;  // scene material → its triangles
+        std::map<int, SurfaceGroup> byMaterial;           // scene material → its triangles
         std::map<int, const ImportedMaterial*> fromFile;  // scene material → the file's
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             int m = material;
@@ -344,7 +344,8 @@ class Builder {
                     "{}/file: material \"{}\" is polished metal, but its {} triangles {}: read as diffuse with its "
                     "base colour",
                     o.where, file->name, g.polygons.size(),
-                    g.polygons.size() > kMaxFileMirrorTriangles ? "are too many for mirrors" : "do not lie in one plane"));
+                    g.polygons.size() > kMaxFileMirrorTriangles ? "are too many for mirrors"
+                                                                : "do not lie in one plane"));
                 continue;
             }
             const int mirror = fileMirrorMaterial(s, o, *file);
@@ -499,7 +500,8 @@ class Builder {
                 Material back = s.materials[m];
                 back.name += " (back)";
                 // A scene material may give its back another reflectance; a file's has the front's.
-                if (static_cast<size_t>(m) < m_desc.materials.size() && m_desc.materials[static_cast<size_t>(m)].backReflectance)
+                if (static_cast<size_t>(m) < m_desc.materials.size() &&
+                    m_desc.materials[static_cast<size_t>(m)].backReflectance)
                     back.reflectance = *m_desc.materials[static_cast<size_t>(m)].backReflectance;
                 backOf[m] = static_cast<int>(s.materials.size());
                 s.materials.push_back(back);

@@ -59,8 +59,9 @@ TEST_CASE("sensors just off the surface they face are named once, with the farth
                             {"name": "a centimetre off the wall", "position": [0.01, 1.5, 3], "normal": [1, 0, 0]})");
     INFO(w.size() << " warnings, first: " << (w.empty() ? "" : w[0]));
     REQUIRE(w.size() == 1);
-    CHECK(mentions(w, "/sensors: 2 sensor(s) lie just off the surface they face, not on it (\"two millimetres up\" at "
-                      "(2.5, 0.002, 3): 2 mm off)"));
+    CHECK(mentions(w,
+                   "/sensors: 2 sensor(s) lie just off the surface they face, not on it (\"two millimetres up\" at "
+                   "(2.5, 0.002, 3): 2 mm off)"));
 }
 
 TEST_CASE("a light, camera or sensor inside a solid is named", "[warnings]") {

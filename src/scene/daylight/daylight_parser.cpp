@@ -16,8 +16,9 @@ void parseSun(JsonObject s, Daylight& d, int& dayOfYear) {
     const bool byPlace = s.has("latitude") || s.has("longitude") || s.has("date") || s.has("time");
     const bool byAngles = s.has("altitude") || s.has("azimuth");
     if (byPlace && byAngles) {
-        s.error("altitude", "give the sun either by place and time (latitude, longitude, utc_offset, date, time) "
-                            "or by altitude and azimuth, not both");
+        s.error("altitude",
+                "give the sun either by place and time (latitude, longitude, utc_offset, date, time) "
+                "or by altitude and azimuth, not both");
         return;
     }
     if (s.has("direct_normal_illuminance")) d.sunNormalIlluminance = s.nonNegative("direct_normal_illuminance", 0.0);
@@ -43,15 +44,16 @@ void parseSun(JsonObject s, Daylight& d, int& dayOfYear) {
     if (!(site.latitudeDeg >= -90 && site.latitudeDeg <= 90))
         s.error("latitude", fmt::format("a latitude lies within [−90°, 90°], got {}", site.latitudeDeg));
     if (!(site.longitudeDeg >= -180 && site.longitudeDeg <= 180))
-        s.error("longitude", fmt::format("a longitude lies within [−180°, 180°] (east positive), got {}",
-                                         site.longitudeDeg));
+        s.error("longitude",
+                fmt::format("a longitude lies within [−180°, 180°] (east positive), got {}", site.longitudeDeg));
     if (!(site.elevationM >= -500 && site.elevationM <= 9000))
-        s.error("elevation", fmt::format("expected a height above sea level in [−500, 9000] m, got {}", site.elevationM));
+        s.error("elevation",
+                fmt::format("expected a height above sea level in [−500, 9000] m, got {}", site.elevationM));
     LocalTime time;
     time.utcOffsetHours = s.number("utc_offset", 0);
     if (!(std::abs(time.utcOffsetHours) <= 14))
-        s.error("utc_offset", fmt::format("a time zone's offset from UTC lies within ±14 h, got {}",
-                                          time.utcOffsetHours));
+        s.error("utc_offset",
+                fmt::format("a time zone's offset from UTC lies within ±14 h, got {}", time.utcOffsetHours));
     const std::string date = s.string("date").value_or("2000-01-01"), clock = s.string("time").value_or("12:00");
     if (auto problem = parseDate(date, time)) s.error("date", *problem);
     if (auto problem = parseTime(clock, time)) s.error("time", *problem);
@@ -59,8 +61,8 @@ void parseSun(JsonObject s, Daylight& d, int& dayOfYear) {
     if (s.context().errors == 0) {
         d.sun = sunPosition(time, site);
         d.site = site;
-        dayOfYear = static_cast<int>(julianDay(time.year, time.month, time.day, 12) -
-                                     julianDay(time.year, 1, 1, 12)) + 1;
+        dayOfYear =
+            static_cast<int>(julianDay(time.year, time.month, time.day, 12) - julianDay(time.year, 1, 1, 12)) + 1;
     }
 }
 
@@ -128,8 +130,9 @@ void parseSky(JsonObject s, Daylight& d, double& zenith, double& horizontal, std
     }
     const bool hasZenith = s.has("zenith_luminance"), hasHorizontal = s.has("diffuse_horizontal_illuminance");
     if (hasZenith == hasHorizontal)
-        s.error("zenith_luminance", "a sky needs exactly one scale: \"zenith_luminance\" (cd/m²) or "
-                                    "\"diffuse_horizontal_illuminance\" (lx, the unobstructed sky on a horizontal plane)");
+        s.error("zenith_luminance",
+                "a sky needs exactly one scale: \"zenith_luminance\" (cd/m²) or "
+                "\"diffuse_horizontal_illuminance\" (lx, the unobstructed sky on a horizontal plane)");
     if (hasZenith) zenith = s.positive("zenith_luminance", 1.0);
     if (hasHorizontal) horizontal = s.positive("diffuse_horizontal_illuminance", 1.0);
     s.finish();
@@ -159,13 +162,15 @@ Daylight parseDaylight(JsonObject o) {
     if (o.context().errors > 0) return d;
     if (perez) {
         if (!d.sun) {
-            o.error("sun", "a Perez sky is brighter toward the sun: give the sun's place and time or its altitude "
-                           "and azimuth");
+            o.error("sun",
+                    "a Perez sky is brighter toward the sun: give the sun's place and time or its altitude "
+                    "and azimuth");
             return d;
         }
         if (d.sunNormalIlluminance > 0) {
-            o.error("sun", "a Perez sky gives the sun's direct light itself: leave out the sun's "
-                           "\"direct_normal_illuminance\"");
+            o.error("sun",
+                    "a Perez sky gives the sun's direct light itself: leave out the sun's "
+                    "\"direct_normal_illuminance\"");
             return d;
         }
         // The model's sun is no lower than the horizon (twilight: the sky's diffuse light only).
@@ -181,8 +186,7 @@ Daylight parseDaylight(JsonObject o) {
         o.error("sun", fmt::format("CIE sky type {} is brighter toward the sun: give the sun's place and time or its "
                                    "altitude and azimuth",
                                    d.cieType));
-    if (d.sunNormalIlluminance > 0 && !d.sun)
-        o.error("sun", "a direct normal illuminance needs the sun's position");
+    if (d.sunNormalIlluminance > 0 && !d.sun) o.error("sun", "a direct normal illuminance needs the sun's position");
     if (o.context().errors == 0) finishDaylight(d, zenith, horizontal);
     return d;
 }

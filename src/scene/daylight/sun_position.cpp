@@ -38,8 +38,8 @@ double julianDay(int year, int month, int day, double hourUtc) {
 SunPosition sunPosition(const LocalTime& time, const Site& site) {
     const double hourUtc = time.hour + time.minute / 60.0 + time.second / 3600.0 - time.utcOffsetHours;
     const double jd = julianDay(time.year, time.month, time.day, hourUtc);  // UT
-    const double jde = jd + site.deltaTSeconds / 86400;                       // TT
-    const double T = (jde - 2451545.0) / 36525;                               // Julian centuries of TT from J2000
+    const double jde = jd + site.deltaTSeconds / 86400;                     // TT
+    const double T = (jde - 2451545.0) / 36525;                             // Julian centuries of TT from J2000
 
     // The sun's geometric mean longitude and mean anomaly (25.2, 25.3), the Earth's
     // orbital eccentricity (25.4) and the equation of the centre, degrees.
@@ -49,11 +49,11 @@ SunPosition sunPosition(const LocalTime& time, const Site& site) {
                      (0.019993 - T * 0.000101) * std::sin(2 * M * kDeg) + 0.000289 * std::sin(3 * M * kDeg);
     const double trueLongitude = L0 + C;
     const double e = 0.016708634 - T * (0.000042037 + T * 0.0000001267);
-    const double v = M + C;  // true anomaly
+    const double v = M + C;                                                     // true anomaly
     const double R = 1.000001018 * (1 - e * e) / (1 + e * std::cos(v * kDeg));  // distance, AU (25.5)
 
     // Nutation in longitude and obliquity (ch. 22, the terms above 0.1″), degrees.
-    const double omega = 125.04452 - T * 1934.136261;  // the Moon's ascending node
+    const double omega = 125.04452 - T * 1934.136261;                              // the Moon's ascending node
     const double Ls = 280.4665 + 36000.7698 * T, Lm = 218.3165 + 481267.8813 * T;  // mean longitudes of sun and moon
     const double dPsi = (-17.20 * std::sin(omega * kDeg) - 1.32 * std::sin(2 * Ls * kDeg) -
                          0.23 * std::sin(2 * Lm * kDeg) + 0.21 * std::sin(2 * omega * kDeg)) /

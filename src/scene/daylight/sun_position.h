@@ -16,9 +16,9 @@ struct LocalTime {
 
 /// A place on the Earth and the air the sun is seen through (for refraction).
 struct Site {
-    double latitudeDeg = 0;    ///< north positive, [−90, 90]
-    double longitudeDeg = 0;   ///< east positive, [−180, 180]
-    double elevationM = 0;     ///< above sea level, m (for the parallax of the sun; tiny)
+    double latitudeDeg = 0;   ///< north positive, [−90, 90]
+    double longitudeDeg = 0;  ///< east positive, [−180, 180]
+    double elevationM = 0;    ///< above sea level, m (for the parallax of the sun; tiny)
     double pressureMbar = 1010;
     double temperatureC = 10;
     double deltaTSeconds = 69;  ///< TT − UT, s (69 around 2020; 64 in 2000)
