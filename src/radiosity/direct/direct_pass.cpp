@@ -6,6 +6,7 @@
 #include <radiosity/direct/sealed_solids.h>
 #include <radiosity/direct/shared_corners.h>
 #include <radiosity/form_factors/form_factor.h>
+#include <radiosity/mesh/mesh_location.h>
 #include <radiosity/mesh/mesher.h>
 #include <radiosity/solution/light_value.h>
 
@@ -485,6 +486,39 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
     return out;
 }
 
+/// A corner under a solid standing on its patch (mesh.underSolid) lies inside the solid:
+/// its own direct light is 0, and the near field of a gather, which takes the patch's part
+/// in front of the solid linear between its corners, read that part dark toward the solid
+/// (the foot of a box: ±20 % from one point to the next along it, at the 5 mm a seam's
+/// vertex gather sits from it). The corner keeps the light at the outline instead, at the
+/// point its indirect light is gathered (contact_vertices.h): the outline's nearest point,
+/// a nudge in front of the standing surface. The patch's mean is not changed.
+void lightCornersUnderSolids(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights,
+                             const Visibility& vis, int areaSamples, RadiositySolution& solution) {
+    if (mesh.underSolid.empty() || mesh.outlineBegin.empty()) return;
+    const double nudge = pointNudge(scene);
+    tbb::parallel_for(size_t(0), mesh.patches.size(), [&](size_t i) {
+        if (mesh.outlineBegin[i] == mesh.outlineBegin[i + 1]) return;  // no outline crosses it
+        const Patch& p = mesh.patches[i];
+        thread_local PointValues at;
+        for (int k = 0; k < 3; ++k) {
+            if (!mesh.underSolid[p.v[k]]) continue;
+            const Vec3& x = mesh.corner(p, k);
+            const ContactOutline* nearest = nullptr;
+            Vec3 foot = x;
+            double best = std::numeric_limits<double>::infinity();
+            for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1]; ++o) {
+                const Vec3 y = closestOnSegment(x, mesh.outlines[o].a, mesh.outlines[o].b);
+                if (glm::length(y - x) < best) best = glm::length(y - x), foot = y, nearest = &mesh.outlines[o];
+            }
+            Vec3 point = foot + nudge * nearest->normal;
+            point -= glm::dot(p.normal, point - x) * p.normal;
+            evaluateAt(at, point, p.normal, lights, vis, areaSamples);
+            solution.directCorner[3 * i + k] = RgbF(at.e);
+        }
+    });
+}
+
 }  // namespace
 
 void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights, const Visibility& vis,
@@ -527,6 +561,7 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
             if (onProgress) onProgress(static_cast<double>(done += chunk.size()) / n);
         },
         tbb::simple_partitioner());
+    lightCornersUnderSolids(scene, mesh, lights, vis, areaSamples, solution);
     // Mirrors have no patches (their front passes light on by the image method), but
     // their backs absorb what reaches them, e.g. through the gap between a mirror and
     // the wall it hangs on.

@@ -18,7 +18,9 @@ namespace rayrad::radiosity {
 /// of the patch). A corner inside a flat part of a surface is evaluated once, at the
 /// vertex, for all the patches around it (sharedCorners); other corners are pulled a hair
 /// toward their patch's centroid so shadow rays do not start inside a neighbouring wall,
-/// and are evaluated per patch. The backs of one-sided patches
+/// and are evaluated per patch. A corner under a solid standing on its patch keeps the
+/// light at the nearest point of the outline, in front of the solid (the patch's mean
+/// does not change). The backs of one-sided patches
 /// are evaluated the same way and what they receive is booked as absorbed
 /// (solution.backAbsorbedDirect). Deterministic; parallel. `onProgress` gets the
 /// fraction of patches done, from any thread (the caller serialises it).
