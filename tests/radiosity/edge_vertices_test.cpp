@@ -157,6 +157,33 @@ TEST_CASE("contact vertices: beside a turned box's foot the vertices carry the g
     WARN("largest |vertex - gather| / gather beside the foot: " << 100 * worst << " %");
 }
 
+TEST_CASE("contact vertices: a floor corner under the turned box keeps the direct light at the box's foot",
+          "[solver]") {
+    // Inside the box it has none; a gather's near field takes the floor patch linear between
+    // its corners, so a 0 there read the lit floor in front of the foot dark.
+    auto run = test::solve(test::writeTempScene("turned_box_direct", floorWithTurnedBox()));
+    const auto& mesh = run.mesh;
+    REQUIRE(!mesh.underSolid.empty());
+    int under = 0;
+    for (size_t i = 0; i < mesh.patches.size(); ++i) {
+        if (mesh.outlineBegin[i] == mesh.outlineBegin[i + 1]) continue;
+        const auto& p = mesh.patches[i];
+        double open = 0;  // lx: the brightest open corner's direct light
+        for (int k = 0; k < 3; ++k)
+            if (!mesh.underSolid[p.v[k]])
+                open = std::max(open, luminance(Rgb(run.lighting.solution.directCorner[3 * i + k])));
+        for (int k = 0; k < 3; ++k) {
+            if (!mesh.underSolid[p.v[k]] || open <= 0) continue;
+            ++under;
+            const double E = luminance(Rgb(run.lighting.solution.directCorner[3 * i + k]));
+            INFO("patch " << i << " corner " << k << ": " << E << " lx under the box, " << open << " lx open");
+            // At the foot the box hides part of the ceiling, but the foot is far from dark.
+            CHECK(E > 0.25 * open);
+        }
+    }
+    CHECK(under > 0);
+}
+
 TEST_CASE("contact vertices: behind a lone panel standing on the floor the light stays on its own side", "[solver]") {
     // A one-sided panel (2 m wide, 1 m tall, turned 30°) stands on a floor meshed at
     // 0.25 m; a lamp in front of it lights its front and the floor there, and shadows the
