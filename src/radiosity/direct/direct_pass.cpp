@@ -6,6 +6,7 @@
 #include <radiosity/direct/sealed_solids.h>
 #include <radiosity/direct/shared_corners.h>
 #include <radiosity/form_factors/form_factor.h>
+#include <radiosity/mesh/contact_outlines.h>
 #include <radiosity/mesh/mesh_location.h>
 #include <radiosity/mesh/mesher.h>
 #include <radiosity/solution/light_value.h>
@@ -324,8 +325,8 @@ std::optional<Rgb> nearAreaSourceMean(const PatchMesh& mesh, const Patch& p, con
     // The rule the integration starts from: of π L F, for an opening with its mean luminance.
     double geometric[4];
     for (int k = 0; k < 4; ++k)
-        geometric[k] = light.sky ? luminance(lights.unshadowedFromAreaSource(s, points[k], normal, false))
-                                 : unshadowed[k];
+        geometric[k] =
+            light.sky ? luminance(lights.unshadowedFromAreaSource(s, points[k], normal, false)) : unshadowed[k];
     const double geometricRule = fourPointMean(geometric[3], geometric);
     const std::array<Vec3, 3> t{mesh.corner(p, 0), mesh.corner(p, 1), mesh.corner(p, 2)};
     const double exact = integrateUnshadowed(lights, s, t, normal, geometricRule,
@@ -385,8 +386,7 @@ bool sameVisibleFraction(const Rgb* values, const Rgb* opens) {
 /// factor `sky` over the patch (patchSkyFactor), or taken whole at each point without one.
 Rgb refinedAreaSourceMean(const PatchMesh& mesh, const Patch& p, const Vec3& normal, const DirectLight& lights,
                           size_t s, const Visibility& vis, int areaSamples,
-                          const std::vector<std::array<double, 2>>& refined, size_t count,
-                          std::optional<double> sky) {
+                          const std::vector<std::array<double, 2>>& refined, size_t count, std::optional<double> sky) {
     const Vec3 a = mesh.corner(p, 0), ab = mesh.corner(p, 1) - a, ac = mesh.corner(p, 2) - a;
     count = std::min(count, refined.size());
     Rgb sum(0.0);
@@ -446,8 +446,7 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
         const Rgb values[4] = {at[0]->share[s], at[1]->share[s], at[2]->share[s], at[3]->share[s]};
         const Rgb opens[4] = {at[0]->open[s], at[1]->open[s], at[2]->open[s], at[3]->open[s]};
         const Rgb fourPoint = fourPointMean(values[3], values);
-        const bool outdoorSun =
-            static_cast<int>(s) == lights.sunSource() && !lights.sunThroughOpening(p.centroid);
+        const bool outdoorSun = static_cast<int>(s) == lights.sunSource() && !lights.sunThroughOpening(p.centroid);
         if (back && outdoorSun) {
             // The sun on the back of a one-sided surface from outdoors: the outside of the
             // building's shell, not light that came in.
@@ -468,8 +467,8 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
                 sourceMean =
                     pointSourceMean(mesh, p, normal, lights, s, vis, points, values, fourPoint, refined, partial);
             }
-        } else if (auto near =
-                       nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, points, refined)) {
+        } else if (auto near = nearAreaSourceMean(mesh, p, normal, lights, s, vis, areaSamples, values, opens, points,
+                                                  refined)) {
             sourceMean = *near;
         } else if (!sameVisibleFraction(values, opens)) {
             const double ofStrongest = strongest > 0 ? luminance(fourPointMean(opens[3], opens)) / strongest : 1.0;
@@ -490,9 +489,9 @@ SideLight sideLight(const PatchMesh& mesh, const Patch& p, const Vec3& normal, c
 /// its own direct light is 0, and the near field of a gather, which takes the patch's part
 /// in front of the solid linear between its corners, read that part dark toward the solid
 /// (the foot of a box: ±20 % from one point to the next along it, at the 5 mm a seam's
-/// vertex gather sits from it). The corner keeps the light at the outline instead, at the
-/// point its indirect light is gathered (contact_vertices.h): the outline's nearest point,
-/// a nudge in front of the standing surface. The patch's mean is not changed.
+/// vertex gather sits from it). The corner keeps the light at the outline instead, as its
+/// indirect light does (contact_vertices.h): at the nearest point of the outlines crossing
+/// the patch, a nudge in front of the standing surface. The patch's mean is not changed.
 void lightCornersUnderSolids(const scene::Scene& scene, const PatchMesh& mesh, const DirectLight& lights,
                              const Visibility& vis, int areaSamples, RadiositySolution& solution) {
     if (mesh.underSolid.empty() || mesh.outlineBegin.empty()) return;
@@ -503,17 +502,8 @@ void lightCornersUnderSolids(const scene::Scene& scene, const PatchMesh& mesh, c
         thread_local PointValues at;
         for (int k = 0; k < 3; ++k) {
             if (!mesh.underSolid[p.v[k]]) continue;
-            const Vec3& x = mesh.corner(p, k);
-            const ContactOutline* nearest = nullptr;
-            Vec3 foot = x;
-            double best = std::numeric_limits<double>::infinity();
-            for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1]; ++o) {
-                const Vec3 y = closestOnSegment(x, mesh.outlines[o].a, mesh.outlines[o].b);
-                if (glm::length(y - x) < best) best = glm::length(y - x), foot = y, nearest = &mesh.outlines[o];
-            }
-            Vec3 point = foot + nudge * nearest->normal;
-            point -= glm::dot(p.normal, point - x) * p.normal;
-            evaluateAt(at, point, p.normal, lights, vis, areaSamples);
+            const auto point = inFrontOfOutline(mesh, mesh.corner(p, k), p.normal, {static_cast<uint32_t>(i)}, nudge);
+            evaluateAt(at, *point, p.normal, lights, vis, areaSamples);  // crossed: an outline is there
             solution.directCorner[3 * i + k] = RgbF(at.e);
         }
     });
@@ -553,7 +543,8 @@ void computeDirect(const scene::Scene& scene, const PatchMesh& mesh, const Direc
                 // nor does the inside of a sealed solid (sealed_solids.h).
                 if (!scene.materials[p.material].twoSided && !sealed[p.group] &&
                     !vis.backCovered(p.centroid, p.normal)) {
-                    const SideLight back = sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, &corners, true);
+                    const SideLight back =
+                        sideLight(mesh, p, -p.normal, lights, vis, areaSamples, refined, &corners, true);
                     backReceived[i] = luminance(back.mean) * p.area;
                     mirrorAbsorbed[i] += luminance(back.mirrorLoss) * p.area;
                 }

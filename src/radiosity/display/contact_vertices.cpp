@@ -50,19 +50,11 @@ std::vector<GatherPoint> contactVertices(const PatchMesh& mesh, const std::vecto
             continue;
         }
         // Under the box: from the nearest point of the outlines, `nudge` in front of the
-        // crossing surface there, in the surface's plane.
-        const ContactOutline* nearest = nullptr;
-        Vec3 foot = x;
-        double best = std::numeric_limits<double>::infinity();
-        for (uint32_t i : crossed[v])
-            for (auto [c, end] = crossings(i); c != end; ++c) {
-                const Vec3 y = closestOnSegment(x, c->a, c->b);
-                if (glm::length(y - x) < best) best = glm::length(y - x), foot = y, nearest = c;
-            }
-        if (!nearest) continue;  // under a solid, among touched patches only: left as it is
-        Vec3 at = foot + nudge * nearest->normal;
-        at -= glm::dot(own.normal, at - x) * own.normal;
-        points.push_back({v, at, own.normal});
+        // crossing surface there, in the surface's plane (crossed[v] holds only patches at
+        // least minDiameter across, whose outlines all count).
+        const auto at = inFrontOfOutline(mesh, x, own.normal, crossed[v], nudge);
+        if (!at) continue;  // under a solid, among touched patches only: left as it is
+        points.push_back({v, *at, own.normal});
     }
     return points;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -199,6 +200,21 @@ std::array<double, 3> sameSideWeights(const PatchMesh& mesh, size_t i, double u,
     if (!(sum > 1e-9)) return plain;
     for (double& wk : w) wk /= sum;
     return w;
+}
+
+std::optional<Vec3> inFrontOfOutline(const PatchMesh& mesh, const Vec3& x, const Vec3& n,
+                                     const std::vector<uint32_t>& patches, double nudge) {
+    const ContactOutline* nearest = nullptr;
+    Vec3 foot = x;
+    double best = std::numeric_limits<double>::infinity();
+    for (uint32_t i : patches)
+        for (uint32_t o = mesh.outlineBegin[i]; o < mesh.outlineBegin[i + 1]; ++o) {
+            const Vec3 y = closestOnSegment(x, mesh.outlines[o].a, mesh.outlines[o].b);
+            if (glm::length(y - x) < best) best = glm::length(y - x), foot = y, nearest = &mesh.outlines[o];
+        }
+    if (!nearest) return std::nullopt;
+    const Vec3 at = foot + nudge * nearest->normal;
+    return at - glm::dot(n, at - x) * n;
 }
 
 }  // namespace rayrad::radiosity

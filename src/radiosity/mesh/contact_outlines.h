@@ -11,6 +11,8 @@
 #include <radiosity/mesh/patch_mesh.h>
 
 #include <array>
+#include <optional>
+#include <vector>
 
 namespace rayrad::radiosity {
 
@@ -34,5 +36,11 @@ void findContactOutlines(PatchMesh& mesh, const Visibility& vis, double toleranc
 /// outline through it, also in the patches around it that the outline only touches.
 /// Renormalised; the plain weights when neither applies, or when no corner would be left.
 std::array<double, 3> sameSideWeights(const PatchMesh& mesh, size_t i, double u, double v);
+
+/// Where the light of a vertex x under a solid is taken (mesh.underSolid): the nearest
+/// point of the outlines crossing `patches`, `nudge` m in front of the standing surface
+/// there, in the plane through x with unit normal n. Nothing when no outline crosses them.
+std::optional<Vec3> inFrontOfOutline(const PatchMesh& mesh, const Vec3& x, const Vec3& n,
+                                     const std::vector<uint32_t>& patches, double nudge);
 
 }  // namespace rayrad::radiosity
