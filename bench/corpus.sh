@@ -3,9 +3,10 @@
 # source and licence in its README, and the tutorial's room). Per scene: patches, the
 # solve's CPU seconds, the sensors' CPU seconds a point, the sensors whose mesh value
 # (what an image shows) is more than 5 % from their gather, the energy account, the
-# warnings; then bench/surface_agreement at random points on the scene's surfaces: the
-# mesh against the gather, median and 95th percentile of |Δ| / total where the indirect
-# light is at least 10 % of the total, and what a point's gather costs.
+# warnings; then bench/surface_agreement at random points on the scene's surfaces and at
+# the surfaces its camera sees through random pixels (what its image shows): the mesh
+# against the gather, median and 95th percentile of |Δ| / total where the indirect light is
+# at least 10 % of the total, and what a point's gather costs.
 # Usage: bench/corpus.sh [POINTS (300)] [SCENE.json ...]   (default: every corpus scene;
 #        POINTS 0: no surface_agreement. The FZK house's solve takes about 10 CPU-minutes and
 #        its points tens of CPU-seconds each at its default mesh)
@@ -47,6 +48,6 @@ PY
     echo "warnings: $(grep -c '^warning' "$tmp/err.txt" || true)"
     grep '^warning' "$tmp/err.txt" | cut -c1-200 || true
     if [ "$points" -gt 0 ]; then
-        "$agreement" "$scene" "$points" "${extra[@]}" 2>&1 | sed -n '1,4p'
+        "$agreement" "$scene" "$points" "${extra[@]}" --both 2>&1 | grep -v -e '^  ' -e '^worst points'
     fi
 done
