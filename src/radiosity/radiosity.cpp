@@ -52,14 +52,15 @@ void findContacts(PatchMesh& mesh, const scene::Scene& scene, const Visibility& 
 }
 
 Lighting solveDirect(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis, const StageLog& log) {
-    Lighting lighting = lightingWith(scene, vis, RadiositySolution{});  // the lights; daylight: what the openings let in
+    Lighting lighting =
+        lightingWith(scene, vis, RadiositySolution{});  // the lights; daylight: what the openings let in
     if (scene.mirrors.empty())
         log.skip("virtual lights and shooters (no mirrors)");
     else if (!scene.mirrorImages.imageMethod())
         log.skip("virtual lights and shooters (mirrors ignored)");
     log.begin(lighting.mirrorImages() > 0 ? fmt::format("direct light (+{} virtual lights in {} mirror images)",
                                                         lighting.lights->virtualLightCount(), lighting.mirrorImages())
-                                        : std::string("direct light"));
+                                          : std::string("direct light"));
     Progress progress("direct light", log.quiet);
     computeDirect(scene, mesh, *lighting.lights, vis, scene.direct.areaLightSamples, lighting.solution,
                   [&](double f) { progress.update(f); });
@@ -151,9 +152,10 @@ void reconstructDisplay(const scene::Scene& scene, const PatchMesh& mesh, const 
     Progress progress("seam profiles", log.quiet);
     // Edges as short as an input mesh's own detail are left linear, as the contacts are.
     const double minEdge = kContactMinEdges * mesh.edgeLength;
-    solution.seamProfiles = gatherSeamProfiles(scene, mesh, clustering, solution, vis,
-                                               lighting.displayVertices.seamVertices, minEdge, options.seamProfileNodes,
-                                               &lighting.seamProfileGathers, [&](double f) { progress.update(f); });
+    solution.seamProfiles =
+        gatherSeamProfiles(scene, mesh, clustering, solution, vis, lighting.displayVertices.seamVertices,
+                           lighting.displayVertices.seamsGatheredAside, minEdge, options.seamProfileNodes,
+                           &lighting.seamProfileGathers, [&](double f) { progress.update(f); });
 }
 
 std::unique_ptr<Gatherer> sensorGatherer(const scene::Scene& scene, const PatchMesh& mesh, const Visibility& vis,

@@ -29,17 +29,22 @@ struct GatheredVertices {
     size_t rims = 0;          ///< vertices on the rim of a covered part (covered_patches.h)
     size_t extrapolated = 0;  ///< vertices whose reconstruction left its patches' range (extrapolated_vertices.h)
     std::vector<uint32_t> seamVertices;  ///< the seam vertices themselves, sorted (seam_profiles.h starts from them)
+    /// Seam vertices under a cover, gathered beside it (openGatherPoints), sorted: their
+    /// band lies under the cover, and no profile grades it.
+    std::vector<uint32_t> seamsGatheredAside;
 };
 
-/// Vertices on a concave seam: the vertex lies on an edge of a patch of another surface
-/// that faces it (the edges and corners of a room). The indirect light falls steeply
-/// there, and no reconstruction from centroid values follows it. Their vertex values are
-/// replaced by a final gather at the vertex, iterated `levels` rounds (each round uses
-/// the previous round's values at the corners of near patches, as the sensor gather's
-/// levels do). Surfaces that touch without a shared mesh line are not seams: their
-/// vertices keep the reconstruction — unless the outline where they touch crosses a
-/// patch's interior (a rotated box on a floor): then the vertices around it are gathered
-/// too (contact_vertices.h). So are the vertices on the rim of a covered part (a lamp
+/// Vertices on a concave seam: the vertex lies on a patch of another surface that faces
+/// it — on its edge (the edges and corners of a room) or, when the vertex's own patch is
+/// one the premesher made, inside it (the foot of a box on a floor whose mesh lines run
+/// elsewhere). The indirect light falls steeply there, and no reconstruction from centroid
+/// values follows it. Their vertex values are replaced by a final gather at the vertex,
+/// iterated `levels` rounds (each round uses the previous round's values at the corners of
+/// near patches, as the sensor gather's levels do). A vertex that lies on no other surface
+/// keeps the reconstruction, even beside something standing on its surface (the floor's
+/// vertices around a box) — unless the outline where they touch crosses a patch's interior
+/// (a rotated box on a floor): then the vertices around it are gathered too
+/// (contact_vertices.h). So are the vertices on the rim of a covered part (a lamp
 /// hung just below a ceiling: mesh.covered), whose reconstruction sees one side only, and
 /// the vertices whose reconstruction left the range of the patches around them
 /// (extrapolated_vertices.h: the corners of a face a few patches wide).

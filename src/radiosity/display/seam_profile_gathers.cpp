@@ -34,17 +34,19 @@ struct Candidate {
 
 /// The edges at least `minEdge` m long from one of `seamVertices` to a vertex that is not
 /// one, sorted by (from, to), each once.
-std::vector<Candidate> profileEdges(const PatchMesh& mesh, const std::vector<uint32_t>& seamVertices, double minEdge) {
+std::vector<Candidate> profileEdges(const PatchMesh& mesh, const std::vector<uint32_t>& seamVertices,
+                                    const std::vector<uint32_t>& unprofiled, double minEdge) {
     // The edges from a seam vertex to one off the seams, each with a patch it bounds.
-    std::vector<char> seam(mesh.vertices.size(), 0);
-    for (uint32_t v : seamVertices) seam[v] = 1;
+    std::vector<char> seam(mesh.vertices.size(), 0), from(mesh.vertices.size(), 0);
+    for (uint32_t v : seamVertices) seam[v] = 1, from[v] = 1;
+    for (uint32_t v : unprofiled) from[v] = 0;
     std::vector<Candidate> candidates;
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         if (!mesh.covered.empty() && mesh.covered[i]) continue;
         const auto& v = mesh.patches[i].v;
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b)
-                if (a != b && seam[v[a]] && !seam[v[b]] &&
+                if (a != b && from[v[a]] && !seam[v[b]] &&
                     glm::length(mesh.vertices[v[b]] - mesh.vertices[v[a]]) >= minEdge)
                     candidates.push_back({v[a], v[b], i});
     }
@@ -61,11 +63,12 @@ std::vector<Candidate> profileEdges(const PatchMesh& mesh, const std::vector<uin
 
 SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                 const RadiositySolution& solution, const Visibility& vis,
-                                const std::vector<uint32_t>& seamVertices, double minEdge, int levels, size_t* gathers,
+                                const std::vector<uint32_t>& seamVertices, const std::vector<uint32_t>& unprofiled,
+                                double minEdge, int levels, size_t* gathers,
                                 const std::function<void(double)>& onProgress) {
     levels = std::clamp(levels, 0, SeamProfiles::kNodes);
     if (levels == 0 || seamVertices.empty() || solution.vertexIndirect.empty()) return {};
-    const std::vector<Candidate> candidates = profileEdges(mesh, seamVertices, minEdge);
+    const std::vector<Candidate> candidates = profileEdges(mesh, seamVertices, unprofiled, minEdge);
 
     GatherOptions options = GatherOptions::plain();  // near parts only: the far field's settings do not enter
     options.maxSplitDepth = kMaxSplitDepth;

@@ -16,7 +16,8 @@
 namespace rayrad::radiosity {
 
 /// Gathers the profiles of every edge at least `minEdge` m long that leaves one of
-/// `seamVertices` (sorted) for a vertex that is not one. A node's δ comes from near-field
+/// `seamVertices` (sorted) for a vertex that is not one, but for those leaving one of
+/// `unprofiled` (sorted: seam vertices whose band a cover hides). A node's δ comes from near-field
 /// gathers alone (the patches near the edge, linear from the solution's vertex values):
 /// δ(x) = near(x) − ((1 − τ) near(s) + τ near(t)); the light from farther is linear along
 /// the edge to second order. Two rounds, the second with the first round's display values
@@ -28,8 +29,9 @@ namespace rayrad::radiosity {
 /// (optional) counts the near-field gathers taken.
 SeamProfiles gatherSeamProfiles(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                 const RadiositySolution& solution, const Visibility& vis,
-                                const std::vector<uint32_t>& seamVertices, double minEdge, int levels,
-                                size_t* gathers = nullptr, const std::function<void(double)>& onProgress = {});
+                                const std::vector<uint32_t>& seamVertices, const std::vector<uint32_t>& unprofiled,
+                                double minEdge, int levels, size_t* gathers = nullptr,
+                                const std::function<void(double)>& onProgress = {});
 
 /// A profile's nodes stop where |δ| falls below this fraction of the gathered light (the
 /// luminance of each): below it the band is not worth a gather (0.5 %).
