@@ -25,7 +25,7 @@
 #include <app/pipeline.h>
 #include <core/random.h>
 #include <core/stage_report.h>
-#include <raytrace/camera.h>
+#include <raytrace/view_samples.h>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -34,7 +34,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -94,38 +93,18 @@ std::vector<Point> samplePoints(const scene::Scene& scene, const radiosity::Patc
     return points;
 }
 
-/// What the scene's camera sees first through `count` random pixels, where that is a
-/// reflecting surface that does not emit: the hit on its patch's plane, with the normal of
-/// the side the camera sees (pixels showing the sky, a mirror or glass, or the back of a
-/// one-sided surface are left out and counted in `missed`).
+/// What the scene's camera sees first through `count` random pixels (raytrace/view_samples.h),
+/// as points to evaluate.
 std::vector<Point> viewPoints(const scene::Scene& scene, const radiosity::PatchMesh& mesh,
                               const raytrace::EmbreeScene& embree, int count, int& missed) {
     std::vector<Point> points;
-    missed = 0;
-    if (!scene.camera) return points;
-    const raytrace::ImageCamera camera(*scene.camera);
-    Random rng(12345);
-    for (int k = 0; k < count; ++k) {
-        const double px = rng.nextDouble() * camera.width(), py = rng.nextDouble() * camera.height();
-        const raytrace::CameraRay ray = camera.ray(px, py);
-        const double far = std::numeric_limits<double>::infinity();
-        raytrace::Hit h = ray.valid ? embree.intersect(ray.origin, ray.direction, 0.0, far) : raytrace::Hit{};
-        if (h.found && !h.specular && glm::dot(mesh.patches[h.patch].normal, ray.direction) >= 0) {
-            // A back face: the front of a surface coinciding with it, as the ray tracer shows.
-            const double window = 4 * embree.epsilon();
-            h = embree.intersect(ray.origin, ray.direction, h.t - window, h.t + window, /*frontOnly=*/true);
-        }
-        const scene::Material* m = h.found && !h.specular ? &scene.materials[mesh.patches[h.patch].material] : nullptr;
-        if (!m || luminance(m->reflectance) <= 0 || luminance(m->emission) > 0) {
-            ++missed;
-            continue;
-        }
-        const radiosity::Patch& p = mesh.patches[h.patch];
+    for (const raytrace::ViewSample& v :
+         raytrace::viewSamples(scene, *scene.camera, mesh, embree, count, 12345, missed)) {
         Point pt;
-        pt.patch = h.patch;
-        pt.sensor.name = fmt::format("p{}", k);
-        pt.sensor.position = mesh.pointAt(p, h.u, h.v);
-        pt.sensor.normal = p.normal;
+        pt.patch = v.patch;
+        pt.sensor.name = fmt::format("p{}", points.size());
+        pt.sensor.position = v.position;
+        pt.sensor.normal = v.normal;
         points.push_back(pt);
     }
     return points;

@@ -1,11 +1,14 @@
 // Scenes nobody here made (bench/corpus/): the small ones run in the default tests with
 // their defaults, as a user would run them. bench/corpus.sh runs them all with the figures.
 #include <app/pipeline.h>
+#include <raytrace/view_samples.h>
 
 #include "pipeline_test_util.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace rayrad;
 
@@ -24,7 +27,49 @@ void checkMeshAgainstGather(const app::PipelineRun& run, double tolerance) {
     }
 }
 
+/// The image against the gather over `count` random pixels of the scene's view: |mesh −
+/// gather| / total at the surfaces the camera sees there, over the pixels whose indirect
+/// light is at least 10 % of their total — the median within 2 % and the 95th percentile
+/// within 10 %.
+void checkPixelsAgainstGather(app::PipelineRun& run, int count) {
+    REQUIRE(run.scene.camera);
+    const radiosity::StageLog log;
+    const auto gatherer = radiosity::sensorGatherer(run.scene, run.mesh, *run.embree, run.lighting, log);
+    int missed = 0;
+    const auto samples = raytrace::viewSamples(run.scene, *run.scene.camera, run.mesh, *run.embree, count, 7, missed);
+    std::vector<double> errors;
+    for (const auto& v : samples) {
+        scene::Sensor at;
+        at.position = v.position, at.normal = v.normal;
+        radiosity::GatherMemo memo;
+        const auto value = radiosity::evaluateSensor(run.scene, run.mesh, run.lighting.solution, *run.lighting.lights,
+                                                     *run.embree, *gatherer, memo, at);
+        if (!value.indirectVertex) continue;
+        const double gathered = luminance(value.indirect), total = luminance(value.direct) + gathered;
+        if (!(total > 0) || gathered < 0.1 * total) continue;
+        errors.push_back(std::abs(luminance(*value.indirectVertex) - gathered) / total);
+    }
+    REQUIRE(errors.size() > static_cast<size_t>(count / 2));
+    std::sort(errors.begin(), errors.end());
+    const double median = errors[errors.size() / 2], p95 = errors[errors.size() * 95 / 100];
+    INFO(errors.size() << " pixels judged (" << missed << " show no reflecting surface): median " << 100 * median
+                       << " %, 95th percentile " << 100 * p95 << " %");
+    CHECK(median <= 0.02);
+    CHECK(p95 <= 0.10);
+}
+
 }  // namespace
+
+TEST_CASE("corpus: the images of McGuire's and the CAD exporter's Cornell boxes agree with the gather at their pixels",
+          "[real_scenes][corpus]") {
+    // The CAD exporter's box also has surfaces no camera sees (the top of its shell under
+    // the lamp shade, the gap inside its walls), where the mesh is far from the gather.
+    for (const char* file : {"bench/corpus/mcguire-cornell/scene.json", "bench/corpus/iset-cornell-lamp/scene.json"}) {
+        INFO(file);
+        auto run = app::runPipeline(test::sourcePath(file), test::quiet());
+        checkPixelsAgainstGather(run, 200);
+    }
+}
 
 TEST_CASE(
     "corpus: a Cornell box from a CAD exporter (walls 0.3 mm thick, the lamp's sides emitting into the gap) "
