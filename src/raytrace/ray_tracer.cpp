@@ -42,6 +42,14 @@ Rgb shadeHit(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
 
 }  // namespace
 
+Hit seenSide(const radiosity::PatchMesh& mesh, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
+             const Hit& h) {
+    if (!h.found || h.specular || glm::dot(mesh.patches[h.patch].normal, dir) < 0) return h;
+    const double window = 4 * embree.epsilon() / glm::length(dir);
+    const Hit front = embree.intersect(origin, dir, h.t - window, h.t + window, /*frontOnly=*/true);
+    return front.found && !front.specular ? front : Hit{};
+}
+
 Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const radiosity::RadiositySolution& solution,
              const radiosity::DirectLight& lights, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
              int areaLightSamples, Random& rng, const RayCone& cone, int depth, const HitGather* gather,
@@ -50,8 +58,8 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
     const Vec3 unit = glm::normalize(dir);
     // The glazing of the openings the ray passes through on its way (1 without daylight).
     const double glazing =
-        scene.daylight ? lights.openingTransmittance(origin, unit, h.found ? h.t * glm::length(dir)
-                                                                           : std::numeric_limits<double>::infinity())
+        scene.daylight ? lights.openingTransmittance(
+                             origin, unit, h.found ? h.t * glm::length(dir) : std::numeric_limits<double>::infinity())
                        : 1.0;
     if (!h.found) return glazing * outdoors(scene, unit);
     return glazing * shadeHit(scene, mesh, solution, lights, embree, origin, dir, h, areaLightSamples, rng, cone, depth,
@@ -96,14 +104,8 @@ Rgb shadeHit(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
         }
         return L;
     }
-    if (glm::dot(mesh.patches[h.patch].normal, dir) >= 0) {
-        // A back face. Surfaces are one-sided (black behind), unless another surface's
-        // front coincides with it: back-to-back quads, a two-sided surface's two sides.
-        const double window = 4 * embree.epsilon() / glm::length(dir);
-        Hit front = embree.intersect(origin, dir, h.t - window, h.t + window, /*frontOnly=*/true);
-        if (!front.found || front.specular) return Rgb(0.0);
-        h = front;
-    }
+    h = seenSide(mesh, embree, origin, dir, h);
+    if (!h.found) return Rgb(0.0);  // the back of a one-sided surface
     const radiosity::Patch& p = mesh.patches[h.patch];
     const scene::Material& m = scene.materials[p.material];
     Rgb L = m.emission;

@@ -62,4 +62,11 @@ Rgb shadeRay(const scene::Scene& scene, const radiosity::PatchMesh& mesh, const 
              int areaLightSamples, Random& rng, const RayCone& cone = {}, int depth = 0,
              const HitGather* gather = nullptr, radiosity::PixelLightMemo* pixel = nullptr);
 
+/// The patch a ray along `dir` from `origin` shows at its hit h on a patch: h, met from the
+/// front; met from behind, the front of a surface coinciding with it (back-to-back quads, a
+/// two-sided surface's two sides) within a few epsilons of it; else nothing (not found):
+/// surfaces are one-sided, black behind. `dir` need not be unit (h.t is in its lengths).
+Hit seenSide(const radiosity::PatchMesh& mesh, const EmbreeScene& embree, const Vec3& origin, const Vec3& dir,
+             const Hit& h);
+
 }  // namespace rayrad::raytrace

@@ -2,6 +2,7 @@
 
 #include <core/random.h>
 #include <raytrace/camera.h>
+#include <raytrace/ray_tracer.h>
 
 #include <limits>
 
@@ -18,12 +19,9 @@ std::vector<ViewSample> viewSamples(const scene::Scene& scene, const scene::Came
     for (int k = 0; k < count; ++k) {
         const double px = rng.nextDouble() * image.width(), py = rng.nextDouble() * image.height();
         const CameraRay ray = image.ray(px, py);
-        Hit h = ray.valid ? embree.intersect(ray.origin, ray.direction, 0.0, far) : Hit{};
-        if (h.found && !h.specular && glm::dot(mesh.patches[h.patch].normal, ray.direction) >= 0) {
-            // A back face: the front of a surface coinciding with it, as the ray tracer shows.
-            const double window = 4 * embree.epsilon();
-            h = embree.intersect(ray.origin, ray.direction, h.t - window, h.t + window, /*frontOnly=*/true);
-        }
+        const Hit h = ray.valid ? seenSide(mesh, embree, ray.origin, ray.direction,
+                                           embree.intersect(ray.origin, ray.direction, 0.0, far))
+                                : Hit{};
         const scene::Material* m = h.found && !h.specular ? &scene.materials[mesh.patches[h.patch].material] : nullptr;
         if (!m || luminance(m->reflectance) <= 0 || luminance(m->emission) > 0) {
             ++missed;
