@@ -19,6 +19,11 @@ void printSolveSummary(const PipelineRun& run) {
     if (run.lighting.shooting.overshootStalled)
         fmt::print(stderr, "note: overshooting was switched off during the solve: the residual stalled with it\n");
     fmt::print(stderr, "{}\n", run.lighting.clustering.statistics());
+    if (run.embree && !run.embree->convexEnclosure().empty())
+        fmt::print(stderr,
+                   "visibility: the scene is one convex enclosure ({} planes): nothing can shadow a point inside "
+                   "it from another, and those shadow rays are not traced\n",
+                   run.embree->convexEnclosure().planeCount());
     const auto& g = run.lighting.displayVertices;
     if (g.seams + g.contacts + g.rims + g.extrapolated > 0)
         fmt::print(stderr,

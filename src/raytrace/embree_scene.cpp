@@ -145,6 +145,17 @@ EmbreeScene::EmbreeScene(const radiosity::PatchMesh& mesh, double epsilon, const
     }
     rtcCommitScene(m_impl->scene);
     if (!m_impl->error.empty()) throw InternalError(m_impl->error);
+
+    // What blocks visibility: the patches and the mirrors (glass lets it through).
+    std::vector<std::array<Vec3, 3>> occluders;
+    std::vector<Vec3> normals;
+    for (const auto& p : mesh.patches) {
+        occluders.push_back({mesh.vertices[p.v[0]], mesh.vertices[p.v[1]], mesh.vertices[p.v[2]]});
+        normals.push_back(p.normal);
+    }
+    for (const auto& t : specular)
+        if (!t.glass) occluders.push_back(t.v), normals.push_back(t.normal);
+    m_enclosure = ConvexEnclosure(occluders, normals, 1e-4 * epsilon);
 }
 
 EmbreeScene::~EmbreeScene() = default;
@@ -258,13 +269,17 @@ void occludedPacket(RTCScene scene, RTCIntersectContext& context, const ShadowSe
 void EmbreeScene::visibleFromSurfaceMany(const Vec3& x, const Vec3& n, const Vec3* to, size_t count,
                                          bool* visible) const {
     const Vec3 from = x + m_epsilon * n;  // as visibleFromSurface: lifted off, not shrunk there
+    const bool fromInside = m_enclosure.contains(from);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // one origin, nearby targets
     for (size_t first = 0; first < count; first += 8) {
         const size_t lanes = std::min<size_t>(8, count - first);
         ShadowSegment segments[8];
-        for (size_t lane = 0; lane < lanes; ++lane) segments[lane] = shadowSegment(from, to[first + lane], 0.0, m_epsilon);
+        for (size_t lane = 0; lane < lanes; ++lane) {
+            segments[lane] = shadowSegment(from, to[first + lane], 0.0, m_epsilon);
+            if (fromInside && m_enclosure.contains(to[first + lane])) segments[lane].empty = true;  // nothing between
+        }
         if (lanes == 1)
             visible[first] = segments[0].empty || !occludedSegment(m_impl->scene, segments[0]);
         else if (lanes <= 4)
@@ -275,6 +290,7 @@ void EmbreeScene::visibleFromSurfaceMany(const Vec3& x, const Vec3& n, const Vec
 }
 
 bool EmbreeScene::occluded(const Vec3& from, const Vec3& to, double startShrink) const {
+    if (m_enclosure.contains(from) && m_enclosure.contains(to)) return false;  // nothing can lie between
     const ShadowSegment s = shadowSegment(from, to, startShrink, m_epsilon);
     return !s.empty && occludedSegment(m_impl->scene, s);
 }

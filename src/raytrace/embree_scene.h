@@ -2,6 +2,7 @@
 #pragma once
 
 #include <core/visibility.h>
+#include <raytrace/convex_enclosure.h>
 
 #include <radiosity/radiosity.h>
 #include <scene/scene.h>
@@ -58,6 +59,9 @@ class EmbreeScene : public Visibility {
     Hit intersect(const Vec3& origin, const Vec3& dir, double tnear, double tfar, bool frontOnly = false) const;
     double epsilon() const { return m_epsilon; }
     const SpecularTriangle& specular(uint32_t i) const { return m_specular[i]; }
+    /// The planes of the scene when it is one convex enclosure (shadow rays between points
+    /// inside it are not traced), else empty.
+    const ConvexEnclosure& convexEnclosure() const { return m_enclosure; }
 
     struct Impl;
 
@@ -68,6 +72,7 @@ class EmbreeScene : public Visibility {
     std::unique_ptr<Impl> m_impl;
     double m_epsilon;
     std::vector<SpecularTriangle> m_specular;
+    ConvexEnclosure m_enclosure;
 };
 
 /// The scene's patches and specular triangles, with the visibility epsilon at 1e-5 of

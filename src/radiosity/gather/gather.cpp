@@ -4,6 +4,7 @@
 #include <radiosity/mesh/patch_reflectance.h>
 
 #include <radiosity/gather/visibility_share.h>
+#include <radiosity/mesh/small_meshes.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +27,7 @@ GatherOptions GatherOptions::forSensors(const scene::Scene& scene, const PatchMe
     GatherOptions o;
     static_cast<scene::GatherOptions&>(o) = scene.gather;
     o.minRefineWidth = kSliverEdges * mesh.edgeLength;
+    o.parallelSums = !tooSmallToShare(mesh);
     return o;
 }
 
@@ -152,6 +154,7 @@ Rgb Gatherer::gather(const Vec3& x, const Vec3& n, int level, int weightClass, G
     const double weight = std::pow(10.0, -weightClass);
     Request request;
     request.x = x, request.n = n, request.weight = weight, request.expected = expected;
+    request.threads = m_options.parallelSums ? Threads::Parallel : Threads::Serial;
     if (level <= 0) return gatherWith(request);
     // The memo is filled while the near list is built (serially); the sum runs in parallel.
     CornerSource corners = [&](size_t patch, int corner, double share) {

@@ -36,6 +36,9 @@ struct GatherOptions : scene::GatherOptions {
     /// false: every patch its own visibility ray, however far its cluster (with
     /// gatherFarDiameters 0, the exact sum: the reference shared rays are measured against).
     bool sharedRays = true;
+    /// false: a gather's sum over the sources runs on the thread that asked for it (a small
+    /// mesh's sum is too little work to share; the sensors still run side by side).
+    bool parallelSums = true;
     /// The sensors' gather: the scene's settings, and slivers below 1/20 of the mesh's
     /// edge, so no patch the premesher made counts as one.
     static GatherOptions forSensors(const scene::Scene& scene, const PatchMesh& mesh);

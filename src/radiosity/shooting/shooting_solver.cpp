@@ -2,6 +2,7 @@
 #include <radiosity/shooting/shooting_solver.h>
 
 #include <radiosity/shooting/shooting_core.h>
+#include <radiosity/mesh/small_meshes.h>
 
 #include <tbb/task_arena.h>
 
@@ -9,15 +10,6 @@
 #include <cmath>
 
 namespace rayrad::radiosity {
-
-namespace {
-/// Below this many patches the shooting runs on one thread. A shot's parallel loops then
-/// hold about 0.1 ms of work (the cube at 1 200 patches: 1 494 shots in 0.16 s), less than
-/// waking and joining the other threads costs, and those spin between shots: on two
-/// threads the cube's shooting took 0.29 CPU-s for 0.14 s wall, on one 0.16 for 0.16. The
-/// results do not depend on the thread count.
-constexpr size_t kOneThreadBelowPatches = 2000;
-}  // namespace
 
 bool isGreyScene(const scene::Scene& scene, const PatchMesh& mesh) {
     auto grey = [](const Rgb& c) { return c.r == c.g && c.g == c.b; };
@@ -33,7 +25,7 @@ bool isGreyScene(const scene::Scene& scene, const PatchMesh& mesh) {
 ShootingSolver::ShootingSolver(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
                                const Visibility& vis)
     : m_singleChannel(scene.shooting.oneChannelWhenGrey && isGreyScene(scene, mesh)),
-      m_oneThread(mesh.patches.size() < kOneThreadBelowPatches) {
+      m_oneThread(tooSmallToShare(mesh)) {
     if (m_singleChannel)
         m_core = std::make_unique<ShootingCore<double>>(scene, mesh, clustering, vis);
     else
