@@ -9,6 +9,9 @@ namespace rayrad::radiosity {
 
 namespace {
 
+/// Samples a quadratic fit needs around a vertex (6 terms, with some to spare).
+constexpr size_t kQuadraticSamples = 10;
+
 /// Least-squares plane through (u, w, value) samples, value at (0, 0); false when the
 /// sample positions are (nearly) collinear.
 bool planeAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& values, Rgb& out) {
@@ -32,6 +35,50 @@ bool planeAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& values, 
     return true;
 }
 
+/// Least-squares quadratic a + b u + c w + d u² + e uw + f w² through the samples, value at
+/// (0, 0); false when there are fewer than kQuadraticSamples or they do not fix it.
+bool quadraticAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& values, Rgb& out) {
+    constexpr int kTerms = 6;
+    if (uv.size() < kQuadraticSamples) return false;
+    // Scaled to the samples' spread, so the normal equations are well conditioned.
+    double spread = 0;
+    for (const Vec2& p : uv) spread = std::max(spread, glm::length(p));
+    if (!(spread > 0)) return false;
+    double m[kTerms][kTerms] = {}, rhs[3][kTerms] = {};
+    for (size_t k = 0; k < uv.size(); ++k) {
+        const double u = uv[k].x / spread, w = uv[k].y / spread;
+        const double t[kTerms] = {1, u, w, u * u, u * w, w * w};
+        for (int i = 0; i < kTerms; ++i) {
+            for (int j = 0; j < kTerms; ++j) m[i][j] += t[i] * t[j];
+            for (int ch = 0; ch < 3; ++ch) rhs[ch][i] += t[i] * values[k][ch];
+        }
+    }
+    // Gaussian elimination with partial pivoting, the three channels at once.
+    for (int c = 0; c < kTerms; ++c) {
+        int pivot = c;
+        for (int r = c + 1; r < kTerms; ++r)
+            if (std::abs(m[r][c]) > std::abs(m[pivot][c])) pivot = r;
+        if (std::abs(m[pivot][c]) < 1e-9 * m[0][0]) return false;
+        for (int j = 0; j < kTerms; ++j) std::swap(m[c][j], m[pivot][j]);
+        for (int ch = 0; ch < 3; ++ch) std::swap(rhs[ch][c], rhs[ch][pivot]);
+        for (int r = c + 1; r < kTerms; ++r) {
+            const double f = m[r][c] / m[c][c];
+            for (int j = c; j < kTerms; ++j) m[r][j] -= f * m[c][j];
+            for (int ch = 0; ch < 3; ++ch) rhs[ch][r] -= f * rhs[ch][c];
+        }
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+        double x[kTerms];
+        for (int r = kTerms - 1; r >= 0; --r) {
+            double sum = rhs[ch][r];
+            for (int j = r + 1; j < kTerms; ++j) sum -= m[r][j] * x[j];
+            x[r] = sum / m[r][r];
+        }
+        out[ch] = x[0];
+    }
+    return true;
+}
+
 }  // namespace
 
 void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, bool linear) {
@@ -41,6 +88,7 @@ void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, boo
         for (uint32_t v : mesh.patches[i].v) around[v].push_back(i);
 
     solution.vertexIndirect.assign(nv, Rgb(0.0));
+    const std::vector<double> angleSum = vertexAngleSums(mesh);
     for (size_t v = 0; v < nv; ++v) {
         if (around[v].empty()) continue;
         // A covered patch (a lamp hung just below it) does not receive the open surface's
@@ -77,8 +125,12 @@ void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, boo
             values.push_back(solution.indirect[i]);
         }
         Rgb fitted;
-        // Illuminance is never negative; a plane fitted across a sharp shadow edge could be.
-        if (planeAtOrigin(uv, values, fitted)) solution.vertexIndirect[v] = glm::max(fitted, Rgb(0.0));
+        // Inside a surface, where the samples surround the vertex, a quadratic: a plane
+        // through a curved field lies above it where the field is convex (the light on a
+        // block's face falling toward its top). On a rim it would extrapolate: a plane.
+        // Illuminance is never negative; a fit across a sharp shadow edge could be.
+        if ((isInnerVertex(angleSum[v]) && quadraticAtOrigin(uv, values, fitted)) || planeAtOrigin(uv, values, fitted))
+            solution.vertexIndirect[v] = glm::max(fitted, Rgb(0.0));
     }
 }
 
