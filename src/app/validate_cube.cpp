@@ -3,6 +3,7 @@
 #include <app/validate_runs.h>
 
 #include <app/plot.h>
+#include <app/sensor_table.h>
 #include <core/input_error.h>
 #include <core/output_file.h>
 
@@ -295,7 +296,7 @@ int validateCube(const ValidateOptions& o) {
     for (const char* p : {"A", "B", "C"}) csv += fmt::format(",{0}_vertex_err_pct,{0}_vertex_total_err_pct,{0}_gather_err_pct", p);
     csv += "\n";
     for (const auto& r : results) {
-        csv += fmt::format("{},{},{},{:.4f},{:.4f},{:.2f},{:.1f},{},{},{},{}", r.config.group, r.config.label, r.patches,
+        csv += fmt::format("{},{},{},{:.4f},{:.4f},{:.2f},{:.1f},{},{},{},{}", r.config.group, csvField(r.config.label), r.patches,
                            r.solveSeconds, r.totalSeconds, r.peakMiB, r.bytesPerPatch,
                            r.report["solve"]["shots"].get<int64_t>(), r.report["solve"]["cluster_transfers"].get<int64_t>(),
                            r.report["solve"]["patch_pairs"].get<int64_t>(), r.report["solve"]["corrections"].get<int64_t>());
