@@ -20,7 +20,7 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
     f.mixed = positive && negative;
     f.sign = negative ? -1.0 : 1.0;
     // Luminance-weighted centroid: the far field's first-order term vanishes there.
-    double weight = 0, brightestPower = -1;
+    double weight = 0;
     Vec3 at(0.0);
     Rgb power(0.0);
     std::array<Vec3, 3> flux{};  // summed in double, kept in float
@@ -34,7 +34,6 @@ FarSource farSource(const PatchMesh& mesh, const Cluster& C, const MemberTree& t
         power += pj;
         weight += y;
         at += y * p.centroid;
-        if (y > brightestPower) brightestPower = y, f.brightest = m;
     }
     f.at = weight > 0 ? at / weight : node.centroid;
     // Visibility samples stratified by power: sample i where the running sum reaches (i + ½)/4 of it.

@@ -32,7 +32,6 @@ struct FarSource {
     /// same order as the moment's; without it a curved node lost light (a closed sphere's
     /// solve at 20° normal tolerance: 0.6 % of the indirect light).
     glm::mat3 turning{0.0f};
-    uint32_t brightest = 0;  ///< member position k with the most power: the shooting's ray goes there
     /// Where the node's visibility is sampled (visibility_share.h; only with
     /// FarRayTargets::PowerSamples): member positions k stratified by power, sample i
     /// where the running sum of the members' |Y(L_j)| A_j in tree order (which keeps them
@@ -46,10 +45,10 @@ struct FarSource {
 /// fluxes' components.
 Vec3 luminanceFlux(const Vec3& red, const Vec3& green, const Vec3& blue);
 
-/// Which ray targets a far source needs: its brightest member only (the shooting, which
-/// builds far sources for every shot), or also its power-stratified visibility samples
-/// FarSource::rayTo (the final gather; visibility_share.h).
-enum class FarRayTargets { Brightest, PowerSamples };
+/// Which ray targets a far source needs: none (its geometry only), or its power-stratified
+/// visibility samples FarSource::rayTo (the final gather, visibility_share.h, and the
+/// shooting's patch→patch near field).
+enum class FarRayTargets { None, PowerSamples };
 
 /// The far sources of every node of `tree` (indexed like tree.nodes). `luminance[k]` is
 /// the luminance (cd/m², RGB) of member position k of `cluster` (its order in

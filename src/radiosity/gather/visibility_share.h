@@ -9,10 +9,8 @@
 //
 // One ray toward the brightest member is biased where the light and the occluders are
 // correlated: on the hall's ceiling, past rows of desks, the floor's members the troffers
-// light are the ones the ceiling sees, and the sensors read 3-7 % high. The shooting's far nodes keep
-// that one ray: against every member's own ray (the hall's patches, 95th percentile) it
-// is 0.42 % off, up to four sampled rays 0.42 % at 13 % more shooting CPU, one sample
-// at 3/8 of the power 0.51 %.
+// light are the ones the ceiling sees, and the sensors read 3-7 % high. The shooting's far
+// nodes take the four samples too, each ray letting a quarter of the node's light through.
 #pragma once
 
 #include <radiosity/clusters/far_field.h>

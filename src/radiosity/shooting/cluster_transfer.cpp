@@ -76,7 +76,7 @@ SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, cons
     g.tree = &tree;
     g.farDiameters = farDiameters;
     g.unitFar =
-        farSources(mesh, source, tree, std::vector<Rgb>(source.patches.size(), Rgb(1.0)), FarRayTargets::Brightest);
+        farSources(mesh, source, tree, std::vector<Rgb>(source.patches.size(), Rgb(1.0)), FarRayTargets::None);
     return g;
 }
 

@@ -22,7 +22,7 @@ typename ShootingCore<V>::Emission ShootingCore<V>::emission(const Shooter& from
     if (tree.nodes.size() > 1 && m_options.shootFarDiameters > 0) {
         std::vector<Rgb> luminance(amount.size());
         for (size_t k = 0; k < amount.size(); ++k) luminance[k] = toRgb(amount[k]);
-        e.far = farSources(from.mesh(), from.cluster(), tree, luminance, FarRayTargets::Brightest);
+        e.far = farSources(from.mesh(), from.cluster(), tree, luminance, FarRayTargets::PowerSamples);
     }
     return e;
 }
@@ -44,7 +44,7 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s
         // collected with the light each lets through and traced together.
         RayBatch<V> rays(*s.vis, rec.centroid, rec.normal, deltaE);
         // Depth first through the shooter's member tree: a node far enough sends as one
-        // source with one visibility ray (toward its brightest member); a leaf (a member
+        // source with four visibility rays (stratified by its light); a leaf (a member
         // group) otherwise member by member.
         descend(tree, [&](uint32_t index, const MemberNode& node) {
             if (!light.far.empty()) {
@@ -54,7 +54,11 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s
                     ++terms;
                     if (s.image && !s.image->mayPassToPoint(f.at, 0.5 * f.reach, rec.centroid)) return false;
                     const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
-                    if (e != V(0.0)) rays.add(from.mesh().patches[C.patches[f.brightest]].centroid, e);
+                    // Its visibility from four rays stratified by its light, each letting a
+                    // quarter through: one ray toward the brightest member hid the whole node
+                    // from a receiver beside an occluder that hides that member alone.
+                    if (e != V(0.0))
+                        for (uint32_t k : f.rayTo) rays.add(from.mesh().patches[C.patches[k]].centroid, 0.25 * e);
                     return false;
                 }
             }
