@@ -1,5 +1,6 @@
-// The indirect light in the shadow of an object: a part of a shooting cluster far from a
-// receiver sends as one source, and its visibility must not hang on one ray.
+// The indirect light where an object hides part of a bright surface: a part of a shooting
+// cluster far from a receiver sends as one source, and its visibility must not hang on
+// one ray.
 #include "../radiosity/solved_scene.h"
 #include "test_support.h"
 
@@ -10,12 +11,12 @@
 
 using namespace rayrad;
 
-TEST_CASE("shooting: the floor beside a block reads the light a far source sends past the block", "[real_scenes]") {
-    // The tutorial room (tinyobjloader's Cornell OBJ) at 0.1 m patches: the floor beside the
-    // short block, from 5 mm to 8 cm out from its side, sees the bright ceiling around the
-    // lamp partly past the block. One ray toward a far node's brightest member hid the
-    // whole node there, and the solve read 35 % below the gather over the first 12 cm.
-    // Points out from the block's side, the edge from (1.30, 0.65) to (2.90, 1.14) m.
+TEST_CASE("shooting: the floor where a block hides part of the bright ceiling reads the light of the rest", "[real_scenes]") {
+    // The tutorial room (tinyobjloader's Cornell OBJ) at 0.1 m patches: a strip of floor
+    // half a metre from the tall block's corner, lit mostly indirectly, where the blocks
+    // hide part of the bright ceiling around the lamp. One ray toward a far node's
+    // brightest member hid the whole node there, and the solve read 35 % below the gather
+    // (72 lx against 111). Points along a line across the strip, 5 mm to 8 cm from its start.
     const double ex = 2.549, ez = 1.0325, nx = 0.293, nz = -0.956;
     std::string sensors = "[";
     for (double d : {0.005, 0.02, 0.05, 0.08})
