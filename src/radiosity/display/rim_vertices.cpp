@@ -11,14 +11,6 @@ namespace rayrad::radiosity {
 
 namespace {
 
-/// The patches around each vertex.
-std::vector<std::vector<uint32_t>> patchesAround(const PatchMesh& mesh) {
-    std::vector<std::vector<uint32_t>> around(mesh.vertices.size());
-    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
-        for (uint32_t v : mesh.patches[i].v) around[v].push_back(i);
-    return around;
-}
-
 /// The nearest point to x on the patches `ps` in the plane of `own` that no surface covers
 /// within `reach` (coveredAt), looked for on rings of an eighth of own's diameter, up to one
 /// diameter out; none when every one is covered.

@@ -9,69 +9,48 @@ namespace rayrad::radiosity {
 
 namespace {
 
-/// Samples a quadratic fit needs around a vertex (6 terms, with some to spare).
-constexpr size_t kQuadraticSamples = 10;
+/// Samples a quadratic fit needs around a vertex (6 terms, with some to spare); a plane's: 3.
+constexpr size_t kQuadraticSamples = 10, kPlaneSamples = 3;
 
-/// Least-squares plane through (u, w, value) samples, value at (0, 0); false when the
-/// sample positions are (nearly) collinear.
-bool planeAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& values, Rgb& out) {
-    // Normal equations for [1 u w]·[a b c]ᵀ ≈ value.
-    glm::dmat3 m(0.0);
-    Rgb r1(0.0), ru(0.0), rw(0.0);
-    for (size_t k = 0; k < uv.size(); ++k) {
-        double u = uv[k].x, w = uv[k].y;
-        m[0][0] += 1, m[1][0] += u, m[2][0] += w;
-        m[0][1] += u, m[1][1] += u * u, m[2][1] += u * w;
-        m[0][2] += w, m[1][2] += u * w, m[2][2] += w * w;
-        r1 += values[k], ru += u * values[k], rw += w * values[k];
-    }
-    double scale = m[1][1] + m[2][2];
-    if (uv.size() < 3 || std::abs(glm::determinant(m)) < 1e-9 * scale * scale * m[0][0]) return false;
-    glm::dmat3 inv = glm::inverse(m);
-    for (int ch = 0; ch < 3; ++ch) {
-        glm::dvec3 rhs(r1[ch], ru[ch], rw[ch]);
-        out[ch] = (inv * rhs)[0];  // a: the value at the vertex
-    }
-    return true;
-}
-
-/// Least-squares quadratic a + b u + c w + d u² + e uw + f w² through the samples, value at
-/// (0, 0); false when there are fewer than kQuadraticSamples or they do not fix it.
-bool quadraticAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& values, Rgb& out) {
-    constexpr int kTerms = 6;
-    if (uv.size() < kQuadraticSamples) return false;
+/// The least-squares fit through (u, w, value) samples of the first `terms` of
+/// a + b u + c w + d u² + e uw + f w² (3: a plane, 6: a quadratic), its value a at (0, 0);
+/// false when there are fewer than `minSamples` or their positions do not fix the terms
+/// (a plane's samples on one line).
+bool fitAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& values, int terms, size_t minSamples, Rgb& out) {
+    constexpr int kMaxTerms = 6;
+    if (uv.size() < minSamples) return false;
     // Scaled to the samples' spread, so the normal equations are well conditioned.
     double spread = 0;
     for (const Vec2& p : uv) spread = std::max(spread, glm::length(p));
     if (!(spread > 0)) return false;
-    double m[kTerms][kTerms] = {}, rhs[3][kTerms] = {};
+    double m[kMaxTerms][kMaxTerms] = {}, rhs[3][kMaxTerms] = {};
     for (size_t k = 0; k < uv.size(); ++k) {
         const double u = uv[k].x / spread, w = uv[k].y / spread;
-        const double t[kTerms] = {1, u, w, u * u, u * w, w * w};
-        for (int i = 0; i < kTerms; ++i) {
-            for (int j = 0; j < kTerms; ++j) m[i][j] += t[i] * t[j];
+        const double t[kMaxTerms] = {1, u, w, u * u, u * w, w * w};
+        for (int i = 0; i < terms; ++i) {
+            for (int j = 0; j < terms; ++j) m[i][j] += t[i] * t[j];
             for (int ch = 0; ch < 3; ++ch) rhs[ch][i] += t[i] * values[k][ch];
         }
     }
     // Gaussian elimination with partial pivoting, the three channels at once.
-    for (int c = 0; c < kTerms; ++c) {
+    for (int c = 0; c < terms; ++c) {
         int pivot = c;
-        for (int r = c + 1; r < kTerms; ++r)
+        for (int r = c + 1; r < terms; ++r)
             if (std::abs(m[r][c]) > std::abs(m[pivot][c])) pivot = r;
         if (std::abs(m[pivot][c]) < 1e-9 * m[0][0]) return false;
-        for (int j = 0; j < kTerms; ++j) std::swap(m[c][j], m[pivot][j]);
+        for (int j = 0; j < terms; ++j) std::swap(m[c][j], m[pivot][j]);
         for (int ch = 0; ch < 3; ++ch) std::swap(rhs[ch][c], rhs[ch][pivot]);
-        for (int r = c + 1; r < kTerms; ++r) {
+        for (int r = c + 1; r < terms; ++r) {
             const double f = m[r][c] / m[c][c];
-            for (int j = c; j < kTerms; ++j) m[r][j] -= f * m[c][j];
+            for (int j = c; j < terms; ++j) m[r][j] -= f * m[c][j];
             for (int ch = 0; ch < 3; ++ch) rhs[ch][r] -= f * rhs[ch][c];
         }
     }
     for (int ch = 0; ch < 3; ++ch) {
-        double x[kTerms];
-        for (int r = kTerms - 1; r >= 0; --r) {
+        double x[kMaxTerms];
+        for (int r = terms - 1; r >= 0; --r) {
             double sum = rhs[ch][r];
-            for (int j = r + 1; j < kTerms; ++j) sum -= m[r][j] * x[j];
+            for (int j = r + 1; j < terms; ++j) sum -= m[r][j] * x[j];
             x[r] = sum / m[r][r];
         }
         out[ch] = x[0];
@@ -83,9 +62,7 @@ bool quadraticAtOrigin(const std::vector<Vec2>& uv, const std::vector<Rgb>& valu
 
 void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, bool linear) {
     const size_t nv = mesh.vertices.size();
-    std::vector<std::vector<uint32_t>> around(nv);  // vertex → patches sharing it
-    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
-        for (uint32_t v : mesh.patches[i].v) around[v].push_back(i);
+    const std::vector<std::vector<uint32_t>> around = patchesAround(mesh);
 
     solution.vertexIndirect.assign(nv, Rgb(0.0));
     const std::vector<double> angleSum = vertexAngleSums(mesh);
@@ -129,7 +106,8 @@ void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, boo
         // through a curved field lies above it where the field is convex (the light on a
         // block's face falling toward its top). On a rim it would extrapolate: a plane.
         // Illuminance is never negative; a fit across a sharp shadow edge could be.
-        if ((isInnerVertex(angleSum[v]) && quadraticAtOrigin(uv, values, fitted)) || planeAtOrigin(uv, values, fitted))
+        if ((isInnerVertex(angleSum[v]) && fitAtOrigin(uv, values, 6, kQuadraticSamples, fitted)) ||
+            fitAtOrigin(uv, values, 3, kPlaneSamples, fitted))
             solution.vertexIndirect[v] = glm::max(fitted, Rgb(0.0));
     }
 }

@@ -12,6 +12,13 @@ double PatchMesh::totalArea() const {
     return a;
 }
 
+std::vector<std::vector<uint32_t>> patchesAround(const PatchMesh& mesh) {
+    std::vector<std::vector<uint32_t>> around(mesh.vertices.size());
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
+        for (uint32_t v : mesh.patches[i].v) around[v].push_back(i);
+    return around;
+}
+
 std::vector<double> vertexAngleSums(const PatchMesh& mesh) {
     std::vector<double> sum(mesh.vertices.size(), 0.0);
     for (const Patch& p : mesh.patches)

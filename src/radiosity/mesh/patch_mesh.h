@@ -82,6 +82,8 @@ struct PatchMesh {
     double totalArea() const;
 };
 
+/// Per vertex, the patches that have it as a corner (in patch order).
+std::vector<std::vector<uint32_t>> patchesAround(const PatchMesh& mesh);
 /// Per vertex, the sum of its patches' corner angles there (rad): 2π inside a flat
 /// surface (its patches close the fan around it), less on a surface's rim, other on a
 /// curved mesh.
