@@ -55,10 +55,16 @@ typename ShootingCore<V>::Delivery ShootingCore<V>::shootPatches(const Source& s
                     if (s.image && !s.image->mayPassToPoint(f.at, 0.5 * f.reach, rec.centroid)) return false;
                     const V e = fromRgb<V>(farField(f, rec.centroid, rec.normal, nullptr)) * s.weight;
                     // Its visibility from four rays stratified by its light, each letting a
-                    // quarter through: one ray toward the brightest member hid the whole node
-                    // from a receiver beside an occluder that hides that member alone.
+                    // quarter through (one ray toward the brightest member hid the whole node
+                    // from a receiver where an occluder hides that member alone). Samples on
+                    // one member (its light is over a quarter of the node's) share one ray.
                     if (e != V(0.0))
-                        for (uint32_t k : f.rayTo) rays.add(from.mesh().patches[C.patches[k]].centroid, 0.25 * e);
+                        for (size_t i = 0; i < f.rayTo.size();) {
+                            size_t same = 1;
+                            while (i + same < f.rayTo.size() && f.rayTo[i + same] == f.rayTo[i]) ++same;
+                            rays.add(from.mesh().patches[C.patches[f.rayTo[i]]].centroid, (0.25 * same) * e);
+                            i += same;
+                        }
                     return false;
                 }
             }
