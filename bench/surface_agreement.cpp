@@ -263,21 +263,18 @@ int main(int argc, char** argv) {
                                         return covered(run.mesh, *run.embree, p.sensor.position, p.sensor.normal);
                                     }),
                      points.end());
-        sets.push_back({fmt::format("{} points on the surfaces ({} covered", sampled, sampled - points.size()),
+        sets.push_back({fmt::format("{} points on the surfaces ({} covered)", sampled, sampled - points.size()),
                         std::move(points)});
     }
     if (inView) {
         int missed = 0;
         std::vector<Point> points = viewPoints(run.scene, run.mesh, *run.embree, count, missed);
         sets.push_back({fmt::format("{} pixels of the camera's view ({} on the sky, a mirror, glass, a lamp or a "
-                                    "surface's black back",
+                                    "surface's black back)",
                                     count, missed),
                         std::move(points)});
     }
-    for (PointSet& set : sets) {
-        evaluate(run, *gatherer, set.points);
-        set.what += ")";
-    }
+    for (PointSet& set : sets) evaluate(run, *gatherer, set.points);
     if (!csvFile.empty()) {
         std::FILE* f = std::fopen(csvFile.c_str(), "w");
         if (!f) {
