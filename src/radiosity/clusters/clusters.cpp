@@ -1,5 +1,6 @@
 #include <radiosity/clusters/clusters.h>
 
+#include <radiosity/mesh/contact_lines.h>  // kTouchingGap
 #include <radiosity/mesh/covered_patches.h>
 #include <radiosity/mesh/patch_reflectance.h>
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace rayrad::radiosity {
@@ -260,23 +262,42 @@ std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const
             const uint32_t c = clustering.clusterOf[i];
             if (std::find(at.begin(), at.end(), c) == at.end()) at.push_back(c);
         }
+    // The smallest patch at each vertex: the scale at which a gap beside it still counts as touching.
+    std::vector<double> sizeAt(mesh.vertices.size(), std::numeric_limits<double>::infinity());
+    double largest = 0;
+    for (const Patch& p : mesh.patches) {
+        for (uint32_t v : p.v) sizeAt[v] = std::min(sizeAt[v], p.diameter);
+        largest = std::max(largest, p.diameter);
+    }
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     std::vector<Vec3> corners(3);
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         if (clustersAt[v].empty()) continue;
         const Vec3& x = mesh.vertices[v];
-        std::vector<uint32_t> near(clustersAt[v]);
+        std::vector<uint32_t> near(clustersAt[v]), across;
         auto visit = [&](uint32_t j) {
             const uint32_t d = clustering.clusterOf[j];
             if (std::find(near.begin(), near.end(), d) != near.end()) return;
             const Patch& p = mesh.patches[j];
             for (int k = 0; k < 3; ++k) corners[k] = mesh.corner(p, k);
-            if (scene::segmentPolygonDistance(x, x, corners, p.normal) <= tolerance) near.push_back(d);
+            const double distance = scene::segmentPolygonDistance(x, x, corners, p.normal);
+            if (distance <= tolerance) {
+                near.push_back(d);
+            } else if (distance <= kTouchingGap * std::min(sizeAt[v], p.diameter) &&
+                       glm::dot(x - corners[0], p.normal) > 0 &&
+                       std::find(across.begin(), across.end(), d) == across.end()) {
+                across.push_back(d);  // in front of the patch: the two faces of a partition touch nothing
+            }
         };
-        forPatchesNear(mesh, &spatial, x, tolerance, visit);
+        forPatchesNear(mesh, &spatial, x, std::max(tolerance, kTouchingGap * std::min(sizeAt[v], largest)), visit);
+        // Clusters meeting at x all touch one another; one across a gap touches x's own.
         for (uint32_t a : near)
             for (uint32_t b : near)
                 if (a != b) pairs.emplace_back(a, b);
+        for (uint32_t a : clustersAt[v])
+            for (uint32_t b : across)
+                if (std::find(near.begin(), near.end(), b) == near.end())
+                    pairs.emplace_back(a, b), pairs.emplace_back(b, a);
     }
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
