@@ -282,8 +282,8 @@ TEST_CASE("a cluster's form factor summed through its member tree agrees with th
     int opened = 0;
     for (const Vec3 x : {Vec3(5, 5, 9.9), Vec3(5, 5, 5), Vec3(2, 7, 1), Vec3(9, 1, 8), Vec3(5, 5, -20)}) {
         for (const Vec3 n : {Vec3(0, 0, 1), glm::normalize(Vec3(1, 1, 1))}) {
-            const double members = memberFormFactorSum(mesh, wall, nullptr, x, n, 4.0);
-            const double throughTree = memberFormFactorSum(mesh, wall, &geometry, x, n, 4.0);
+            const double members = memberFormFactorSum(mesh, wall, nullptr, nullptr, x, n, 4.0);
+            const double throughTree = memberFormFactorSum(mesh, wall, &geometry, nullptr, x, n, 4.0);
             const double exact = formFactorToPolygon(x, n, square, 4, Vec3(0, 0, -1));
             INFO("x " << toString(x) << " n " << toString(n) << " members " << members << " tree " << throughTree
                       << " exact " << exact);
@@ -320,8 +320,8 @@ TEST_CASE("a curved cluster's far field follows its turning normals", "[clusters
     double worst = 0;
     for (const Vec3 x : {Vec3(0, 0, -0.9), Vec3(0.3, 0.2, -0.5), Vec3(0.6, 0, 0), Vec3(0, -0.7, -0.6), Vec3(0, 0, 0)}) {
         for (const Vec3 n : {Vec3(0, 0, 1), glm::normalize(Vec3(0.3, 0.2, 1)), glm::normalize(-x + Vec3(0, 0, 1))}) {
-            const double members = memberFormFactorSum(mesh, cap, nullptr, x, n, 4.0);
-            const double throughTree = memberFormFactorSum(mesh, cap, &geometry, x, n, 4.0);
+            const double members = memberFormFactorSum(mesh, cap, nullptr, nullptr, x, n, 4.0);
+            const double throughTree = memberFormFactorSum(mesh, cap, &geometry, nullptr, x, n, 4.0);
             INFO("x " << toString(x) << " n " << toString(n) << " members " << members << " tree " << throughTree);
             CHECK(throughTree == Approx(members).epsilon(1e-3));
             worst = std::max(worst, std::abs(throughTree / members - 1));

@@ -51,7 +51,8 @@ double shapeReference(const PatchMesh& mesh, const Cluster& source, const Cluste
 /// (g_s = 0) are left out of both sums. Returns a negative value when there is nothing
 /// to calibrate with (g_ref = 0 or no sample with g_s > 0).
 double sampledFormFactor(const PatchMesh& sourceMesh, const Cluster& source, const SourceGeometry* geometry,
-                         const PatchMesh& receiverMesh, const Cluster& receiver, double analyticDistance) {
+                         const SourceLight* light, const PatchMesh& receiverMesh, const Cluster& receiver,
+                         double analyticDistance) {
     const double reference = shapeReference(receiverMesh, source, receiver);
     if (reference <= 0) return -1.0;
     double sumF = 0, sumG = 0;
@@ -62,7 +63,8 @@ double sampledFormFactor(const PatchMesh& sourceMesh, const Cluster& source, con
         const Patch& p = receiverMesh.patches[receiver.samples[s]];
         const double g = pointKernel(source, p.centroid, p.normal);
         if (g <= 0) continue;
-        sumF += p.area * memberFormFactorSum(sourceMesh, source, geometry, p.centroid, p.normal, analyticDistance);
+        sumF +=
+            p.area * memberFormFactorSum(sourceMesh, source, geometry, light, p.centroid, p.normal, analyticDistance);
         sumG += p.area * g;
     }
     return sumG > 0 ? reference * sumF / sumG : -1.0;
@@ -80,12 +82,41 @@ SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, cons
     return g;
 }
 
+SourceLight sourceLight(const PatchMesh& mesh, const Cluster& source, const MemberTree& tree,
+                        const std::vector<double>& luminance) {
+    SourceLight out;
+    double sum = 0, area = 0;
+    for (size_t k = 0; k < source.patches.size(); ++k) {
+        if (!(luminance[k] >= 0)) return out;
+        const double a = mesh.patches[source.patches[k]].area;
+        sum += luminance[k] * a, area += a;
+    }
+    if (!(sum > 0) || !(area > 0)) return out;
+    const double mean = sum / area;
+    out.member.resize(source.patches.size());
+    for (size_t k = 0; k < source.patches.size(); ++k) out.member[k] = luminance[k] / mean;
+    out.node.assign(tree.nodes.size(), 1.0);
+    for (size_t i = 0; i < tree.nodes.size(); ++i) {
+        const MemberNode& node = tree.nodes[i];
+        double w = 0, a = 0;
+        for (uint32_t m = node.begin; m < node.end; ++m) {
+            const uint32_t k = tree.order[m];
+            const double ak = mesh.patches[source.patches[k]].area;
+            w += out.member[k] * ak, a += ak;
+        }
+        if (a > 0) out.node[i] = w / a;
+    }
+    return out;
+}
+
 double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, const SourceGeometry* geometry,
-                           const Vec3& x, const Vec3& n, double analyticDistance) {
+                           const SourceLight* light, const Vec3& x, const Vec3& n, double analyticDistance) {
+    if (light && light->member.empty()) light = nullptr;
     double f = 0;
     if (!geometry || !geometry->tree) {
-        for (uint32_t i : source.patches)
-            f += patchFormFactor(sourceMesh, sourceMesh.patches[i], x, n, analyticDistance);
+        for (size_t k = 0; k < source.patches.size(); ++k)
+            f += (light ? light->member[k] : 1.0) *
+                 patchFormFactor(sourceMesh, sourceMesh.patches[source.patches[k]], x, n, analyticDistance);
         return f;
     }
     descend(*geometry->tree, [&](uint32_t index, const MemberNode& node) {
@@ -95,13 +126,14 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
         // one source.
         if (node.size() > 1 && glm::dot(far.at - x, far.at - x) > limit * limit &&
             std::abs(glm::dot(n, far.at - x)) > 0.5 * far.reach) {
-            f += farField(far, x, n, nullptr)[1] / kPi;  // E = π L F at L = 1
+            f += (light ? light->node[index] : 1.0) * farField(far, x, n, nullptr)[1] / kPi;  // E = π L F at L = 1
             return false;
         }
         if (!node.leaf()) return true;
         for (uint32_t m = node.begin; m < node.end; ++m) {
-            const Patch& p = sourceMesh.patches[source.patches[geometry->tree->order[m]]];
-            f += patchFormFactor(sourceMesh, p, x, n, analyticDistance);
+            const uint32_t k = geometry->tree->order[m];
+            f += (light ? light->member[k] : 1.0) *
+                 patchFormFactor(sourceMesh, sourceMesh.patches[source.patches[k]], x, n, analyticDistance);
         }
         return false;
     });
@@ -111,7 +143,7 @@ double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, c
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
                        double analyticDistance, bool receiverDetail, const SourceGeometry* geometry,
-                       SplitTransfer* split) {
+                       const SourceLight* light, SplitTransfer* split) {
     if (split) *split = SplitTransfer{};
     Vec3 d = receiver.centroid - source.centroid;
     double r2 = glm::dot(d, d);
@@ -121,9 +153,10 @@ double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const
                                   source.projectedArea);
     } else {
         if (receiverDetail && !receiver.planar)
-            f = sampledFormFactor(sourceMesh, source, geometry, receiverMesh, receiver, analyticDistance);
+            f = sampledFormFactor(sourceMesh, source, geometry, light, receiverMesh, receiver, analyticDistance);
         if (f < 0)
-            f = memberFormFactorSum(sourceMesh, source, geometry, receiver.centroid, receiver.normal, analyticDistance);
+            f = memberFormFactorSum(sourceMesh, source, geometry, light, receiver.centroid, receiver.normal,
+                                    analyticDistance);
     }
     if (f <= 0) return 0.0;
     // V from the sample pairs that face each other. On a curved cluster (a ball's cap) a

@@ -26,11 +26,28 @@ struct SourceGeometry {
 SourceGeometry sourceGeometry(const PatchMesh& mesh, const Cluster& source, const MemberTree& tree,
                               double farDiameters);
 
-/// Σ_i F(dA_x → A_i) over the source's members, at x with unit normal n: each member
-/// analytic within `analyticDistance` of its diameters, else the point approximation;
-/// with `geometry` (its tree and far fields), far nodes of the member tree as one source.
+/// How a source's light is spread over its members, for the transfers that take the
+/// source as one: each member's luminance relative to the cluster's mean (by area),
+/// member[k] for member position k (Cluster::patches), node[i] for node i of its member
+/// tree (the area-weighted mean of its members'). Empty: uniform, as the paper's
+/// cluster→cluster transfer takes it. A floor cluster in front of McGuire's short block,
+/// brighter away from the block than beside it, shot its face 5 % more as uniform than
+/// its members send.
+struct SourceLight {
+    std::vector<double> member, node;
+};
+/// The relative light of `source` from its members' luminances (Y, cd/m², by member
+/// position); uniform (empty) when their mean is not positive or one is negative (an
+/// overshooting shot's members may take light back): relative values then mean nothing.
+SourceLight sourceLight(const PatchMesh& mesh, const Cluster& source, const MemberTree& tree,
+                        const std::vector<double>& luminance);
+
+/// Σ_i w_i F(dA_x → A_i) over the source's members, at x with unit normal n, w_i their
+/// relative light (`light`; 1 without): each member analytic within `analyticDistance`
+/// of its diameters, else the point approximation; with `geometry` (its tree and far
+/// fields), far nodes of the member tree as one source, weighted by the node's light.
 double memberFormFactorSum(const PatchMesh& sourceMesh, const Cluster& source, const SourceGeometry* geometry,
-                           const Vec3& x, const Vec3& n, double analyticDistance);
+                           const SourceLight* light, const Vec3& x, const Vec3& n, double analyticDistance);
 
 /// What clusterTransfer found of a pair whose sample rays disagreed (a shadow's edge
 /// crossing it): then memberVisibility says which of the receiver's members are lit.
@@ -43,7 +60,8 @@ struct SplitTransfer {
 /// centroid (with its mean normal) from the source cluster at unit luminance.
 /// Adaptive accuracy instead of a deeper hierarchy: far away (beyond 4 source
 /// diameters) the point approximation A_C cosθ_C cosθ_D / (π r²); nearer, the sum of the
-/// member patches' form factors (memberFormFactorSum, through `geometry` when given).
+/// member patches' form factors (memberFormFactorSum, through `geometry` when given),
+/// each weighted by its share of the source's light (`light`, when given).
 /// Nearer, with `receiverDetail` (receiverShape shares the light by the point kernel g),
 /// that sum is taken where the receiver's surface is: at its sample patches, with their
 /// own normals, and carried to the centroid by g, F_c = g_ref Σ_s A_s F_s / Σ_s A_s g_s
@@ -65,7 +83,7 @@ struct SplitTransfer {
 double clusterTransfer(const PatchMesh& sourceMesh, const Cluster& source, const ClusterSamples& sourceSamples,
                        const PatchMesh& receiverMesh, const Cluster& receiver, const Visibility& vis,
                        double analyticDistance, bool receiverDetail, const SourceGeometry* geometry = nullptr,
-                       SplitTransfer* split = nullptr);
+                       const SourceLight* light = nullptr, SplitTransfer* split = nullptr);
 
 /// For a pair whose sample rays disagreed: visible[k], the fraction of two rays from the
 /// receiver's member k to the source's sample patches it faces (the pair (k, k+1) of

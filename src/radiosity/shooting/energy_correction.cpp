@@ -28,6 +28,7 @@ namespace rayrad::radiosity {
 template <class V>
 typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, const Shooter& from, size_t c, size_t d,
                                                               const ClusterSamples& shotSamples,
+                                                              const SourceLight& shipped,
                                                               const Emission& totalOfSource) {
     const Cluster& C = from.cluster();
     const Cluster& D = m_clustering.clusters[d];
@@ -36,7 +37,7 @@ typename ShootingCore<V>::Correction ShootingCore<V>::correct(const Source& s, c
     Correction moved;
     SplitTransfer split;
     const double t = clusterTransfer(from.mesh(), C, shotSamples, m_mesh, D, *s.vis, m_analyticDistance,
-                                     m_clusterOptions.receiverDetail, &from.geometry, &split);
+                                     m_clusterOptions.receiverDetail, &from.geometry, &shipped, &split);
     V received = shotSoFar * s.weight * (split.partial ? split.open : t);
     if (received != V(0.0)) {
         std::vector<double> shape;
@@ -68,12 +69,17 @@ double ShootingCore<V>::correctRing(size_t c, int r, const std::vector<V>& overs
     const int old = m_light[c].radius;
     std::vector<V> total(C.patches.size());           // what member i will have shipped after this shot
     std::vector<double> shotPower(C.patches.size());  // what earlier shots carried, ≈ (L_i − ΔL_i) A_i
+    std::vector<double> shotLuminance(C.patches.size());
     for (size_t k = 0; k < C.patches.size(); ++k) {
         uint32_t i = C.patches[k];
         total[k] = reflected(i) + overshoot[k];
-        shotPower[k] = lum(reflected(i) - m_unshot[i]) * m_patchArea[i];
+        shotLuminance[k] = lum(reflected(i) - m_unshot[i]);
+        shotPower[k] = shotLuminance[k] * m_patchArea[i];
     }
     const ClusterSamples shotSamples = powerSamples(C, shotPower);
+    // Earlier shots each sent their own ΔL_i; in all, L_i − ΔL_i: the transfer with that
+    // spread is the sum of theirs.
+    const SourceLight shipped = sourceLight(m_mesh, C, m_trees[c], shotLuminance);
     double redelivered = 0;
     for (size_t si = 0; si < m_sources.size(); ++si) {
         const Source& s = m_sources[si];
@@ -91,8 +97,9 @@ double ShootingCore<V>::correctRing(size_t c, int r, const std::vector<V>& overs
         std::vector<Correction> moved(ring.size());
         if (!ring.empty()) {
             const Emission totalLight = emission(from, c, total);
-            tbb::parallel_for(size_t(0), ring.size(),
-                              [&](size_t k) { moved[k] = correct(s, from, c, ring[k], localShotSamples, totalLight); });
+            tbb::parallel_for(size_t(0), ring.size(), [&](size_t k) {
+                moved[k] = correct(s, from, c, ring[k], localShotSamples, shipped, totalLight);
+            });
         }
         for (const Correction& m : moved) {
             redelivered += lum(atSource(m.removed, s.weight));
@@ -106,9 +113,11 @@ double ShootingCore<V>::correctRing(size_t c, int r, const std::vector<V>& overs
 }
 
 template ShootingCore<double>::Correction ShootingCore<double>::correct(const Source&, const Shooter&, size_t, size_t,
-                                                                        const ClusterSamples&, const Emission&);
+                                                                        const ClusterSamples&, const SourceLight&,
+                                                                        const Emission&);
 template ShootingCore<Rgb>::Correction ShootingCore<Rgb>::correct(const Source&, const Shooter&, size_t, size_t,
-                                                                  const ClusterSamples&, const Emission&);
+                                                                  const ClusterSamples&, const SourceLight&,
+                                                                  const Emission&);
 
 template double ShootingCore<double>::correctRing(size_t, int, const std::vector<double>&,
                                                   const std::vector<std::optional<Shooter>>&,

@@ -184,6 +184,7 @@ class ShootingCore final : public ShootingCoreBase {
         std::vector<V> unshot;                         ///< per member: the light that leaves, cd/m²
         std::vector<double> unshotPower;               ///< per member ΔL_i A_i: where the rays leave from
         V deltaLC{0.0};                                ///< ΔL_C, cd/m²
+        SourceLight light;                             ///< how ΔL is spread over the members (cluster→cluster)
         double shotFlux = 0;                           ///< lm
         std::vector<ClusterSamples> localSamples;      ///< per source: the ray samples in its shooter's mesh
         std::vector<std::vector<char>> regionOpen;     ///< images: the voxel regions light reaches through the chain
@@ -220,7 +221,7 @@ class ShootingCore final : public ShootingCoreBase {
         Delivery delivered;
     };
     Correction correct(const Source& s, const Shooter& from, size_t c, size_t d, const ClusterSamples& shotSamples,
-                       const Emission& totalOfSource);  // energy_correction.cpp
+                       const SourceLight& shipped, const Emission& totalOfSource);  // energy_correction.cpp
     /// Shooter c's radius r_v grew to r: corrects every receiver in the ring between the
     /// old and the new radius (correct()), for each source `shooters` holds, marks them in
     /// corrected[source][receiver] and books their deliveries in `delivered`. Returns the
