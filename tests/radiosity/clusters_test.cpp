@@ -295,6 +295,46 @@ TEST_CASE("a cluster's form factor summed through its member tree agrees with th
     CHECK(opened > 5);  // the tree's far field was used, not every member
 }
 
+TEST_CASE("a cluster's form factor weighted by its members' light: the lit half alone, through the tree or not",
+          "[clusters]") {
+    // The cube's back wall as one cluster, its left half (x < 5) at luminance 2, its right
+    // half dark: relative to the mean, 2 and 0. The weighted sum must be twice the left
+    // half's form factor, member by member and through the member tree's far nodes (whose
+    // weights are their members' mean), from points near the lit half, the dark half and
+    // far away.
+    auto s = scene::buildScene(
+        scene::loadScene(test::sourcePath("scenes/cube/cube.json"), {{"radiosity.max_edge", "0.25"}}));
+    auto mesh = premesh(s, s.meshing);
+    Cluster wall, left;
+    for (uint32_t i = 0; i < mesh.patches.size(); ++i)
+        if (mesh.patches[i].normal.z < -0.99) {
+            wall.patches.push_back(i);
+            if (mesh.patches[i].centroid.x < 5) left.patches.push_back(i);
+        }
+    REQUIRE(left.patches.size() == wall.patches.size() / 2);
+    const MemberTree tree = memberTree(mesh, wall, 8);
+    const SourceGeometry geometry = sourceGeometry(mesh, wall, tree, 3.0);
+    std::vector<double> luminance(wall.patches.size());
+    for (size_t k = 0; k < wall.patches.size(); ++k)
+        luminance[k] = mesh.patches[wall.patches[k]].centroid.x < 5 ? 2 : 0;
+    const SourceLight light = sourceLight(mesh, wall, tree, luminance);
+    REQUIRE(light.member.size() == wall.patches.size());
+    CHECK(light.node[0] == Approx(1.0));
+    for (const Vec3 x : {Vec3(2, 5, 9.5), Vec3(8, 5, 9.5), Vec3(5, 5, 5), Vec3(5, 5, -20)}) {
+        const Vec3 n(0, 0, 1);
+        const double lit = memberFormFactorSum(mesh, left, nullptr, nullptr, x, n, 4.0);
+        const double members = memberFormFactorSum(mesh, wall, nullptr, &light, x, n, 4.0);
+        const double throughTree = memberFormFactorSum(mesh, wall, &geometry, &light, x, n, 4.0);
+        INFO("x " << toString(x) << " lit half " << lit << " weighted " << members << " through the tree "
+                  << throughTree);
+        CHECK(members == Approx(2 * lit).epsilon(1e-9));
+        CHECK(throughTree == Approx(2 * lit).epsilon(3e-3));
+    }
+    // A member with negative light (an overshooting shot takes some back): uniform.
+    luminance[0] = -1;
+    CHECK(sourceLight(mesh, wall, tree, luminance).member.empty());
+}
+
 TEST_CASE("a curved cluster's far field follows its turning normals", "[clusters]") {
     // A cap of an inward-facing sphere (members within 20° of one direction) as one
     // cluster; points inside the sphere. Its far nodes' normals turn across them: the
