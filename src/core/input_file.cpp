@@ -16,6 +16,9 @@ namespace rayrad {
 
 namespace {
 
+/// A Git LFS pointer is a few lines of text, about 130 bytes.
+constexpr long kLfsPointerMaxBytes = 1024;
+
 std::string sizeText(double bytes) {
     return bytes >= 1 << 20 ? fmt::format("{:.0f} MiB", bytes / (1 << 20)) : fmt::format("{:.0f} bytes", bytes);
 }
@@ -57,7 +60,21 @@ std::string inputFileProblem(const std::string& path, const std::string& what) {
     if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "is a device, not a " + what;
     if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode)) return "is not a regular file, so not a " + what;
     if (access(path.c_str(), R_OK) != 0) return std::string("cannot open the ") + what + " for reading: " + std::strerror(errno);
+    if (S_ISREG(st.st_mode) && st.st_size < kLfsPointerMaxBytes) {
+        std::ifstream in(path, std::ios::binary);
+        std::string head(static_cast<size_t>(st.st_size), '\0');
+        if (in.read(head.data(), st.st_size) && isGitLfsPointer(head)) return kGitLfsPointerProblem;
+    }
     return "";
+}
+
+const char* const kGitLfsPointerProblem =
+    "is a Git LFS pointer, not the file itself (the repository was cloned without Git LFS): fetch the file with "
+    "'git lfs pull'";
+
+bool isGitLfsPointer(const std::string& text) {
+    static const std::string signature = "version https://git-lfs.github.com/spec/";
+    return text.size() < kLfsPointerMaxBytes && text.compare(0, signature.size(), signature) == 0;
 }
 
 void checkInputFile(const std::string& path, const std::string& what) {

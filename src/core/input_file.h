@@ -8,9 +8,17 @@
 namespace rayrad {
 
 /// What is wrong with `path` as an input ("no such file", "is a directory, not a mesh
-/// file", ...), or "" when it names a readable file (or a pipe). `what` says what it
-/// should be ("scene file", "mesh file").
+/// file", a Git LFS pointer instead of the file, ...), or "" when it names a readable file
+/// (or a pipe). `what` says what it should be ("scene file", "mesh file").
 std::string inputFileProblem(const std::string& path, const std::string& what);
+
+/// True when `text` (a file's first bytes, or all of it) is a Git LFS pointer: the small
+/// text file a repository cloned without Git LFS holds in place of a mesh, a buffer or an
+/// image ("version https://git-lfs.github.com/spec/v1", the object's hash and size).
+bool isGitLfsPointer(const std::string& text);
+
+/// What inputFileProblem says of a Git LFS pointer.
+extern const char* const kGitLfsPointerProblem;
 
 /// Throws InputError ("path: problem") unless `path` names a readable regular file.
 void checkInputFile(const std::string& path, const std::string& what);

@@ -1,6 +1,7 @@
 #include <scene/gltf_reader.h>
 
 #include <core/input_error.h>
+#include <core/input_file.h>
 #include <core/text.h>
 #include <scene/mesh_builder.h>
 
@@ -385,9 +386,22 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
 
 }  // namespace
 
+/// tinygltf's file reading, noting the files it reads that are Git LFS pointers (a .bin
+/// buffer of a repository cloned without Git LFS): a size mismatch is all tinygltf says.
+bool readNotingLfsPointers(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                           void* pointers) {
+    if (!tinygltf::ReadWholeFile(out, err, path, nullptr)) return false;
+    if (isGitLfsPointer(std::string(out->begin(), out->end())))
+        static_cast<std::vector<std::string>*>(pointers)->push_back(path);
+    return true;
+}
+
 ImportedMesh readGltf(const std::string& path, const std::string& errorPrefix) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
+    std::vector<std::string> lfsPointers;
+    loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readNotingLfsPointers,
+                           &tinygltf::WriteWholeFile, &lfsPointers});
     tinygltf::Model model;
     std::string error, warning;
     const std::string ext = lowerExtension(path);
@@ -398,6 +412,8 @@ ImportedMesh readGltf(const std::string& path, const std::string& errorPrefix) {
     } catch (const nlohmann::json::exception& e) {  // tinygltf reading a value of an unexpected type
         throw InputError(errorPrefix + "not a valid glTF 2.0 file: " + e.what());
     }
+    if (!lfsPointers.empty())
+        throw InputError(errorPrefix + "its file '" + lfsPointers.front() + "' " + kGitLfsPointerProblem);
     if (!ok) throw InputError(errorPrefix + "not a valid glTF 2.0 file: " + oneLine(error.empty() ? warning : error));
     ImportedMesh out;
     GltfReader(model, errorPrefix, out).read();

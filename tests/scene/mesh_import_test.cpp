@@ -112,6 +112,31 @@ TEST_CASE("PLY: broken and hostile files give a clear error naming the problem, 
     CHECK(mesh.droppedFaces == 2);
 }
 
+TEST_CASE("a Git LFS pointer in place of a mesh, or of a glTF's buffer, is named as one", "[scene][import]") {
+    // A repository cloned without Git LFS holds these few lines in place of its binaries:
+    // as a PLY they read as a broken header, as a glTF buffer as a size mismatch.
+    const std::string pointer =
+        "version https://git-lfs.github.com/spec/v1\n"
+        "oid sha256:3e56584aaa453e1c72226646de4af1f777d69f01d497d7a26cf806c8005ea322\nsize 108\n";
+    const std::string ply = "/tmp/rayrad_test_lfs.ply", bin = "/tmp/rayrad_test_lfs.bin",
+                      gltf = "/tmp/rayrad_test_lfs.gltf";
+    std::ofstream(ply, std::ios::binary) << pointer;
+    std::ofstream(bin, std::ios::binary) << pointer;
+    std::ofstream(gltf) << R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 108, "uri": "rayrad_test_lfs.bin"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                     "min": [0, 0, 0], "max": [1, 1, 0]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+    for (const std::string& file : {ply, gltf}) {
+        const std::string error = importError(file);
+        INFO(file << ": " << error);
+        CHECK(error.find("Git LFS pointer") != std::string::npos);
+        CHECK(error.find("git lfs pull") != std::string::npos);
+    }
+    CHECK(importError(gltf).find("rayrad_test_lfs.bin") != std::string::npos);
+}
+
 TEST_CASE("PLY: every truncation of a binary file loads or gives an InputError", "[scene][import]") {
     std::string path = writePly("whole.ply", kVertices, {{0, 1, 2}, {0, 2, 3, 4}, {1, 2, 4}});
     std::ifstream in(path, std::ios::binary);
