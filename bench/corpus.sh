@@ -25,7 +25,7 @@ trap 'rm -rf "$tmp"' EXIT
 read -ra extra <<< "${SET:-}"
 for scene in "${scenes[@]}"; do
     echo "== $scene"
-    "$rayrad" solve "$scene" "${extra[@]}" --sensors "$tmp/s.csv" -q > /dev/null 2> "$tmp/err.txt" || {
+    "$rayrad" solve "$scene" "${extra[@]}" --sensors "$tmp/s.csv" > /dev/null 2> "$tmp/err.txt" || {
         echo "solve failed:"; cat "$tmp/err.txt"; continue; }
     patches=$(sed -n 's/^patches: \([0-9]*\),.*/\1/p' "$tmp/err.txt")
     total=$(awk '/^total/ {print $3}' "$tmp/err.txt")
