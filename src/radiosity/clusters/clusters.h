@@ -67,7 +67,9 @@ VoxelRegions voxelRegions(const Clustering& clustering);
 
 /// Per cluster, the other clusters it touches, sorted: a corner of one of its patches lies
 /// on a patch of the other (within `tolerance`, m) — a concave seam, a contact line, or
-/// two neighbours on one curved surface (neighbours in one plane exchange nothing). Their
+/// two neighbours on one curved surface (neighbours in one plane exchange nothing) — or in
+/// front of it across a gap narrower than kTouchingGap of the two patches (a block
+/// modelled a little above a floor). Their
 /// form factor is singular along the line where they meet, which a cluster's few sample
 /// points cannot follow, so they exchange patch→patch however weak the shot (shooting_core).
 /// `spatial` is a spatial index over the patches (Visibility::patchesNear).
