@@ -72,9 +72,9 @@ const char* const kGitLfsPointerProblem =
     "is a Git LFS pointer, not the file itself (the repository was cloned without Git LFS): fetch the file with "
     "'git lfs pull'";
 
-bool isGitLfsPointer(const std::string& text) {
-    static const std::string signature = "version https://git-lfs.github.com/spec/";
-    return text.size() < kLfsPointerMaxBytes && text.compare(0, signature.size(), signature) == 0;
+bool isGitLfsPointer(std::string_view text) {
+    constexpr std::string_view signature = "version https://git-lfs.github.com/spec/";
+    return text.size() < kLfsPointerMaxBytes && text.substr(0, signature.size()) == signature;
 }
 
 void checkInputFile(const std::string& path, const std::string& what) {

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace rayrad {
 
@@ -15,7 +16,7 @@ std::string inputFileProblem(const std::string& path, const std::string& what);
 /// True when `text` (a file's first bytes, or all of it) is a Git LFS pointer: the small
 /// text file a repository cloned without Git LFS holds in place of a mesh, a buffer or an
 /// image ("version https://git-lfs.github.com/spec/v1", the object's hash and size).
-bool isGitLfsPointer(const std::string& text);
+bool isGitLfsPointer(std::string_view text);
 
 /// What inputFileProblem says of a Git LFS pointer.
 extern const char* const kGitLfsPointerProblem;

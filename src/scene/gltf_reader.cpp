@@ -384,17 +384,17 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;  // images are not decoded: only their names are kept
 }
 
-}  // namespace
-
 /// tinygltf's file reading, noting the files it reads that are Git LFS pointers (a .bin
 /// buffer of a repository cloned without Git LFS): a size mismatch is all tinygltf says.
 bool readNotingLfsPointers(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                            void* pointers) {
     if (!tinygltf::ReadWholeFile(out, err, path, nullptr)) return false;
-    if (isGitLfsPointer(std::string(out->begin(), out->end())))
+    if (isGitLfsPointer(std::string_view(reinterpret_cast<const char*>(out->data()), out->size())))
         static_cast<std::vector<std::string>*>(pointers)->push_back(path);
     return true;
 }
+
+}  // namespace
 
 ImportedMesh readGltf(const std::string& path, const std::string& errorPrefix) {
     tinygltf::TinyGLTF loader;

@@ -264,11 +264,8 @@ std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const
         }
     // The smallest patch at each vertex: the scale at which a gap beside it still counts as touching.
     std::vector<double> sizeAt(mesh.vertices.size(), std::numeric_limits<double>::infinity());
-    double largest = 0;
-    for (const Patch& p : mesh.patches) {
+    for (const Patch& p : mesh.patches)
         for (uint32_t v : p.v) sizeAt[v] = std::min(sizeAt[v], p.diameter);
-        largest = std::max(largest, p.diameter);
-    }
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     std::vector<Vec3> corners(3);
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -289,7 +286,7 @@ std::vector<std::vector<uint32_t>> touchingClusters(const PatchMesh& mesh, const
                 across.push_back(d);  // in front of the patch: the two faces of a partition touch nothing
             }
         };
-        forPatchesNear(mesh, &spatial, x, std::max(tolerance, kTouchingGap * std::min(sizeAt[v], largest)), visit);
+        forPatchesNear(mesh, &spatial, x, std::max(tolerance, kTouchingGap * sizeAt[v]), visit);
         // Clusters meeting at x all touch one another; one across a gap touches x's own.
         for (uint32_t a : near)
             for (uint32_t b : near)

@@ -95,17 +95,23 @@ SourceLight sourceLight(const PatchMesh& mesh, const Cluster& source, const Memb
     const double mean = sum / area;
     out.member.resize(source.patches.size());
     for (size_t k = 0; k < source.patches.size(); ++k) out.member[k] = luminance[k] / mean;
-    out.node.assign(tree.nodes.size(), 1.0);
-    for (size_t i = 0; i < tree.nodes.size(); ++i) {
+    // Bottom-up (children follow their parent): a leaf sums its members, a node its two children.
+    std::vector<double> weighted(tree.nodes.size(), 0.0), nodeArea(tree.nodes.size(), 0.0);
+    for (size_t i = tree.nodes.size(); i-- > 0;) {
         const MemberNode& node = tree.nodes[i];
-        double w = 0, a = 0;
-        for (uint32_t m = node.begin; m < node.end; ++m) {
-            const uint32_t k = tree.order[m];
-            const double ak = mesh.patches[source.patches[k]].area;
-            w += out.member[k] * ak, a += ak;
+        if (node.leaf()) {
+            for (uint32_t m = node.begin; m < node.end; ++m) {
+                const uint32_t k = tree.order[m];
+                const double a = mesh.patches[source.patches[k]].area;
+                weighted[i] += out.member[k] * a, nodeArea[i] += a;
+            }
+        } else {
+            weighted[i] = weighted[node.left] + weighted[node.right];
+            nodeArea[i] = nodeArea[node.left] + nodeArea[node.right];
         }
-        if (a > 0) out.node[i] = w / a;
     }
+    out.node.resize(tree.nodes.size());
+    for (size_t i = 0; i < tree.nodes.size(); ++i) out.node[i] = nodeArea[i] > 0 ? weighted[i] / nodeArea[i] : 1.0;
     return out;
 }
 

@@ -329,7 +329,7 @@ void ShootingCore<V>::shootClusterToCluster(Shot& shot) {
     shot.nearAny.assign(n, 0);
     std::vector<double> luminance(C.patches.size());
     for (size_t k = 0; k < C.patches.size(); ++k) luminance[k] = lum(shot.unshot[k]);
-    shot.light = sourceLight(m_mesh, C, m_trees[c], luminance);
+    const SourceLight light = sourceLight(m_mesh, C, m_trees[c], luminance);  // how ΔL is spread over C
     std::atomic<int64_t> clusterTransfers{0}, splitTransfers{0}, imageTransfers{0}, imageLit{0};
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kTransferGrain), [&](const tbb::blocked_range<size_t>& range) {
         int64_t cc = 0, split = 0, ccImage = 0, litImage = 0;
@@ -351,7 +351,7 @@ void ShootingCore<V>::shootClusterToCluster(Shot& shot) {
                 SplitTransfer parts;
                 double t =
                     clusterTransfer(from.mesh(), Cs, shot.localSamples[si], m_mesh, D, *s.vis, m_analyticDistance,
-                                    m_clusterOptions.receiverDetail, &from.geometry, &shot.light, &parts);
+                                    m_clusterOptions.receiverDetail, &from.geometry, &light, &parts);
                 bool carried = false;
                 if (parts.partial) {  // a shadow's edge crosses D: each member's own V
                     thread_local std::vector<double> visible;

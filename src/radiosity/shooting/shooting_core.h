@@ -184,7 +184,6 @@ class ShootingCore final : public ShootingCoreBase {
         std::vector<V> unshot;                         ///< per member: the light that leaves, cd/m²
         std::vector<double> unshotPower;               ///< per member ΔL_i A_i: where the rays leave from
         V deltaLC{0.0};                                ///< ΔL_C, cd/m²
-        SourceLight light;                             ///< how ΔL is spread over the members (cluster→cluster)
         double shotFlux = 0;                           ///< lm
         std::vector<ClusterSamples> localSamples;      ///< per source: the ray samples in its shooter's mesh
         std::vector<std::vector<char>> regionOpen;     ///< images: the voxel regions light reaches through the chain
