@@ -126,7 +126,7 @@ class Gatherer {
     /// gathered for a larger weight (in more detail), or at a higher level (with a deeper
     /// recursion below it), serves a request for less, so a sensor's value can depend on
     /// the sensors gathered before it with the same memo (GatherMemo), by less than the
-    /// minimum weight times the error of a vertex value (1e-3 × 1 % at a cube corner: 1e-5).
+    /// minimum weight times the error of a vertex value (0.1 × 1 % at a cube corner: 1e-3).
     Gatherer(const scene::Scene& scene, const PatchMesh& mesh, const Clustering& clustering,
              const RadiositySolution& solution, const Visibility& vis, const GatherOptions& options);
 
