@@ -13,8 +13,9 @@ namespace {
 /// CPU seconds a sensor's final gather takes at least: the far clusters are taken in
 /// groups, so it hardly grows with the mesh. Measured on 2 cores: 0.7–1.3 ms a
 /// sensor on the cube (a 64 × 64 grid at 1 200 to 307 200 patches), 1.0 ms in the bench
-/// hall (512 sensors); near furniture and mirrors far more, 0.56 s on average for the
-/// living room's 16 × 12 work plane (its re-gathers around small near patches).
+/// hall (512 sensors); near furniture and mirrors more, and with a long tail: random
+/// points on the living room's surfaces 18 ms median, 1.5 s at the 90th percentile (the
+/// re-gathers around small near patches).
 constexpr double kGatherSecondsPerSensor = 1e-3;
 /// Peak memory model, measured: the process with its libraries and Embree (a solve of the
 /// small cube peaks at 17 MiB), the image libraries when an image is read or written
