@@ -21,7 +21,8 @@
 //        one solve; --solution:
 //        a solution saved by rayrad solve --save for the same scene and settings; --csv:
 //        every point's place, direct light, mesh and gathered indirect light, CPU and
-//        gathers; with --both, the view's points)
+//        gathers, its patch and the patch's own solved indirect light, its material and
+//        whether the patch is covered; with --both, the view's points)
 #include <app/pipeline.h>
 #include <core/random.h>
 #include <core/stage_report.h>
@@ -138,13 +139,20 @@ void evaluate(const app::PipelineRun& run, const radiosity::Gatherer& gatherer, 
     });
 }
 
-void writeCsv(std::FILE* f, const std::vector<Point>& points) {
-    std::fprintf(f, "x,y,z,nx,ny,nz,direct_lx,mesh_indirect_lx,gather_indirect_lx,cpu_s,gathers\n");
-    for (const Point& p : points)
-        std::fprintf(f, "%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.6g,%.6g,%.6g,%.6g,%zu\n", p.sensor.position.x,
+void writeCsv(std::FILE* f, const app::PipelineRun& run, const std::vector<Point>& points) {
+    std::fprintf(f, "x,y,z,nx,ny,nz,direct_lx,mesh_indirect_lx,gather_indirect_lx,cpu_s,gathers,patch,patch_indirect_lx,"
+                    "material,covered\n");
+    for (const Point& p : points) {
+        // The material's name quoted as CSV quotes it (a name may hold commas).
+        std::string material = run.scene.materials[run.mesh.patches[p.patch].material].name;
+        for (size_t at = 0; (at = material.find('"', at)) != std::string::npos; at += 2) material.insert(at, 1, '"');
+        std::fprintf(f, "%.6f,%.6f,%.6f,%.4f,%.4f,%.4f,%.6g,%.6g,%.6g,%.6g,%zu,%zu,%.6g,\"%s\",%d\n", p.sensor.position.x,
                      p.sensor.position.y, p.sensor.position.z, p.sensor.normal.x, p.sensor.normal.y, p.sensor.normal.z,
                      luminance(p.value.direct), p.value.indirectVertex ? luminance(*p.value.indirectVertex) : -1.0,
-                     luminance(p.value.indirect), p.cpu, p.gathers);
+                     luminance(p.value.indirect), p.cpu, p.gathers, p.patch,
+                     luminance(run.lighting.solution.indirect[p.patch]), material.c_str(),
+                     !run.mesh.covered.empty() && run.mesh.covered[p.patch] ? 1 : 0);
+    }
 }
 
 /// The agreement over one set's points, printed.
@@ -281,7 +289,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "surface_agreement: cannot write %s\n", csvFile.c_str());
             return 3;
         }
-        writeCsv(f, sets.back().points);
+        writeCsv(f, run, sets.back().points);
         std::fclose(f);
     }
     for (const PointSet& set : sets) summarize(sceneFile, run, solveCpu, set);
