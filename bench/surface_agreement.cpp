@@ -151,7 +151,7 @@ void writeCsv(std::FILE* f, const app::PipelineRun& run, const std::vector<Point
                      luminance(p.value.direct), p.value.indirectVertex ? luminance(*p.value.indirectVertex) : -1.0,
                      luminance(p.value.indirect), p.cpu, p.gathers, p.patch,
                      luminance(run.lighting.solution.indirect[p.patch]), material.c_str(),
-                     !run.mesh.covered.empty() && run.mesh.covered[p.patch] ? 1 : 0);
+                     run.mesh.isCovered(p.patch) ? 1 : 0);
     }
 }
 
@@ -212,7 +212,7 @@ void summarize(const std::string& sceneFile, const app::PipelineRun& run, double
             p.sensor.normal.y, p.sensor.normal.z, patch.area, patch.diameter, luminance(*p.value.indirectVertex),
             luminance(p.value.indirect), luminance(p.value.direct), luminance(run.lighting.solution.indirect[p.patch]),
             run.scene.materials[patch.material].name,
-            !run.mesh.covered.empty() && run.mesh.covered[p.patch] ? ", covered" : "");
+            run.mesh.isCovered(p.patch) ? ", covered" : "");
     }
 }
 

@@ -22,7 +22,7 @@ std::vector<GatherPoint> extrapolatedVertices(const PatchMesh& mesh, const Radio
     std::vector<Range> open(nv), covered(nv);
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
         const double y = luminance(solution.indirect[i]);
-        const bool isCovered = !mesh.covered.empty() && mesh.covered[i];
+        const bool isCovered = mesh.isCovered(i);
         for (uint32_t v : mesh.patches[i].v) (isCovered ? covered : open)[v].add(y);
     }
     const std::vector<double> angleSum = vertexAngleSums(mesh);

@@ -74,7 +74,7 @@ std::vector<char> openGatherPoints(const PatchMesh& mesh, const Visibility& vis,
     for (size_t k = 0; k < points.size(); ++k) {
         GatherPoint& g = points[k];
         const int64_t i = patchOf[g.vertex];
-        if (i < 0 || (!mesh.covered.empty() && mesh.covered[i])) continue;
+        if (i < 0 || mesh.isCovered(static_cast<size_t>(i))) continue;
         const Patch& own = mesh.patches[i];
         const double reach = kCoverDiameters * own.diameter;  // as coveredPatches looks
         if (!coveredAt(vis, g.at, own.normal, reach, lift)) continue;

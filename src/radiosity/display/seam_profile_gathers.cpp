@@ -42,7 +42,7 @@ std::vector<Candidate> profileEdges(const PatchMesh& mesh, const std::vector<uin
     for (uint32_t v : unprofiled) from[v] = 0;
     std::vector<Candidate> candidates;
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
-        if (!mesh.covered.empty() && mesh.covered[i]) continue;
+        if (mesh.isCovered(i)) continue;
         const auto& v = mesh.patches[i].v;
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b)

@@ -71,7 +71,7 @@ void reconstructVertices(const PatchMesh& mesh, RadiositySolution& solution, boo
         // A covered patch (a lamp hung just below it) does not receive the open surface's
         // light: where v has open patches, only they count (before, the ceiling's vertices
         // around the Cornell box's lamp read 13-30 % below a gather).
-        auto isOpen = [&](uint32_t i) { return mesh.covered.empty() || !mesh.covered[i]; };
+        auto isOpen = [&](uint32_t i) { return !mesh.isCovered(i); };
         const bool anyOpen = std::any_of(around[v].begin(), around[v].end(), isOpen);
         auto counts = [&](uint32_t i) { return !anyOpen || isOpen(i); };
         Rgb sum(0.0);

@@ -62,6 +62,8 @@ struct PatchMesh {
     /// Per patch: 1 when a surface lies just in front of it (covered_patches.h); empty when
     /// not looked for.
     std::vector<char> covered;
+    /// Whether patch i is covered (false when coverage was not looked for).
+    bool isCovered(size_t i) const { return !covered.empty() && covered[i]; }
     /// Per vertex that an outline crossing one of its patches runs through: the front
     /// normals of those outlines, vertex v's at throughNormals[throughBegin[v] ..
     /// throughBegin[v + 1]). Such a vertex lies on both sides; its value is the light in
