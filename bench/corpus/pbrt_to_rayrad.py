@@ -8,7 +8,7 @@
 Reads the subset of pbrt-v3 those exports use: the camera (`Transform`, `Camera
 "perspective"` with `fov`, `Film` resolution), `MakeNamedMaterial` / `NamedMaterial` /
 `Material`, `AttributeBegin/End`, `TransformBegin/End`, `Transform`, `ConcatTransform`,
-`Translate`, `Scale`, `AreaLightSource "diffuse"`, `Include`, and shapes `plymesh` (binary or
+`Translate`, `Scale`, `LookAt`, `AreaLightSource "diffuse"`, `Include`, and shapes `plymesh` (binary or
 ASCII PLY, triangles and quads) and `trianglemesh`. Textures, `LightSource` (point, distant
 and environment lights) and everything else are skipped.
 
@@ -156,6 +156,19 @@ def inverse(m):
 
 # ---------------------------------------------------------------------------------------
 # Meshes
+
+
+def look_at(ex, ey, ez, lx, ly, lz, ux, uy, uz):
+    """pbrt's LookAt: the world-to-camera matrix of a camera at e looking at l with up u
+    (camera space left-handed: x right, y up, z ahead)."""
+    eye = (ex, ey, ez)
+    ahead = sub((lx, ly, lz), eye)
+    ahead = tuple(c / math.sqrt(dot(ahead, ahead)) for c in ahead)
+    right = cross((ux, uy, uz), ahead)
+    right = tuple(c / math.sqrt(dot(right, right)) for c in right)
+    up = cross(ahead, right)
+    camera_to_world = [[right[i], up[i], ahead[i], eye[i]] for i in range(3)] + [[0, 0, 0, 1]]
+    return inverse(camera_to_world)
 
 
 def read_ply(path):
@@ -446,6 +459,7 @@ def main():
     notes = []
     textures = {}                   # pbrt texture name → image path
     anonymous = 0
+    unnamed = set()                 # anonymous materials no mesh has named yet
     for directive, a in included(args.scene):
         if directive == "WorldBegin":
             in_world, camera_matrix = True, state["ctm"]
@@ -468,6 +482,8 @@ def main():
             for i in range(3):
                 m[i][i] = float(a[i])
             state["ctm"] = multiply(state["ctm"], m)
+        elif directive == "LookAt":
+            state["ctm"] = multiply(state["ctm"], look_at(*[float(x) for x in a[:9]]))
         elif directive == "Camera":
             p = parameters(a[1:])
             if "fov" in p:
@@ -492,6 +508,7 @@ def main():
             named[name] = rayrad_material(name, unquote(a[0]), parameters(a[1:]), guesses,
                                           textures, notes)
             state["material"] = name
+            unnamed.add(name)
         elif directive == "AreaLightSource":
             p = parameters(a[1:])
             state["emit"] = numbers(p["L"])
@@ -512,6 +529,14 @@ def main():
             else:
                 notes.append(f"shape {kind} skipped")
                 continue
+            if kind == "plymesh" and state["material"] in unnamed:
+                # An anonymous material takes the name of the first mesh that uses it.
+                stem = os.path.splitext(os.path.basename(p["filename"][1][0]))[0]
+                stem = re.sub(r"_mat\d+$", "", stem)
+                if stem not in named:
+                    named[stem] = named.pop(state["material"])
+                    unnamed.discard(state["material"])
+                    state["material"] = stem
             tris, both_sides = oriented(triangles_of(positions, normals, faces, state["ctm"]),
                                         normals is not None)
             if state["emit"]:
