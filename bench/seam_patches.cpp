@@ -8,6 +8,8 @@
 // relative difference. A difference here is the solver's, not the display's.
 // Usage: build/bench/seam_patches [key=value ...]   (scene settings, as with --set; the
 //        scene's own max_edge is 0.05 m)
+#include "bench_main.h"
+
 #include <app/pipeline.h>
 #include <radiosity/gather/gather.h>
 #include <scene/scene_parser.h>
@@ -22,7 +24,13 @@
 
 using namespace rayrad;
 
-int main(int argc, char** argv) {
+namespace {
+const char* const kUsage =
+    "usage: seam_patches [key=value ...]   (scene settings, as with rayrad's --set)\n"
+    "The Cornell box's solved patch values within 70 mm of its ceiling's seam with the back\n"
+    "wall against an exact sum of the same solution at their centroids, by distance.\n";
+
+int seamPatches(int argc, char** argv) {
     constexpr double kCeilingY = 0.5488, kBackZ = 0.5592, kBand = 0.07;  // m
     app::PipelineOptions options;
     options.quiet = true;
@@ -61,4 +69,9 @@ int main(int argc, char** argv) {
                    diffs[diffs.size() / 2]);
     }
     return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    return rayrad::bench::runBench("seam_patches", kUsage, argc, argv, [&] { return seamPatches(argc, argv); });
 }

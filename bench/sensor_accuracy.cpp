@@ -11,6 +11,8 @@
 //        and the sensor stage's CPU seconds against the solve's, then the outer ring of
 //        cells beside the side walls run alone, where the corner and midpoint re-gathers
 //        are)
+#include "bench_main.h"
+
 #include <app/pipeline.h>
 #include <core/random.h>
 
@@ -148,9 +150,15 @@ int gridMode(double maxEdge, int k, int paths, int argc, char** argv, int firstS
     return 0;
 }
 
-}  // namespace
+const char* const kUsage =
+    "usage: sensor_accuracy [max_edge (0.25: 19 200 triangles)] [random points (24)] [paths per half (200000)]\n"
+    "                       [gather_refine_levels (scene default, -1)] [key=value ...]\n"
+    "       sensor_accuracy [max_edge] grid[:K] [paths per half] [key=value ...]\n"
+    "The sensor gather on the paper's cube against a path tracer: points near an edge and a\n"
+    "corner, then random points on all six walls (RMS, max); grid[:K]: a K x K grid (32) on\n"
+    "the back wall, its error and the sensor stage's CPU seconds against the solve's.\n";
 
-int main(int argc, char** argv) {
+int accuracy(int argc, char** argv) {
     const double maxEdge = argc > 1 ? std::atof(argv[1]) : 0.25;
     if (argc > 2 && std::string(argv[2]).rfind("grid", 0) == 0) {
         const std::string arg = argv[2];
@@ -250,4 +258,10 @@ int main(int argc, char** argv) {
                    randomPoints, 100 * std::sqrt(sumRandom / randomPoints), 100 * maxRandom,
                    100 * std::sqrt(sumSpread / randomPoints));
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return rayrad::bench::runBench("sensor_accuracy", kUsage, argc, argv, [&] { return accuracy(argc, argv); });
 }

@@ -23,6 +23,8 @@
 //        every point's place, direct light, mesh and gathered indirect light, CPU and
 //        gathers, its patch and the patch's own solved indirect light, its material and
 //        whether the patch is covered; with --both, the view's points)
+#include "bench_main.h"
+
 #include <app/pipeline.h>
 #include <core/random.h>
 #include <core/stage_report.h>
@@ -218,9 +220,17 @@ void summarize(const std::string& sceneFile, const app::PipelineRun& run, double
 
 }  // namespace
 
-int main(int argc, char** argv) {
+const char* const kUsage =
+    "usage: surface_agreement SCENE [points (400)] [key=value ...] [--view | --both] [--solution=FILE.rrs]\n"
+    "                         [--csv=FILE]\n"
+    "The indirect light an image shows (the mesh) against a final gather at random points on\n"
+    "SCENE's surfaces (--view: at the surfaces its camera sees through random pixels; --both:\n"
+    "both sets); key=value: scene settings, as with rayrad's --set; --solution: a solution\n"
+    "saved by rayrad solve --save for the same scene and settings; --csv: every point.\n";
+
+int agreement(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: surface_agreement SCENE [points (400)] [key=value ...] [--view | --both]\n");
+        std::fputs(kUsage, stderr);
         return 2;
     }
     const std::string sceneFile = argv[1];
@@ -294,4 +304,8 @@ int main(int argc, char** argv) {
     }
     for (const PointSet& set : sets) summarize(sceneFile, run, solveCpu, set);
     return 0;
+}
+
+int main(int argc, char** argv) {
+    return rayrad::bench::runBench("surface_agreement", kUsage, argc, argv, [&] { return agreement(argc, argv); });
 }
