@@ -150,7 +150,7 @@ struct GatherOptions {
     /// — the part of an error in them that reaches the sensor, the product of ρ F along
     /// the chain of gathers, rounded up to a power of ten — is at least this; below, they
     /// are the solution's vertex values (0 = always).
-    double gatherMinWeight = 0.1;
+    double gatherMinWeight = 0.15;
 };
 
 /// The display values: what the ray tracer interpolates between (`radiosity.reconstruction`,
