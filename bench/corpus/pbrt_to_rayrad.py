@@ -460,6 +460,7 @@ def main():
     textures = {}                   # pbrt texture name → image path
     anonymous = 0
     unnamed = set()                 # anonymous materials no mesh has named yet
+    alias = {}                      # anonymous material → the name of its first mesh
     for directive, a in included(args.scene):
         if directive == "WorldBegin":
             in_world, camera_matrix = True, state["ctm"]
@@ -530,13 +531,14 @@ def main():
                 notes.append(f"shape {kind} skipped")
                 continue
             if kind == "plymesh" and state["material"] in unnamed:
-                # An anonymous material takes the name of the first mesh that uses it.
+                # An anonymous material takes the name of the first mesh that uses it (an
+                # alias: a later shape may still hold the anonymous name, after AttributeEnd).
                 stem = os.path.splitext(os.path.basename(p["filename"][1][0]))[0]
                 stem = re.sub(r"_mat\d+$", "", stem)
                 if stem not in named:
-                    named[stem] = named.pop(state["material"])
-                    unnamed.discard(state["material"])
-                    state["material"] = stem
+                    named[stem] = named[state["material"]]
+                    alias[state["material"]] = stem
+                unnamed.discard(state["material"])
             tris, both_sides = oriented(triangles_of(positions, normals, faces, state["ctm"]),
                                         normals is not None)
             if state["emit"]:
@@ -547,7 +549,7 @@ def main():
                                   "luminance_cd_m2": round(args.luminance_scale * y, 3),
                                   "color": [round(c / y, 4) for c in rgb]}
             else:
-                key = state["material"] or "default"
+                key = alias.get(state["material"], state["material"]) or "default"
                 materials.setdefault(key, named.get(key, {"type": "diffuse", "reflectance": 0.5}))
                 if key in emissive:
                     materials[key] = {"type": "emissive", "luminance_cd_m2": emissive[key]}
