@@ -218,8 +218,6 @@ void summarize(const std::string& sceneFile, const app::PipelineRun& run, double
     }
 }
 
-}  // namespace
-
 const char* const kUsage =
     "usage: surface_agreement SCENE [points (400)] [key=value ...] [--view | --both] [--solution=FILE.rrs]\n"
     "                         [--csv=FILE]\n"
@@ -305,6 +303,8 @@ int agreement(int argc, char** argv) {
     for (const PointSet& set : sets) summarize(sceneFile, run, solveCpu, set);
     return 0;
 }
+
+}  // namespace
 
 int main(int argc, char** argv) {
     return rayrad::bench::runBench("surface_agreement", kUsage, argc, argv, [&] { return agreement(argc, argv); });
